@@ -1,0 +1,3 @@
+"""rhi-gen: generate ros2_control hardware interfaces from a URDF and a vendor YAML."""
+
+__version__ = "0.1.0"

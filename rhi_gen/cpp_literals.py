@@ -1,0 +1,87 @@
+"""Turn untrusted text and numbers into C++, XML and YAML literals.
+
+A URDF joint name ends up inside C++ string literals, XML attributes and YAML lists; escaping is
+decided here, in one tested place, never inside templates.
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+
+_CPP_ESCAPES = {"\\": "\\\\", '"': '\\"', "\n": "\\n", "\r": "\\r", "\t": "\\t", "?": "\\?"}
+
+
+def cpp_string(text: str) -> str:
+    """A complete C++ string literal (with quotes) holding exactly ``text`` as UTF-8.
+
+    Non-ASCII and control characters become octal escapes (at most three digits, so the next
+    character can never extend the escape); ``?`` is escaped so no trigraph can form.
+    """
+    if not isinstance(text, str):
+        raise TypeError(f"cpp_string expects str, got {type(text).__name__}")
+    out = ['"']
+    for ch in text:
+        if ch in _CPP_ESCAPES:
+            out.append(_CPP_ESCAPES[ch])
+        elif 0x20 <= ord(ch) < 0x7F:
+            out.append(ch)
+        else:
+            out.extend(f"\\{b:03o}" for b in ch.encode("utf-8"))
+    out.append('"')
+    return "".join(out)
+
+
+def cpp_double(value: float | int) -> str:
+    """A C++ double literal that round-trips exactly (repr gives the shortest such form)."""
+    value = float(value)
+    if math.isnan(value):
+        return "std::numeric_limits<double>::quiet_NaN()"
+    if math.isinf(value):
+        return ("-" if value < 0 else "") + "std::numeric_limits<double>::infinity()"
+    text = repr(value)
+    if "e" not in text and "." not in text:
+        text += ".0"
+    return text
+
+
+def cpp_float(value: float | int) -> str:
+    """A C++ float literal (``1.5f``)."""
+    value = float(value)
+    if math.isnan(value):
+        return "std::numeric_limits<float>::quiet_NaN()"
+    if math.isinf(value):
+        return ("-" if value < 0 else "") + "std::numeric_limits<float>::infinity()"
+    return cpp_double(value) + "f"
+
+
+def header_guard(relpath: str) -> str:
+    """An include guard macro from a header's path, e.g. ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_."""
+    return re.sub(r"[^A-Za-z0-9]", "_", relpath).upper().replace("/", "__") + "_"
+
+
+def yaml_string(text: str) -> str:
+    """A double-quoted YAML scalar (JSON strings are valid YAML flow scalars)."""
+    return json.dumps(str(text), ensure_ascii=True)
+
+
+def xml_escape(text: str) -> str:
+    """Escape for XML text and attribute values (used where autoescape is off)."""
+    return (str(text).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+            .replace('"', "&quot;").replace("'", "&apos;"))
+
+
+def cmake_string(text: str) -> str:
+    """A quoted CMake argument."""
+    return '"' + str(text).replace("\\", "\\\\").replace('"', '\\"').replace("$", "\\$") + '"'
+
+
+FILTERS = {
+    "cpp_string": cpp_string,
+    "cpp_double": cpp_double,
+    "cpp_float": cpp_float,
+    "header_guard": header_guard,
+    "yaml_string": yaml_string,
+    "xml": xml_escape,
+    "cmake_string": cmake_string,
+}

@@ -1,0 +1,70 @@
+"""Names that end up as C++ identifiers, folder names and ROS names.
+
+Vendor and robot names become a C++ namespace, a class name prefix and path components, so they
+are checked strictly here rather than escaped: a name that is not a plain identifier is an error
+the user fixes once, not something to mangle silently.
+"""
+from __future__ import annotations
+
+import re
+
+IDENTIFIER_RE = re.compile(r"^[a-z][a-z0-9_]{0,47}$")
+CLASS_PREFIX_RE = re.compile(r"^[A-Z][A-Za-z0-9]{0,47}$")
+
+# C++20 keywords and alternative tokens, plus names that would clash inside the generated code.
+CPP_KEYWORDS = frozenset("""
+alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t char16_t
+char32_t class compl concept const consteval constexpr constinit const_cast continue co_await
+co_return co_yield decltype default delete do double dynamic_cast else enum explicit export extern
+false float for friend goto if inline int long mutable namespace new noexcept not not_eq nullptr
+operator or or_eq private protected public register reinterpret_cast requires return short signed
+sizeof static static_assert static_cast struct switch template this thread_local throw true try
+typedef typeid typename union unsigned using virtual void volatile wchar_t while xor xor_eq
+final override import module
+""".split())
+RESERVED_NAMESPACES = frozenset({
+    "std", "rclcpp", "rclcpp_lifecycle", "hardware_interface", "pluginlib", "robot_hardware_interface",
+    "unitree", "unitree_hg", "aimdk_msgs", "interface_protocol", "sensor_msgs", "std_msgs",
+    "geometry_msgs", "builtin_interfaces", "rcutils", "rmw", "posix", "main",
+})
+# Vendor namespaces that are ours to use (the reference vendors) even though SDKs use some of them.
+ALLOWED_VENDOR_NAMESPACES = frozenset({"unitree", "agibot", "engineai"})
+
+
+def identifier_problem(name: object, what: str) -> str | None:
+    """Why ``name`` cannot be a vendor/robot identifier, or None if it can."""
+    if not isinstance(name, str) or not name:
+        return f"{what} must be a non-empty string"
+    if not IDENTIFIER_RE.match(name):
+        return (f"{what} {name!r} must be lowercase letters, digits and underscores, starting with a "
+                f"letter, at most 48 characters (it becomes a C++ namespace and a folder name)")
+    if "__" in name or name.endswith("_"):
+        return f"{what} {name!r} must not contain '__' or end with '_' (reserved in C++)"
+    if name in CPP_KEYWORDS:
+        return f"{what} {name!r} is a C++ keyword"
+    return None
+
+
+def vendor_problem(name: object) -> str | None:
+    problem = identifier_problem(name, "vendor")
+    if problem is None and name in RESERVED_NAMESPACES and name not in ALLOWED_VENDOR_NAMESPACES:
+        return f"vendor {name!r} would clash with the C++ namespace of a library the driver uses"
+    return problem
+
+
+def pascal_case(name: str) -> str:
+    """g1 -> G1, pm01 -> PM01, my_arm -> MyArm: parts with digits are model codes, kept upper."""
+    parts = [p for p in name.split("_") if p]
+    return "".join(p.upper() if any(c.isdigit() for c in p) else p[:1].upper() + p[1:] for p in parts)
+
+
+def upper_snake(name: str) -> str:
+    return name.upper()
+
+
+def suggest(word: str, choices: list[str] | tuple[str, ...]) -> str | None:
+    """The closest known word, for 'did you mean' hints."""
+    import difflib
+
+    match = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
+    return match[0] if match else None

@@ -5,7 +5,6 @@ decided here, in one tested place, never inside templates.
 """
 from __future__ import annotations
 
-import json
 import math
 import re
 
@@ -61,8 +60,22 @@ def header_guard(relpath: str) -> str:
 
 
 def yaml_string(text: str) -> str:
-    """A double-quoted YAML scalar (JSON strings are valid YAML flow scalars)."""
-    return json.dumps(str(text), ensure_ascii=True)
+    """A double-quoted, ASCII-only YAML scalar that reads back as exactly ``text``."""
+    out = ['"']
+    for ch in str(text):
+        code = ord(ch)
+        if ch in ('"', "\\"):
+            out.append("\\" + ch)
+        elif 0x20 <= code < 0x7F:
+            out.append(ch)
+        elif code <= 0xFF:
+            out.append(f"\\x{code:02x}")
+        elif code <= 0xFFFF:
+            out.append(f"\\u{code:04x}")
+        else:
+            out.append(f"\\U{code:08x}")
+    out.append('"')
+    return "".join(out)
 
 
 def xml_escape(text: str) -> str:

@@ -141,7 +141,8 @@ def parse_yaml_text(text: str, shown: str) -> tuple[dict[str, Any], dict[str, in
         raise ConfigError(f"invalid YAML: {exc}", file=shown) from exc
     docs = [d for d in docs if d is not None]
     if not docs:
-        raise ConfigError("file holds no YAML document", file=shown)
+        raise ConfigError("file is empty (only comments)", file=shown,
+                          fix="start from `rhi-gen new` or the README's YAML reference")
     if len(docs) > 1:
         raise ConfigError("holds several YAML documents; a vendor YAML is one mapping", file=shown,
                           line=docs[1].start_mark.line + 1)

@@ -1,0 +1,166 @@
+"""Cross-check a vendor YAML against its URDF and decide every name: -> RobotModel.
+
+This is where "joint not in the URDF", "actuated joint not mapped" and "mimic joint mapped to a
+motor" are caught, each with the YAML line and a fix. No file is written here.
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import re
+from dataclasses import replace
+from pathlib import Path
+
+from . import __version__
+from .errors import ConfigError
+from .model import InputProvenance, MotorJoint, RobotModel, UrdfRobot, VendorConfig
+from .naming import pascal_case, suggest, upper_snake
+
+# Joint names become C++ string literals, XML attribute values, YAML list items and ROS 2
+# interface names ("<joint>/position"). We accept what every one of those handles without
+# surprises and reject the rest with a clear message rather than emitting fragile code.
+SAFE_JOINT_NAME_RE = re.compile(r"^[A-Za-z0-9_./\-:+\[\]()#@]+$")
+MAX_JOINT_NAME = 128
+
+
+def joint_name_problem(name: str) -> str | None:
+    if not name:
+        return "joint name is empty"
+    if len(name) > MAX_JOINT_NAME:
+        return f"joint name is {len(name)} characters long (at most {MAX_JOINT_NAME})"
+    if SAFE_JOINT_NAME_RE.match(name):
+        return None
+    bad = next(ch for ch in name if not SAFE_JOINT_NAME_RE.match(ch))
+    if ch_is_control(bad):
+        what = f"a control character (U+{ord(bad):04X})"
+    elif bad.isspace():
+        what = "whitespace"
+    elif ord(bad) > 127:
+        what = f"the non-ASCII character {bad!r}"
+    else:
+        what = f"the character {bad!r}"
+    return (f"joint name {name!r} contains {what}; joint names become C++ string literals, XML "
+            "attributes and ROS 2 interface names")
+
+
+def ch_is_control(ch: str) -> bool:
+    return ord(ch) < 0x20 or 0x7F <= ord(ch) < 0xA0
+
+
+def sha256_hex(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def project_relative(path: str | Path, root: Path) -> str:
+    """A POSIX path relative to the project root (never absolute: outputs must not depend on the machine)."""
+    rel = os.path.relpath(os.path.abspath(path), os.path.abspath(root))
+    return Path(rel).as_posix()
+
+
+def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_bytes: bytes,
+                project_root: Path) -> RobotModel:
+    """Check ``config`` against ``urdf`` and decide every name the templates print."""
+    lines = config.key_lines
+    src = config.source
+
+    def err(key: str, message: str, fix: str | None = None) -> ConfigError:
+        return ConfigError(message, file=src, line=lines.get(key), key=key, fix=fix)
+
+    by_name = {j.name: j for j in urdf.joints}
+    all_names = [j.name for j in urdf.joints]
+    urdf_shown = config.urdf_relative
+    mapped: dict[str, int] = dict(config.joint_map)
+
+    for name, _index in config.joint_map:
+        key = f"joint_map.{name}"
+        joint = by_name.get(name)
+        if joint is None:
+            hint = suggest(name, all_names)
+            fix = f"did you mean {hint!r}?" if hint else "run `rhi-gen inspect --urdf` to list the joints"
+            raise err(key, f"joint {name!r} is not in {urdf_shown}", fix)
+        if joint.mimic is not None:
+            raise err(key, f"joint {name!r} mimics {joint.mimic.joint!r}; a mimic joint has no motor "
+                      "(ros2_control gives it no command interfaces)",
+                      f"remove it from joint_map and map {joint.mimic.joint!r} instead")
+        if not joint.actuated:
+            raise err(key, f"joint {name!r} is a {joint.type} joint; only revolute, continuous and "
+                      "prismatic joints are driven by motors", "remove it from joint_map")
+        if (problem := joint_name_problem(name)):
+            raise err(key, problem, f"rename the joint in {urdf_shown} (line {joint.line})")
+
+    for i, name in enumerate(config.unmapped_joints):
+        key = f"unmapped_joints[{i}]"
+        joint = by_name.get(name)
+        if joint is None:
+            hint = suggest(name, all_names)
+            raise err(key, f"joint {name!r} is not in {urdf_shown}",
+                      f"did you mean {hint!r}?" if hint else "remove it")
+        if not joint.actuated:
+            raise err(key, f"joint {name!r} is not an actuated joint ({joint.type}"
+                      f"{', mimic' if joint.mimic else ''}); only actuated joints need listing", "remove it")
+
+    actuated = urdf.actuated_joints
+    if not actuated:
+        raise ConfigError(f"{urdf_shown} has no actuated joints (revolute, continuous or prismatic "
+                          "without <mimic>)", file=src, line=lines.get("urdf"), key="urdf",
+                          fix="point urdf at the robot's full description")
+    missing = [j.name for j in actuated if j.name not in mapped and j.name not in config.unmapped_joints]
+    if missing:
+        shown = ", ".join(repr(n) for n in missing[:4]) + (f" and {len(missing) - 4} more" if len(missing) > 4 else "")
+        raise err("joint_map", f"{len(missing)} actuated joint(s) of {urdf_shown} have no motor index: {shown}",
+                  "add them to joint_map, or list them under unmapped_joints if they are intentionally not driven")
+
+    groups = config.transport_options.groups
+    joints = []
+    for joint in actuated:
+        if joint.name not in mapped:
+            continue
+        index = mapped[joint.name]
+        group = position = None
+        for g in groups:
+            if g.offset <= index < g.offset + g.size:
+                group, position = g.name, index - g.offset
+        joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,
+                                 group=group, group_position=position))
+
+    imu = config.imu
+    if imu.enabled:
+        links = list(urdf.links)
+        if "imu.frame_id" in lines:
+            if imu.frame_id not in links:
+                hint = suggest(imu.frame_id, links)
+                raise err("imu.frame_id", f"{imu.frame_id!r} is not a link of {urdf_shown}",
+                          (f"did you mean {hint!r}? " if hint else "") + "or set imu.enabled: false")
+        else:
+            imu = replace(imu, frame_id=default_imu_frame(urdf))
+
+    pascal = config.class_prefix or pascal_case(config.robot)
+    provenance = InputProvenance(
+        yaml_path=project_relative(yaml_path, project_root),
+        urdf_path=project_relative(config.urdf, project_root),
+        yaml_sha256=sha256_hex(yaml_bytes),
+        urdf_sha256=sha256_hex(urdf.canonical_xml),
+        generator_version=__version__,
+    )
+    return RobotModel(
+        vendor=config.vendor, robot=config.robot, robot_pascal=pascal,
+        robot_upper=upper_snake(config.robot) if not config.class_prefix else upper_snake(pascal),
+        class_name=f"{pascal}HardwareInterface", plugin_name=f"{config.vendor}/{pascal}HardwareInterface",
+        node_name=f"{config.robot}_hardware_interface", transport=config.transport,
+        motor_count=config.motor_count, float_type=config.float_type, joints=tuple(joints),
+        unmapped_joints=tuple(config.unmapped_joints),
+        mimic_joints=tuple(j.name for j in urdf.mimic_joints),
+        imu=imu, parameters=config.parameters, transport_options=config.transport_options,
+        provenance=provenance, urdf_name=urdf.name,
+    )
+
+
+def default_imu_frame(urdf: UrdfRobot) -> str:
+    """A link whose name says IMU, else the root link: a frame that exists in the robot."""
+    for link in urdf.links:
+        if "imu" in link.lower():
+            return link
+    children = {j.child for j in urdf.joints}
+    roots = [link for link in urdf.links if link not in children]
+    return roots[0] if roots else (urdf.links[0] if urdf.links else "base_link")
+

@@ -99,6 +99,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_
             raise err(key, f"joint {name!r} is not an actuated joint ({joint.type}"
                       f"{', mimic' if joint.mimic else ''}); only actuated joints need listing", "remove it")
 
+    _check_existing_ros2_control(urdf, by_name, urdf_shown)
+
     actuated = urdf.actuated_joints
     if not actuated:
         raise ConfigError(f"{urdf_shown} has no actuated joints (revolute, continuous or prismatic "
@@ -153,6 +155,27 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
         provenance=provenance, urdf_name=urdf.name,
     )
+
+
+def _check_existing_ros2_control(urdf: UrdfRobot, by_name: dict, urdf_shown: str) -> None:
+    """Apply ros2_control's own rules to a <ros2_control> tag already in the URDF.
+
+    The controller manager loads the whole robot_description, so a broken tag there breaks the
+    generated driver too: every joint must exist, and a mimic joint takes no command interface.
+    """
+    from .errors import UrdfError
+
+    for block in urdf.ros2_control:
+        for rc_joint in block.joints:
+            joint = by_name.get(rc_joint.name)
+            if joint is None:
+                raise UrdfError(f"<ros2_control name={block.name!r}> names joint {rc_joint.name!r}, which is "
+                                "not a joint of the URDF (ros2_control rejects this)", file=urdf_shown,
+                                line=rc_joint.line, fix="fix the joint name or remove it from the tag")
+            if joint.mimic is not None and rc_joint.command_interfaces:
+                raise UrdfError(f"<ros2_control name={block.name!r}> gives mimic joint {rc_joint.name!r} command "
+                                "interfaces; ros2_control allows only state interfaces on mimic joints",
+                                file=urdf_shown, line=rc_joint.line, fix="remove its <command_interface> tags")
 
 
 def default_imu_frame(urdf: UrdfRobot) -> str:

@@ -132,3 +132,39 @@ def test_parse_bytes_and_model_are_deterministic(tmp_path):
     assert a == b
     robot = parse_urdf_bytes((FIXTURES / "simple_arm.urdf").read_bytes(), source="x")
     assert [j.name for j in robot.actuated_joints] == ["shoulder_pan", "shoulder_lift", "elbow"]
+
+
+def _urdf_with_tag(tmp_path: Path, tag_joint: str, command: bool = True) -> Path:
+    urdf = tmp_path / "rc.urdf"
+    cmd = '<command_interface name="position"/>' if command else ""
+    urdf.write_text(textwrap.dedent(f"""\
+        <robot name="r">
+          <link name="a"/><link name="b"/><link name="c"/>
+          <joint name="j1" type="revolute"><parent link="a"/><child link="b"/>
+            <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+          <joint name="j2" type="revolute"><parent link="b"/><child link="c"/><mimic joint="j1"/>
+            <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+          <ros2_control name="Existing" type="system">
+            <hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+            <joint name="{tag_joint}">{cmd}<state_interface name="position"/></joint>
+          </ros2_control>
+        </robot>
+        """))
+    return urdf
+
+
+def test_existing_ros2_control_joint_must_exist(tmp_path):
+    from rhi_gen.errors import UrdfError
+
+    with pytest.raises(UrdfError, match="'ghost', which is not a joint") as info:
+        model_for(tmp_path, _urdf_with_tag(tmp_path, "ghost"), "joint_map:\n  j1: 0\n", motor_count=1)
+    assert info.value.line == 9
+
+
+def test_existing_ros2_control_mimic_joint_takes_no_commands(tmp_path):
+    from rhi_gen.errors import UrdfError
+
+    with pytest.raises(UrdfError, match="mimic joint 'j2' command"):
+        model_for(tmp_path, _urdf_with_tag(tmp_path, "j2"), "joint_map:\n  j1: 0\n", motor_count=1)
+    m = model_for(tmp_path, _urdf_with_tag(tmp_path, "j2", command=False), "joint_map:\n  j1: 0\n", motor_count=1)
+    assert m.mimic_joints == ("j2",)

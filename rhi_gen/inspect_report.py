@@ -1,0 +1,36 @@
+"""`rhi-gen inspect`: what rhi-gen sees in a URDF, as text a person reads before writing a YAML."""
+from __future__ import annotations
+
+from .model import UrdfRobot
+from .profiles import find_profile, suggest_order
+
+
+def _fmt(value: float | None) -> str:
+    return "-" if value is None else f"{value:g}"
+
+
+def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | None = None) -> str:
+    actuated = urdf.actuated_joints
+    out = [f"robot {urdf.name!r} from {urdf.source}: {len(urdf.joints)} joints, {len(urdf.links)} links, "
+           f"{len(actuated)} actuated, {len(urdf.mimic_joints)} mimic"]
+    width = max([len(j.name) for j in urdf.joints] + [5])
+    out.append(f"  {'#':>3}  {'joint':<{width}}  {'type':<10}  {'lower':>9} {'upper':>9} {'effort':>8} {'velocity':>8}  note")
+    for i, j in enumerate(urdf.joints):
+        lim = j.limits
+        note = []
+        if j.mimic is not None:
+            note.append(f"mimics {j.mimic.joint} (x{j.mimic.multiplier:g} {j.mimic.offset:+g})")
+        if not j.actuated and j.mimic is None:
+            note.append("not actuated")
+        out.append(f"  {i:>3}  {j.name:<{width}}  {j.type:<10}  {_fmt(lim.lower if lim else None):>9} "
+                   f"{_fmt(lim.upper if lim else None):>9} {_fmt(lim.effort if lim else None):>8} "
+                   f"{_fmt(lim.velocity if lim else None):>8}  {'; '.join(note)}".rstrip())
+    for block in urdf.ros2_control:
+        out.append(f"existing <ros2_control name={block.name!r}> plugin {block.plugin or '-'}: "
+                   f"{len(block.joints)} joints")
+    profile = find_profile(vendor, robot) if vendor and robot else None
+    order = suggest_order([j.name for j in actuated], profile)
+    source = f"the {profile.vendor} profile ({profile.note})" if profile and profile.note else "URDF order"
+    out.append(f"suggested joint_map ({source}):")
+    out += [f"  {name}: {index}" for index, name in enumerate(order)]
+    return "\n".join(out) + "\n"

@@ -1,0 +1,311 @@
+"""Command line: parse arguments, call the pipeline, print, map errors to exit codes.
+
+Exit codes: 0 ok, 1 differences found (check/diff), 2 bad input (one line on stderr, nothing written),
+3 internal error (a bug in rhi-gen; set RHI_GEN_DEBUG=1 for the traceback).
+"""
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+
+from . import __version__
+from .errors import RhiGenError
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
+                  help="Generate complete ros2_control hardware interfaces from a URDF and a vendor YAML.")
+
+ProjectOpt = typer.Option(None, "--project", "-C", help="Project folder holding robots/ and generated/ "
+                          "(default: the current folder or its nearest parent with robots/).")
+
+
+def _err(text: str) -> None:
+    typer.echo(text, err=True)
+
+
+def _parse_pairs(values: List[str] | None, option: str) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for value in values or []:
+        if "=" not in value or not value.split("=", 1)[0]:
+            raise RhiGenError(f"expected NAME=VALUE, got {value!r}", key=option,
+                              fix=f"write it as {option} NAME=VALUE (repeat the option for each pair)")
+        name, val = value.split("=", 1)
+        out[name] = val
+    return out
+
+
+def _project(project: Optional[Path]):
+    from .project import find_project
+
+    return find_project(project)
+
+
+def _print_changes(changes, *, verbose: bool) -> dict[str, int]:
+    counts = {"created": 0, "changed": 0, "unchanged": 0, "removed": 0}
+    for c in changes:
+        counts[c.status] += 1
+        if c.status != "unchanged" or verbose:
+            typer.echo(f"  {c.status:<9} {c.path}")
+    return counts
+
+
+def _summary(counts: dict[str, int], *, dry_run: bool = False) -> str:
+    verb = "would be" if dry_run else ""
+    parts = ", ".join(f"{n} {k}" for k, n in counts.items())
+    return f"summary: {parts}" + (f" ({verb} written: dry run)" if dry_run else "")
+
+
+@app.command()
+def new(vendor: str = typer.Option(..., help="Vendor name: C++ namespace and folder (e.g. unitree)."),
+        robot: str = typer.Option(..., help="Robot name: file stem (e.g. g1)."),
+        urdf: Path = typer.Option(..., help="The robot's URDF or .xacro file."),
+        transport: Optional[str] = typer.Option(None, help="unitree_dds | agibot_topics | engineai_topics | "
+                                                "generic_topics (default: the vendor's, else generic_topics)."),
+        xacro_arg: Optional[List[str]] = typer.Option(None, "--xacro-arg", help="NAME=VALUE, repeatable."),
+        package_path: Optional[List[str]] = typer.Option(None, "--package-path",
+                                                         help="PKG=DIR for $(find PKG), repeatable."),
+        force: bool = typer.Option(False, "--force", help="Overwrite an existing robot YAML."),
+        project: Optional[Path] = ProjectOpt) -> None:
+    """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
+    from .pipeline import plan_new_robot
+    from .writer import apply
+
+    proj = _project(project)
+    plan = plan_new_robot(proj, vendor=vendor, robot=robot, urdf_path=urdf, transport=transport,
+                          xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
+                          package_paths=_parse_pairs(package_path, "--package-path"), force=force)
+    apply(proj.root, plan.changes)
+    m = plan.robot.model
+    typer.echo(f"wrote {plan.yaml_relpath}: {len(m.joints)} joints, {m.motor_count} motors, "
+               f"transport {m.transport}, {m.float_type}")
+    counts = _print_changes([c for c in plan.changes if c.path != plan.yaml_relpath], verbose=False)
+    typer.echo(_summary(counts))
+    typer.echo(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
+
+
+def _use_colour() -> bool:
+    """Colour only for a person at a terminal: stdout is a TTY and NO_COLOR is not set."""
+    return "NO_COLOR" not in os.environ and sys.stdout.isatty()
+
+
+def _bold(text: str, colour: bool) -> str:
+    return f"\x1b[1m{text}\x1b[0m" if colour else text
+
+
+def _load_selected(proj, names: Optional[List[str]]):
+    """Every robot (shared files need them all) and, when names are given, the chosen ones."""
+    from .pipeline import check_unique, load_robot
+    from .project import robot_yamls, select_yamls
+
+    every = robot_yamls(proj)
+    if not every:
+        raise RhiGenError("no robots found", file=proj.relative(proj.robots_dir),
+                          fix="add one with `rhi-gen new --vendor V --robot R --urdf FILE`")
+    chosen = set(select_yamls(proj, names))
+    loaded = []
+    for path in every:
+        _err(f"loading {proj.relative(path)}")
+        loaded.append(load_robot(proj, path))
+    check_unique(proj, loaded)
+    only = [r for r in loaded if r.yaml_path in chosen] if names else None
+    return loaded, only
+
+
+def _print_robot_diffs(diffs, colour: bool, prefix: str = "") -> None:
+    for d in diffs:
+        first, *rest = d.lines()
+        typer.echo(_bold(prefix + first, colour))
+        for line in rest:
+            typer.echo(line)
+
+
+def _print_file_diffs(changes, colour: bool) -> int:
+    from .writer import colour_diff, unified_diff
+
+    n = 0
+    for c in changes:
+        if c.status == "unchanged":
+            continue
+        n += 1
+        text = unified_diff(c, prefix="generated/")
+        sys.stdout.write(colour_diff(text) if colour else text)
+    sys.stdout.flush()
+    return n
+
+
+@app.command()
+def generate(robots: Optional[List[str]] = typer.Argument(None, help="Robots to regenerate (name or vendor/name); "
+                                                           "default: all."),
+             dry_run: bool = typer.Option(False, "--dry-run", help="Show what would change, write nothing."),
+             verbose: bool = typer.Option(False, "--verbose", "-v", help="Also list unchanged files."),
+             force: bool = typer.Option(False, "--force", help="Overwrite generated files edited outside their user "
+                                        "regions (or holding code in regions the templates dropped); each is first "
+                                        "copied to generated/.rhi-gen-backup/<path>.N."),
+             project: Optional[Path] = ProjectOpt) -> None:
+    """(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.
+
+    User-region contents are carried over byte for byte; a file edited outside its regions blocks
+    the whole run (exit 2, nothing written) unless --force.
+    """
+    from .pipeline import plan_generation
+    from .writer import BACKUP_DIR, BACKUP_MARKERS, apply
+
+    proj = _project(project)
+    loaded, only = _load_selected(proj, robots)
+    plan = plan_generation(proj, loaded, only, force=force)
+    if plan.blocked and not force:
+        if len(plan.blocked) > 1:
+            for b in plan.blocked:
+                _err(f"blocked: {b.note()}")
+        raise plan.blocked_error()
+    counts = _print_changes([*plan.files, plan.manifest_change], verbose=verbose)
+    if not dry_run:
+        apply(proj.generated_dir, plan.changes)
+    for c in plan.backups:
+        if c.path not in BACKUP_MARKERS:
+            original = c.path[len(BACKUP_DIR) + 1:].rsplit(".", 1)[0]
+            typer.echo(f"  {'would keep' if dry_run else 'kept'} your version of {original} in generated/{c.path}")
+    names = ", ".join(f"{r.model.vendor}/{r.model.robot} ({len(r.model.joints)} joints)" for r in loaded)
+    typer.echo(f"robots: {names}")
+    typer.echo(_summary(counts, dry_run=dry_run))
+
+
+@app.command()
+def diff(robots: Optional[List[str]] = typer.Argument(None, help="Robots to explain (name or vendor/name); "
+                                                       "default: all."),
+         project: Optional[Path] = ProjectOpt) -> None:
+    """Explain what `generate` would change: in robot terms first, then the unified file diff.
+
+    Exit 0 when nothing would change, 1 when something would. Coloured on a terminal (unless NO_COLOR).
+    """
+    from .pipeline import plan_generation
+
+    proj = _project(project)
+    loaded, only = _load_selected(proj, robots)
+    plan = plan_generation(proj, loaded, only)
+    colour = _use_colour()
+    _print_robot_diffs(plan.robot_diffs, colour)
+    files = [c for c in plan.files if c.status != "unchanged"]
+    if files:
+        typer.echo("")
+    _print_file_diffs(files, colour)
+    for b in plan.blocked:
+        _err(f"note: `rhi-gen generate` would refuse: {b.note()} -> {b.fix}")
+    if not plan.differs:
+        _err("nothing to regenerate: generated/ matches the inputs")
+        return
+    extra = " and generated/.rhi-gen-manifest" if plan.manifest_change.status != "unchanged" else ""
+    _err(f"{len(files)} file(s){extra} would change; run `rhi-gen generate"
+         f"{' ' + ' '.join(robots) if robots else ''}` to write them")
+    raise typer.Exit(1)
+
+
+@app.command()
+def check(project: Optional[Path] = ProjectOpt) -> None:
+    """CI gate: exit 1 when inputs changed since the last generate (stale hashes in the manifest) or
+    generated/ differs from what `generate` would write; prints why, then the unified diff."""
+    from .pipeline import load_robots, plan_generation
+
+    proj = _project(project)
+    loaded = load_robots(proj)
+    if not loaded:
+        raise RhiGenError("no robots found", file=proj.relative(proj.robots_dir), fix="add one with `rhi-gen new`")
+    plan = plan_generation(proj, loaded)
+    colour = _use_colour()
+    stale = plan.stale
+    if plan.old_manifest is None:
+        typer.echo(_bold("stale: generated/.rhi-gen-manifest is missing (never generated, or generated by an "
+                         "older rhi-gen)", colour))
+    else:
+        _print_robot_diffs(stale, colour, prefix="stale: ")
+    files = [c for c in plan.files if c.status != "unchanged"]
+    _print_file_diffs(files, colour)
+    if plan.manifest_change.status != "unchanged" and not stale and plan.old_manifest is not None:
+        typer.echo("generated/.rhi-gen-manifest differs from what `rhi-gen generate` would write")
+    for b in plan.blocked:
+        typer.echo(f"hand edit: {b.note()}")
+    if not plan.differs and not stale:
+        typer.echo(f"generated/ is up to date ({len(loaded)} robots)")
+        return
+    _err(f"generated/ is stale: {len(stale)} robot(s) with changed inputs, {len(files)} file(s) differ; "
+         "run `rhi-gen diff` to review, then `rhi-gen generate`")
+    raise typer.Exit(1)
+
+
+@app.command()
+def inspect(urdf: Path = typer.Option(..., help="URDF or .xacro file."),
+            vendor: Optional[str] = typer.Option(None, help="Suggest the map in this vendor's motor order."),
+            robot: Optional[str] = typer.Option(None, help="Robot name for the vendor profile."),
+            xacro_arg: Optional[List[str]] = typer.Option(None, "--xacro-arg", help="NAME=VALUE, repeatable."),
+            package_path: Optional[List[str]] = typer.Option(None, "--package-path", help="PKG=DIR, repeatable.")
+            ) -> None:
+    """Show actuated joints, types, limits, mimic joints and the suggested joint map."""
+    from .inspect_report import inspect_text
+    from .urdf_loader import load_urdf
+
+    robot_model = load_urdf(urdf, xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
+                            package_paths={k: Path(v) for k, v in _parse_pairs(package_path, "--package-path").items()},
+                            display_path=str(urdf))
+    sys.stdout.write(inspect_text(robot_model, vendor=vendor, robot=robot))
+
+
+@app.command("list")
+def list_robots(project: Optional[Path] = ProjectOpt) -> None:
+    """List the robots of the project."""
+    from .project import robot_yamls
+
+    proj = _project(project)
+    for path in robot_yamls(proj):
+        typer.echo(f"{path.parent.name}/{path.stem}  ({proj.relative(path)})")
+
+
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"rhi-gen {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")) -> None:
+    """rhi-gen"""
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: every RhiGenError is one line and exit 2; anything else is a bug (exit 3)."""
+    try:
+        # With standalone_mode=False click returns typer.Exit's code instead of raising it.
+        code = app(args=argv, prog_name="rhi-gen", standalone_mode=False)
+        return code if isinstance(code, int) else 0
+    except typer.Exit as exc:
+        return exc.exit_code
+    except RhiGenError as exc:
+        _err(f"error: {exc}")
+        return exc.exit_code
+    except KeyboardInterrupt:
+        _err("interrupted; nothing half-written was left behind")
+        return 130
+    except Exception as exc:  # click usage errors and real bugs
+        import click
+
+        if isinstance(exc, click.exceptions.Abort):
+            return 130
+        if isinstance(exc, click.ClickException):
+            exc.show()
+            return 2
+        if os.environ.get("RHI_GEN_DEBUG"):
+            raise
+        _err(f"internal error: {type(exc).__name__}: {exc} (a bug in rhi-gen; rerun with RHI_GEN_DEBUG=1 "
+             "and report it)")
+        return 3
+
+
+def entry() -> None:
+    sys.exit(main())
+
+
+if __name__ == "__main__":
+    entry()

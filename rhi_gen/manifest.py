@@ -1,0 +1,237 @@
+"""generated/.rhi-gen-manifest: what the last `generate` read and wrote.
+
+Per robot: the vendor YAML and the URDF (project-relative path + sha256; the URDF hashed after xacro
+expansion without xacro's volatile header), the generator version, and the robot as the model saw
+it (motor_count, float_type, one row per joint: index, name, type, limits) so `rhi-gen diff` can
+explain the next regeneration in robot terms. Per generated file: the sha256 of its text with every
+user-region body removed, so a hand edit *outside* the regions is detected and an edit inside one
+is not.
+
+The file is JSON with sorted keys, one joint or file per line, no timestamps and no absolute paths:
+the same inputs always give the same bytes, and a reviewer reads its diff like any other.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from .errors import RhiGenError
+from .model import RobotModel
+from .regions import strip_bodies
+
+MANIFEST_NAME = ".rhi-gen-manifest"
+FORMAT = 1
+NOTE = ("Written by `rhi-gen generate`; do not edit. Inputs and generated files of the last generation; "
+        "file hashes are sha256 of the text with user-region bodies removed.")
+JOINT_COLUMNS = ("index", "name", "type", "lower", "upper", "velocity", "effort")
+FIX_CORRUPT = ("restore it from version control, or rerun `rhi-gen generate --force` to rebuild it "
+               "(files that would change are backed up)")
+
+
+class ManifestError(RhiGenError):
+    """generated/.rhi-gen-manifest cannot be read."""
+
+
+@dataclass(frozen=True)
+class JointRecord:
+    index: int
+    name: str
+    type: str
+    lower: float | None = None
+    upper: float | None = None
+    velocity: float | None = None
+    effort: float | None = None
+
+    def limit_items(self) -> tuple[tuple[str, float | None], ...]:
+        return (("lower", self.lower), ("upper", self.upper), ("velocity", self.velocity),
+                ("effort", self.effort))
+
+
+@dataclass(frozen=True)
+class RobotRecord:
+    key: str                # "vendor/robot"
+    yaml_path: str
+    yaml_sha256: str
+    urdf_path: str
+    urdf_sha256: str
+    generator_version: str
+    motor_count: int
+    float_type: str
+    joints: tuple[JointRecord, ...]   # sorted by index
+
+
+@dataclass(frozen=True)
+class Manifest:
+    generator_version: str
+    robots: dict[str, RobotRecord] = field(default_factory=dict)
+    files: dict[str, str] = field(default_factory=dict)   # path relative to generated/ -> sha256
+
+
+def sha256_hex(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def generated_hash(text: str, path: str = "<text>") -> str:
+    """sha256 of ``text`` with user-region bodies removed (RegionError if its markers are broken)."""
+    return sha256_hex(strip_bodies(text, path).encode("utf-8"))
+
+
+def robot_key(model: RobotModel) -> str:
+    return f"{model.vendor}/{model.robot}"
+
+
+def robot_record(model: RobotModel) -> RobotRecord:
+    p = model.provenance
+    joints = []
+    for j in sorted(model.joints, key=lambda j: j.index):
+        lim = j.limits
+        joints.append(JointRecord(j.index, j.name, j.type,
+                                  lim.lower if lim else None, lim.upper if lim else None,
+                                  lim.velocity if lim else None, lim.effort if lim else None))
+    return RobotRecord(robot_key(model), p.yaml_path, p.yaml_sha256, p.urdf_path, p.urdf_sha256,
+                       p.generator_version, model.motor_count, model.float_type, tuple(joints))
+
+
+# ---------------------------------------------------------------- text form
+def _num(value: float | None) -> Any:
+    if value is None:
+        return None
+    value = float(value)
+    if math.isfinite(value):
+        return value
+    return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
+
+
+def _unnum(value: Any, where: str) -> float | None:
+    if value is None:
+        return None
+    if isinstance(value, bool):
+        raise ValueError(f"{where}: expected a number")
+    if isinstance(value, (int, float)):
+        return float(value)
+    if value in ("inf", "-inf", "nan"):
+        return float(value)
+    raise ValueError(f"{where}: expected a number")
+
+
+def _to_data(manifest: Manifest) -> dict[str, Any]:
+    robots = {}
+    for key, r in sorted(manifest.robots.items()):
+        robots[key] = {
+            "yaml": {"path": r.yaml_path, "sha256": r.yaml_sha256},
+            "urdf": {"path": r.urdf_path, "sha256": r.urdf_sha256},
+            "generator_version": r.generator_version,
+            "motor_count": r.motor_count,
+            "float_type": r.float_type,
+            "joint_columns": list(JOINT_COLUMNS),
+            "joints": [[j.index, j.name, j.type, _num(j.lower), _num(j.upper), _num(j.velocity), _num(j.effort)]
+                       for j in sorted(r.joints, key=lambda j: j.index)],
+        }
+    return {
+        "format": FORMAT,
+        "note": NOTE,
+        "generator_version": manifest.generator_version,
+        "robots": robots,
+        "files": dict(sorted(manifest.files.items())),
+    }
+
+
+def _scalar(value: Any) -> bool:
+    return not isinstance(value, (dict, list))
+
+
+def _emit(value: Any, indent: int) -> str:
+    """JSON, sorted keys; a container of scalars on one line, anything else one item per line."""
+    if _scalar(value):
+        return json.dumps(value, ensure_ascii=True, allow_nan=False)
+    items = sorted(value.items()) if isinstance(value, dict) else list(value)
+    open_, close = ("{", "}") if isinstance(value, dict) else ("[", "]")
+    if not items:
+        return open_ + close
+
+    def one(item: Any, nested: int) -> str:
+        if isinstance(value, dict):
+            k, v = item
+            return f"{json.dumps(k, ensure_ascii=True)}: {_emit(v, nested)}"
+        return _emit(item, nested)
+
+    inline = (all(_scalar(v) for v in value) if isinstance(value, list)
+              else set(value) <= {"path", "sha256"} and all(_scalar(v) for v in value.values()))
+    if inline:
+        return open_ + ", ".join(one(i, indent) for i in items) + close
+    pad = "  " * (indent + 1)
+    body = ",\n".join(pad + one(i, indent + 1) for i in items)
+    return f"{open_}\n{body}\n{'  ' * indent}{close}"
+
+
+def dumps(manifest: Manifest) -> str:
+    return _emit(_to_data(manifest), 0) + "\n"
+
+
+def loads(text: str, shown: str = f"generated/{MANIFEST_NAME}") -> Manifest:
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise ManifestError(f"is not valid JSON: {exc.msg}", file=shown, line=exc.lineno, fix=FIX_CORRUPT) from exc
+    try:
+        return _from_data(data)
+    except (ValueError, TypeError, KeyError, AttributeError) as exc:
+        raise ManifestError(f"unexpected content: {exc}", file=shown, fix=FIX_CORRUPT) from exc
+
+
+def _str(value: Any, where: str) -> str:
+    if not isinstance(value, str):
+        raise ValueError(f"{where}: expected a string")
+    return value
+
+
+def _from_data(data: Any) -> Manifest:
+    if not isinstance(data, dict):
+        raise ValueError("top level: expected an object")
+    if data.get("format") != FORMAT:
+        raise ValueError(f"format {data.get('format')!r} (this rhi-gen reads format {FORMAT})")
+    robots: dict[str, RobotRecord] = {}
+    for key, r in data["robots"].items():
+        joints = []
+        for row in r["joints"]:
+            if not isinstance(row, list) or len(row) != len(JOINT_COLUMNS):
+                raise ValueError(f"robots.{key}.joints: expected rows of {len(JOINT_COLUMNS)} values")
+            index, name, jtype, *limits = row
+            if not isinstance(index, int) or isinstance(index, bool):
+                raise ValueError(f"robots.{key}.joints: index must be an integer")
+            lower, upper, velocity, effort = (_unnum(v, f"robots.{key}.joints") for v in limits)
+            joints.append(JointRecord(index, _str(name, "joint name"), _str(jtype, "joint type"),
+                                      lower, upper, velocity, effort))
+        motor_count = r["motor_count"]
+        if not isinstance(motor_count, int) or isinstance(motor_count, bool):
+            raise ValueError(f"robots.{key}.motor_count: expected an integer")
+        robots[_str(key, "robot")] = RobotRecord(
+            key, _str(r["yaml"]["path"], "yaml.path"), _str(r["yaml"]["sha256"], "yaml.sha256"),
+            _str(r["urdf"]["path"], "urdf.path"), _str(r["urdf"]["sha256"], "urdf.sha256"),
+            _str(r["generator_version"], "generator_version"), motor_count,
+            _str(r["float_type"], "float_type"), tuple(sorted(joints, key=lambda j: j.index)))
+    files = {_str(k, "files"): _str(v, f"files.{k}") for k, v in data["files"].items()}
+    return Manifest(_str(data["generator_version"], "generator_version"), robots, files)
+
+
+def path(generated_dir: Path) -> Path:
+    return generated_dir / MANIFEST_NAME
+
+
+def read_bytes(generated_dir: Path) -> bytes | None:
+    target = path(generated_dir)
+    return target.read_bytes() if target.is_file() else None
+
+
+def parse(data: bytes | None, shown: str = f"generated/{MANIFEST_NAME}") -> Manifest | None:
+    if data is None:
+        return None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ManifestError("is not UTF-8 text", file=shown, fix=FIX_CORRUPT) from exc
+    return loads(text, shown)

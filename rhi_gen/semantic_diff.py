@@ -1,0 +1,174 @@
+"""A pending regeneration in robot terms: what the manifest recorded vs. the model built now.
+
+Only the current inputs are on disk, so the "old robot" is the joint table the manifest stored at
+the last `generate` (manifest.RobotRecord). Definitions:
+
+- renamed:  same SDK index, a different name, and the old name is gone while the new name is new;
+- remapped: same name, a different index;
+- added / removed: a name only in the new / old table (not part of a rename);
+- limits / type: a joint present in both (by name, or a renamed pair) whose limits or type differ;
+- motor_count / float_type: the MotorCommand<N, T> parameters.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+from .manifest import JointRecord, Manifest, RobotRecord
+
+
+@dataclass(frozen=True)
+class RobotDiff:
+    key: str                      # "vendor/robot"
+    status: str                   # new | removed | changed | unchanged
+    inputs: tuple[str, ...] = ()  # which inputs changed, in words
+    renamed: tuple[tuple[int, str, str], ...] = ()            # (index, old name, new name)
+    remapped: tuple[tuple[str, int, int], ...] = ()           # (name, old index, new index)
+    added: tuple[JointRecord, ...] = ()
+    removed: tuple[JointRecord, ...] = ()
+    limits: tuple[tuple[str, int, tuple[tuple[str, float | None, float | None], ...]], ...] = ()
+    types: tuple[tuple[str, int, str, str], ...] = ()         # (name, index, old type, new type)
+    motor_count: tuple[int, int] | None = None
+    float_type: tuple[str, str] | None = None
+    new_record: RobotRecord | None = field(default=None, compare=False)
+    old_record: RobotRecord | None = field(default=None, compare=False)
+
+    @property
+    def robot_changed(self) -> bool:
+        return bool(self.renamed or self.remapped or self.added or self.removed or self.limits or self.types
+                    or self.motor_count or self.float_type)
+
+    @property
+    def stale(self) -> bool:
+        """The inputs differ from those of the last generation (or it never happened)."""
+        return self.status != "unchanged"
+
+    def lines(self) -> list[str]:
+        if self.status == "new":
+            r = self.new_record
+            assert r is not None
+            return [f"{self.key}: new robot ({len(r.joints)} joints, {r.motor_count} motors, {r.float_type}; "
+                    f"{r.yaml_path}, {r.urdf_path})"]
+        if self.status == "removed":
+            r = self.old_record
+            assert r is not None
+            return [f"{self.key}: robot removed ({r.yaml_path} is gone; its files are deleted)"]
+        if self.status == "unchanged":
+            return [f"{self.key}: inputs unchanged"]
+        out = [f"{self.key}: {', '.join(self.inputs)}"]
+        for index, old, new in self.renamed:
+            out.append(f"  renamed     joint {index}: {old} -> {new}")
+        for name, old_i, new_i in self.remapped:
+            out.append(f"  remapped    joint {name}: index {old_i} -> {new_i}")
+        for j in self.added:
+            out.append(f"  added       joint {j.index}: {j.name} ({j.type}{_limits_text(j)})")
+        for j in self.removed:
+            out.append(f"  removed     joint {j.index}: {j.name}")
+        for name, index, old_t, new_t in self.types:
+            out.append(f"  type        joint {index} {name}: {old_t} -> {new_t}")
+        for name, index, fields in self.limits:
+            what = ", ".join(f"{k} {_num(a)} -> {_num(b)}" for k, a, b in fields)
+            out.append(f"  limits      joint {index} {name}: {what}")
+        if self.motor_count:
+            out.append(f"  motor_count {self.motor_count[0]} -> {self.motor_count[1]}")
+        if self.float_type:
+            out.append(f"  float_type  {self.float_type[0]} -> {self.float_type[1]}")
+        if not self.robot_changed:
+            out.append("  no joint, limit, motor count or float type change (see the file diff)")
+        return out
+
+
+def _num(value: float | None) -> str:
+    if value is None:
+        return "none"
+    if math.isfinite(value) and value == int(value) and abs(value) < 1e15:
+        return str(int(value))
+    return repr(value)
+
+
+def _limits_text(j: JointRecord) -> str:
+    parts = [f"{k} {_num(v)}" for k, v in j.limit_items() if v is not None]
+    return (", " + ", ".join(parts)) if parts else ""
+
+
+def _same(a: float | None, b: float | None) -> bool:
+    if a is None or b is None:
+        return a is b
+    return a == b or (a != a and b != b)
+
+
+def _inputs(old: RobotRecord, new: RobotRecord) -> tuple[str, ...]:
+    what = []
+    if old.yaml_path != new.yaml_path:
+        what.append(f"vendor YAML moved {old.yaml_path} -> {new.yaml_path}")
+    elif old.yaml_sha256 != new.yaml_sha256:
+        what.append(f"{new.yaml_path} changed")
+    if old.urdf_path != new.urdf_path:
+        what.append(f"URDF moved {old.urdf_path} -> {new.urdf_path}")
+    elif old.urdf_sha256 != new.urdf_sha256:
+        what.append(f"{new.urdf_path} changed")
+    if old.generator_version != new.generator_version:
+        what.append(f"rhi-gen {old.generator_version} -> {new.generator_version}")
+    return tuple(what)
+
+
+def diff_robot(old: RobotRecord | None, new: RobotRecord | None) -> RobotDiff:
+    if old is None and new is None:
+        raise ValueError("nothing to compare")
+    if old is None:
+        assert new is not None
+        return RobotDiff(new.key, "new", ("not generated yet",), new_record=new)
+    if new is None:
+        return RobotDiff(old.key, "removed", (f"{old.yaml_path} removed",), old_record=old)
+
+    old_by_index = {j.index: j for j in old.joints}
+    new_by_index = {j.index: j for j in new.joints}
+    old_by_name = {j.name: j for j in old.joints}
+    new_by_name = {j.name: j for j in new.joints}
+
+    renamed = []
+    for index in sorted(old_by_index.keys() & new_by_index.keys()):
+        o, n = old_by_index[index], new_by_index[index]
+        if o.name != n.name and o.name not in new_by_name and n.name not in old_by_name:
+            renamed.append((index, o.name, n.name))
+    renamed_old = {r[1] for r in renamed}
+    renamed_new = {r[2] for r in renamed}
+
+    common = [n for n in (j.name for j in new.joints) if n in old_by_name]  # new table's index order
+    remapped = [(name, old_by_name[name].index, new_by_name[name].index) for name in common
+                if old_by_name[name].index != new_by_name[name].index]
+    added = tuple(j for j in new.joints if j.name not in old_by_name and j.name not in renamed_new)
+    removed = tuple(j for j in old.joints if j.name not in new_by_name and j.name not in renamed_old)
+
+    pairs = [(old_by_name[name], new_by_name[name]) for name in common]
+    pairs += [(old_by_index[i], new_by_index[i]) for i, _, _ in renamed]
+    pairs.sort(key=lambda p: p[1].index)
+    limits = []
+    types = []
+    for o, n in pairs:
+        if o.type != n.type:
+            types.append((n.name, n.index, o.type, n.type))
+        fields = tuple((k, a, b) for (k, a), (_, b) in zip(o.limit_items(), n.limit_items()) if not _same(a, b))
+        if fields:
+            limits.append((n.name, n.index, fields))
+
+    inputs = _inputs(old, new)
+    diff = RobotDiff(
+        new.key, "changed" if inputs else "unchanged", inputs,
+        renamed=tuple(renamed), remapped=tuple(remapped), added=added, removed=removed,
+        limits=tuple(limits), types=tuple(types),
+        motor_count=(old.motor_count, new.motor_count) if old.motor_count != new.motor_count else None,
+        float_type=(old.float_type, new.float_type) if old.float_type != new.float_type else None,
+        new_record=new, old_record=old)
+    if diff.status == "unchanged" and diff.robot_changed:  # the same hashes cannot give a new table
+        diff = replace(diff, status="changed", inputs=("manifest out of date",))
+    return diff
+
+
+def diff_manifest(old: Manifest | None, new_records: list[RobotRecord], *,
+                  removed_keys: list[str] = ()) -> list[RobotDiff]:
+    """One RobotDiff per robot in ``new_records`` (sorted), then one per ``removed_keys`` robot."""
+    old_robots = old.robots if old is not None else {}
+    out = [diff_robot(old_robots.get(r.key), r) for r in sorted(new_records, key=lambda r: r.key)]
+    out += [diff_robot(old_robots[k], None) for k in sorted(removed_keys) if k in old_robots]
+    return out

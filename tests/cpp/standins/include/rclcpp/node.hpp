@@ -1,0 +1,318 @@
+// rhi-gen test stand-in (not the real ROS 2 code): rclcpp::Node (ROS 2 Humble API subset):
+// names, logger, clock, now(), create_publisher, create_subscription, create_wall_timer,
+// get_node_base_interface. Like rclcpp:
+//  * constructing a Node before rclcpp::init() (or after shutdown) throws rclcpp::exceptions::RCLError;
+//  * invalid node names / namespaces / topic names throw the rclcpp::exceptions::Invalid*Error types;
+//  * topic names are expanded: "x" -> "<ns>/x", "~/x" -> "<node fqn>/x".
+// This header does NOT include rclcpp/logging.hpp (neither does the real one directly): include it
+// (or rclcpp/rclcpp.hpp) for the RCLCPP_* macros.
+#ifndef RCLCPP__NODE_HPP_
+#define RCLCPP__NODE_HPP_
+
+#include <cctype>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <typeindex>
+#include <utility>
+
+#include "rcl/time.h"
+#include "rclcpp/callback_group.hpp"
+#include "rclcpp/clock.hpp"
+#include "rclcpp/context.hpp"
+#include "rclcpp/duration.hpp"
+#include "rclcpp/exceptions.hpp"
+#include "rclcpp/logger.hpp"
+#include "rclcpp/macros.hpp"
+#include "rclcpp/node_interfaces/node_base_interface.hpp"
+#include "rclcpp/node_options.hpp"
+#include "rclcpp/publisher.hpp"
+#include "rclcpp/publisher_options.hpp"
+#include "rclcpp/qos.hpp"
+#include "rclcpp/subscription.hpp"
+#include "rclcpp/subscription_options.hpp"
+#include "rclcpp/time.hpp"
+#include "rclcpp/timer.hpp"
+#include "rclcpp/utilities.hpp"
+#include "rclcpp/visibility_control.hpp"
+#include "rosidl_runtime_cpp/traits.hpp"
+#include "rhi_fake/detail/ros_core.hpp"
+
+namespace rhi_fake {
+namespace detail {
+
+inline void validate_node_name(const std::string & name)
+{
+  if (name.empty()) {
+    throw rclcpp::exceptions::InvalidNodeNameError(name.c_str(), "node name must not be empty", 0);
+  }
+  if (name.size() > 255) {
+    throw rclcpp::exceptions::InvalidNodeNameError(name.c_str(), "node name is too long", 255);
+  }
+  for (size_t i = 0; i < name.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(name[i]);
+    if (!(std::isalnum(c) || c == '_')) {
+      throw rclcpp::exceptions::InvalidNodeNameError(
+              name.c_str(), "node name must not contain characters other than alphanumerics or '_'", i);
+    }
+  }
+  if (std::isdigit(static_cast<unsigned char>(name[0]))) {
+    throw rclcpp::exceptions::InvalidNodeNameError(
+            name.c_str(), "node name must not start with a number", 0);
+  }
+}
+
+inline std::string normalize_namespace(const std::string & ns)
+{
+  if (ns.empty() || ns == "/") {
+    return "/";
+  }
+  std::string out = ns.front() == '/' ? ns : "/" + ns;
+  if (out.size() > 1 && out.back() == '/') {
+    throw rclcpp::exceptions::InvalidNamespaceError(
+            ns.c_str(), "namespace must not end with a forward slash", ns.size() - 1);
+  }
+  for (size_t i = 0; i < out.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(out[i]);
+    bool ok = std::isalnum(c) || c == '_' || c == '/';
+    bool double_slash = c == '/' && i + 1 < out.size() && out[i + 1] == '/';
+    bool digit_token = std::isdigit(c) && i > 0 && out[i - 1] == '/';
+    if (!ok || double_slash || digit_token) {
+      throw rclcpp::exceptions::InvalidNamespaceError(ns.c_str(), "invalid namespace", i);
+    }
+  }
+  return out;
+}
+
+/// rcl's logger name of a node: "<ns without leading '/', '/' -> '.'>.<name>", or "<name>".
+inline std::string node_logger_name(const std::string & name, const std::string & ns)
+{
+  std::string prefix;
+  for (char c : ns) {
+    if (c == '/') {
+      if (!prefix.empty() && prefix.back() != '.') {prefix += '.';}
+    } else {
+      prefix += c;
+    }
+  }
+  if (!prefix.empty() && prefix.back() == '.') {prefix.pop_back();}
+  return prefix.empty() ? name : prefix + "." + name;
+}
+
+/// Expand and validate a topic name the way rcl does for the default (no remapping) case.
+inline std::string expand_topic_name(const std::string & name, const NodeCore & node)
+{
+  auto fail = [&](const char * why, size_t at) {
+      throw rclcpp::exceptions::InvalidTopicNameError(name.c_str(), why, at);
+    };
+  if (name.empty()) {fail("topic name must not be empty", 0);}
+  if (name.back() == '/') {fail("topic name must not end with a forward slash", name.size() - 1);}
+  for (size_t i = 0; i < name.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(name[i]);
+    if (c == '~') {
+      if (i != 0 || (name.size() > 1 && name[1] != '/')) {
+        fail("'~' must be followed by a '/' and only be the first character", i);
+      }
+      continue;
+    }
+    if (!(std::isalnum(c) || c == '_' || c == '/')) {
+      fail("topic name must not contain characters other than alphanumerics, '_', '~' or '/'", i);
+    }
+    if (c == '/' && i + 1 < name.size() && name[i + 1] == '/') {
+      fail("topic name must not contain repeated forward slashes", i);
+    }
+    if (std::isdigit(c) && (i == 0 || name[i - 1] == '/')) {
+      fail("topic name tokens must not start with a number", i);
+    }
+  }
+  std::string out;
+  if (name[0] == '/') {
+    out = name;
+  } else if (name[0] == '~') {
+    out = node.fqn + name.substr(1);
+  } else {
+    out = (node.ns == "/" ? std::string("/") : node.ns + "/") + name;
+  }
+  return out;
+}
+
+template<typename EntityT>
+inline EndpointEntry make_endpoint(
+  const std::shared_ptr<EntityT> & owner, const rclcpp::QoS & qos, const NodeCore & node,
+  std::type_index type, const char * type_name)
+{
+  const auto & p = qos.get_rmw_qos_profile();
+  QosSnapshot snap;
+  snap.history = static_cast<int>(p.history);
+  snap.depth = p.depth;
+  snap.reliability = static_cast<int>(p.reliability);
+  snap.durability = static_cast<int>(p.durability);
+  return EndpointEntry{std::weak_ptr<void>(owner), snap, node.fqn, type, type_name};
+}
+
+}  // namespace detail
+}  // namespace rhi_fake
+
+namespace rclcpp
+{
+
+class Node : public std::enable_shared_from_this<Node>
+{
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Node)
+
+  explicit Node(const std::string & node_name, const NodeOptions & options = NodeOptions())
+  : Node(node_name, "", options) {}
+
+  explicit Node(
+    const std::string & node_name, const std::string & namespace_,
+    const NodeOptions & options = NodeOptions())
+  : options_(options),
+    logger_(rclcpp::get_logger(::rhi_fake::detail::node_logger_name(node_name, namespace_))),
+    clock_(std::make_shared<rclcpp::Clock>(RCL_ROS_TIME))
+  {
+    if (!rclcpp::ok()) {
+      throw rclcpp::exceptions::RCLError(
+              "failed to initialize rcl node: the given context is not valid (call rclcpp::init() "
+              "first), at ./src/rcl/node.c");
+    }
+    ::rhi_fake::detail::validate_node_name(node_name);
+    core_ = std::make_shared<::rhi_fake::detail::NodeCore>();
+    core_->name = node_name;
+    core_->ns = ::rhi_fake::detail::normalize_namespace(namespace_);
+    core_->fqn = (core_->ns == "/" ? std::string("/") : core_->ns + "/") + node_name;
+    base_ = std::make_shared<node_interfaces::NodeBaseInterface>(core_);
+  }
+
+  virtual ~Node() = default;
+
+  const char * get_name() const {return core_->name.c_str();}
+  const char * get_namespace() const {return core_->ns.c_str();}
+  const char * get_fully_qualified_name() const {return core_->fqn.c_str();}
+
+  rclcpp::Logger get_logger() const {return logger_;}
+
+  rclcpp::Clock::SharedPtr get_clock() {return clock_;}
+  rclcpp::Clock::ConstSharedPtr get_clock() const {return clock_;}
+
+  /// Current time of the node clock (RCL_ROS_TIME; system time unless a fake time is set).
+  Time now() const {return clock_->now();}
+
+  const NodeOptions & get_node_options() const {return options_;}
+
+  node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface() {return base_;}
+
+  template<
+    typename MessageT,
+    typename AllocatorT = std::allocator<void>,
+    typename PublisherT = rclcpp::Publisher<MessageT, AllocatorT>>
+  std::shared_ptr<PublisherT>
+  create_publisher(
+    const std::string & topic_name,
+    const rclcpp::QoS & qos,
+    const PublisherOptionsWithAllocator<AllocatorT> & options =
+    PublisherOptionsWithAllocator<AllocatorT>())
+  {
+    (void)options;
+    static_assert(
+      rosidl_generator_traits::is_message<MessageT>::value,
+      "create_publisher<MessageT>: MessageT must be a ROS message type");
+    std::string topic = ::rhi_fake::detail::expand_topic_name(topic_name, *core_);
+    const std::type_index type(typeid(MessageT));
+    const char * type_name = rosidl_generator_traits::name<MessageT>();
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    auto & record = reg.topics[topic];
+    if (!record.slot) {
+      record.slot = std::make_shared<::rhi_fake::detail::TopicSlot<MessageT>>(type, type_name);
+    } else if (record.slot->type != type) {
+      throw std::logic_error(
+              "rhi_fake: topic '" + topic + "' already has a publisher of type " +
+              record.slot->type_name + "; the fake keeps one message type per published topic");
+    }
+    auto slot = std::static_pointer_cast<::rhi_fake::detail::TopicSlot<MessageT>>(record.slot);
+    auto pub = std::make_shared<PublisherT>(core_, topic, qos, slot);
+    ::rhi_fake::detail::prune_dead(record.publishers);
+    record.publishers.push_back(
+      ::rhi_fake::detail::make_endpoint(
+        std::shared_ptr<rclcpp::PublisherBase>(pub), qos, *core_, type, type_name));
+    return pub;
+  }
+
+  template<
+    typename MessageT,
+    typename CallbackT,
+    typename AllocatorT = std::allocator<void>,
+    typename SubscriptionT = rclcpp::Subscription<MessageT, AllocatorT>>
+  std::shared_ptr<SubscriptionT>
+  create_subscription(
+    const std::string & topic_name,
+    const rclcpp::QoS & qos,
+    CallbackT && callback,
+    const SubscriptionOptionsWithAllocator<AllocatorT> & options =
+    SubscriptionOptionsWithAllocator<AllocatorT>())
+  {
+    (void)options;
+    static_assert(
+      rosidl_generator_traits::is_message<MessageT>::value,
+      "create_subscription<MessageT>: MessageT must be a ROS message type");
+    using DecayedT = std::decay_t<CallbackT>;
+    using cb_traits = ::rhi_fake::detail::subscription_callback_traits<MessageT, DecayedT>;
+    constexpr auto kind = cb_traits::kind;
+    if constexpr (kind == ::rhi_fake::detail::CallbackKind::SharedPtr) {
+      ::rhi_fake::detail::shared_ptr_callback_is_deprecated<MessageT>();
+    }
+    using ImplT = ::rhi_fake::detail::SubscriptionImpl<MessageT, AllocatorT, DecayedT, kind>;
+    std::string topic = ::rhi_fake::detail::expand_topic_name(topic_name, *core_);
+    auto impl = std::make_shared<ImplT>(core_, topic, qos, DecayedT(std::forward<CallbackT>(callback)));
+    std::shared_ptr<SubscriptionT> sub = impl;
+    const std::type_index type(typeid(MessageT));
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    auto & record = reg.topics[topic];
+    ::rhi_fake::detail::prune_dead(record.subscriptions);
+    record.subscriptions.push_back(
+      ::rhi_fake::detail::make_endpoint(
+        std::shared_ptr<rclcpp::SubscriptionBase>(sub), qos, *core_, type,
+        rosidl_generator_traits::name<MessageT>()));
+    return sub;
+  }
+
+  template<typename DurationRepT = int64_t, typename DurationT = std::milli, typename CallbackT>
+  typename rclcpp::WallTimer<CallbackT>::SharedPtr
+  create_wall_timer(
+    std::chrono::duration<DurationRepT, DurationT> period,
+    CallbackT callback,
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    (void)group;
+    auto period_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(period);
+    auto timer = std::make_shared<rclcpp::WallTimer<CallbackT>>(period_ns, std::move(callback), core_);
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    for (auto it = reg.timers.begin(); it != reg.timers.end(); ) {
+      if (it->expired()) {
+        it = reg.timers.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    reg.timers.push_back(std::weak_ptr<rclcpp::TimerBase>(timer));
+    return timer;
+  }
+
+private:
+  NodeOptions options_;
+  rclcpp::Logger logger_;
+  rclcpp::Clock::SharedPtr clock_;
+  std::shared_ptr<::rhi_fake::detail::NodeCore> core_;
+  node_interfaces::NodeBaseInterface::SharedPtr base_;
+};
+
+}  // namespace rclcpp
+
+#endif  // RCLCPP__NODE_HPP_

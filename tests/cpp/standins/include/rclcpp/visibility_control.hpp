@@ -1,0 +1,9 @@
+// rhi-gen test stand-in (not the real ROS 2 code).
+#ifndef RCLCPP__VISIBILITY_CONTROL_HPP_
+#define RCLCPP__VISIBILITY_CONTROL_HPP_
+#define RCLCPP_EXPORT
+#define RCLCPP_IMPORT
+#define RCLCPP_PUBLIC
+#define RCLCPP_LOCAL
+#define RCLCPP_PUBLIC_TYPE
+#endif  // RCLCPP__VISIBILITY_CONTROL_HPP_

@@ -1,0 +1,1055 @@
+// Self-test of the rhi-gen C++ stand-ins and rhi_fake hooks (run by tests/test_standins.py).
+// Exercises every stand-in header and every hook, counts heap allocations on the hot paths,
+// and checks the SDK struct layouts. Exit code 0 = all checks passed.
+
+// ---- stand-in headers, as a generated driver includes them ----
+#include <aimdk_msgs/msg/domain_error_state.hpp>
+#include <aimdk_msgs/msg/joint_command.hpp>
+#include <aimdk_msgs/msg/joint_command_array.hpp>
+#include <aimdk_msgs/msg/joint_state.hpp>
+#include <aimdk_msgs/msg/joint_state_array.hpp>
+#include <aimdk_msgs/msg/message_header.hpp>
+#include <builtin_interfaces/msg/duration.hpp>
+#include <builtin_interfaces/msg/time.hpp>
+#include <geometry_msgs/msg/quaternion.hpp>
+#include <geometry_msgs/msg/vector3.hpp>
+#include <hardware_interface/handle.hpp>
+#include <hardware_interface/hardware_info.hpp>
+#include <hardware_interface/system_interface.hpp>
+#include <hardware_interface/types/hardware_interface_return_values.hpp>
+#include <hardware_interface/types/hardware_interface_type_values.hpp>
+#include <hardware_interface/types/lifecycle_state_names.hpp>
+#include <hardware_interface/version.h>
+#include <hardware_interface/visibility_control.h>
+#include <interface_protocol/msg/imu_info.hpp>
+#include <interface_protocol/msg/joint_command.hpp>
+#include <interface_protocol/msg/joint_state.hpp>
+#include <interface_protocol/msg/parallel_parser_type.hpp>
+#include <lifecycle_msgs/msg/state.hpp>
+#include <pluginlib/class_list_macros.hpp>
+#include <rclcpp/clock.hpp>
+#include <rclcpp/duration.hpp>
+#include <rclcpp/executors.hpp>
+#include <rclcpp/executors/multi_threaded_executor.hpp>
+#include <rclcpp/executors/single_threaded_executor.hpp>
+#include <rclcpp/logging.hpp>
+#include <rclcpp/macros.hpp>
+#include <rclcpp/node.hpp>
+#include <rclcpp/qos.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp/time.hpp>
+#include <rclcpp_lifecycle/node_interfaces/lifecycle_node_interface.hpp>
+#include <rclcpp_lifecycle/state.hpp>
+#include <sensor_msgs/msg/imu.hpp>
+#include <sensor_msgs/msg/joint_state.hpp>
+#include <std_msgs/msg/header.hpp>
+#include <unitree/common/thread/recurrent_thread.hpp>
+#include <unitree/common/thread/thread.hpp>
+#include <unitree/idl/hg/IMUState_.hpp>
+#include <unitree/idl/hg/LowCmd_.hpp>
+#include <unitree/idl/hg/LowState_.hpp>
+#include <unitree/idl/hg/MotorCmd_.hpp>
+#include <unitree/idl/hg/MotorState_.hpp>
+#include <unitree/robot/b2/motion_switcher/motion_switcher_client.hpp>
+#include <unitree/robot/channel/channel_factory.hpp>
+#include <unitree/robot/channel/channel_publisher.hpp>
+#include <unitree/robot/channel/channel_subscriber.hpp>
+
+// ---- test hooks ----
+#include "rhi_fake/all.hpp"
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+// ============================================================== allocation counting
+namespace alloc {
+std::atomic<long> count{0};
+thread_local bool counting = false;
+}  // namespace alloc
+
+// noinline: once GCC inlines a replacement operator delete that calls free(), it reports a false
+// -Wmismatched-new-delete at -O1 and above.
+__attribute__((noinline)) void * operator new(std::size_t n)
+{
+  if (alloc::counting) {alloc::count.fetch_add(1, std::memory_order_relaxed);}
+  if (void * p = std::malloc(n ? n : 1)) {return p;}
+  throw std::bad_alloc();
+}
+__attribute__((noinline)) void * operator new[](std::size_t n)
+{
+  if (alloc::counting) {alloc::count.fetch_add(1, std::memory_order_relaxed);}
+  if (void * p = std::malloc(n ? n : 1)) {return p;}
+  throw std::bad_alloc();
+}
+__attribute__((noinline)) void operator delete(void * p) noexcept {std::free(p);}
+__attribute__((noinline)) void operator delete[](void * p) noexcept {std::free(p);}
+__attribute__((noinline)) void operator delete(void * p, std::size_t) noexcept {std::free(p);}
+__attribute__((noinline)) void operator delete[](void * p, std::size_t) noexcept {std::free(p);}
+
+/// Allocations made by `fn` on this thread.
+template<typename F>
+long allocations_in(F && fn)
+{
+  alloc::count.store(0);
+  alloc::counting = true;
+  fn();
+  alloc::counting = false;
+  return alloc::count.load();
+}
+
+// ============================================================== tiny check framework
+static int g_failures = 0;
+static int g_checks = 0;
+
+#define CHECK(cond) \
+  do { \
+    ++g_checks; \
+    if (!(cond)) { \
+      ++g_failures; \
+      std::fprintf(stderr, "CHECK FAILED %s:%d: %s\n", __FILE__, __LINE__, #cond); \
+    } \
+  } while (0)
+
+#define CHECK_THROWS(Type, expr) \
+  do { \
+    ++g_checks; \
+    bool rhi_thrown = false; \
+    try {expr;} catch (const Type &) {rhi_thrown = true;} catch (...) {} \
+    if (!rhi_thrown) { \
+      ++g_failures; \
+      std::fprintf(stderr, "CHECK FAILED %s:%d: %s did not throw %s\n", __FILE__, __LINE__, #expr, \
+        #Type); \
+    } \
+  } while (0)
+
+#define CHECK_NO_ALLOC(what, body) \
+  do { \
+    ++g_checks; \
+    long rhi_n = allocations_in([&]() {body;}); \
+    if (rhi_n != 0) { \
+      ++g_failures; \
+      std::fprintf(stderr, "CHECK FAILED %s:%d: %s made %ld heap allocation(s)\n", __FILE__, \
+        __LINE__, what, rhi_n); \
+    } \
+  } while (0)
+
+template<typename Pred>
+bool eventually(Pred pred, std::chrono::milliseconds timeout = std::chrono::milliseconds(3000))
+{
+  auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!pred()) {
+    if (std::chrono::steady_clock::now() > deadline) {return false;}
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
+
+// ============================================================== a miniature driver
+namespace demo {
+
+class DemoSystem : public hardware_interface::SystemInterface
+{
+public:
+  RCLCPP_SHARED_PTR_DEFINITIONS(DemoSystem)
+
+  hardware_interface::CallbackReturn on_init(const hardware_interface::HardwareInfo & info) override
+  {
+    if (hardware_interface::SystemInterface::on_init(info) != hardware_interface::CallbackReturn::SUCCESS) {
+      return hardware_interface::CallbackReturn::ERROR;
+    }
+    pos_.assign(info_.joints.size(), 0.0);
+    cmd_.assign(info_.joints.size(), 0.0);
+    return hardware_interface::CallbackReturn::SUCCESS;
+  }
+
+  std::vector<hardware_interface::StateInterface> export_state_interfaces() override
+  {
+    std::vector<hardware_interface::StateInterface> out;
+    for (size_t i = 0; i < info_.joints.size(); ++i) {
+      out.emplace_back(info_.joints[i].name, hardware_interface::HW_IF_POSITION, &pos_[i]);
+    }
+    return out;
+  }
+
+  std::vector<hardware_interface::CommandInterface> export_command_interfaces() override
+  {
+    std::vector<hardware_interface::CommandInterface> out;
+    for (size_t i = 0; i < info_.joints.size(); ++i) {
+      out.emplace_back(info_.joints[i].name, hardware_interface::HW_IF_POSITION, &cmd_[i]);
+    }
+    return out;
+  }
+
+  hardware_interface::return_type read(const rclcpp::Time &, const rclcpp::Duration &) override
+  {
+    return hardware_interface::return_type::OK;
+  }
+
+  hardware_interface::return_type write(const rclcpp::Time &, const rclcpp::Duration &) override
+  {
+    for (size_t i = 0; i < cmd_.size(); ++i) {pos_[i] = cmd_[i];}
+    return hardware_interface::return_type::OK;
+  }
+
+  std::vector<double> pos_;
+  std::vector<double> cmd_;
+};
+
+}  // namespace demo
+
+PLUGINLIB_EXPORT_CLASS(demo::DemoSystem, hardware_interface::SystemInterface)
+
+// ============================================================== hardware_interface
+static void test_hardware_interface()
+{
+  static_assert(HARDWARE_INTERFACE_VERSION_MAJOR == 2, "Humble is hardware_interface 2.x");
+  static_assert(HARDWARE_INTERFACE_VERSION_GTE(2, 0, 0), "GTE");
+  static_assert(!HARDWARE_INTERFACE_VERSION_GTE(3, 0, 0), "not GTE 3");
+  static_assert(std::is_same<decltype(hardware_interface::HardwareInfo::hardware_parameters),
+    std::unordered_map<std::string, std::string>>::value, "hardware_parameters type");
+  static_assert(std::is_same<hardware_interface::CallbackReturn,
+    rclcpp_lifecycle::node_interfaces::LifecycleNodeInterface::CallbackReturn>::value, "CallbackReturn");
+  static_assert(!std::is_copy_constructible<hardware_interface::CommandInterface>::value, "cmd copy");
+  static_assert(std::is_move_constructible<hardware_interface::CommandInterface>::value, "cmd move");
+  static_assert(std::is_copy_constructible<hardware_interface::StateInterface>::value, "state copy");
+  static_assert(!std::is_copy_assignable<hardware_interface::StateInterface>::value, "state assign");
+  static_assert(!std::is_copy_constructible<hardware_interface::SystemInterface>::value, "sys copy");
+  static_assert(std::is_abstract<hardware_interface::SystemInterface>::value, "sys abstract");
+  static_assert(static_cast<int>(hardware_interface::return_type::OK) == 0, "OK");
+  static_assert(static_cast<int>(hardware_interface::return_type::ERROR) == 1, "ERROR");
+  static_assert(static_cast<int>(hardware_interface::CallbackReturn::SUCCESS) == 97, "SUCCESS");
+  static_assert(static_cast<int>(hardware_interface::CallbackReturn::FAILURE) == 98, "FAILURE");
+  static_assert(static_cast<int>(hardware_interface::CallbackReturn::ERROR) == 99, "ERROR");
+  CHECK(std::string(hardware_interface::HW_IF_POSITION) == "position");
+  CHECK(std::string(hardware_interface::HW_IF_VELOCITY) == "velocity");
+  CHECK(std::string(hardware_interface::HW_IF_ACCELERATION) == "acceleration");
+  CHECK(std::string(hardware_interface::HW_IF_EFFORT) == "effort");
+  CHECK(std::string(hardware_interface::lifecycle_state_names::ACTIVE) == "active");
+
+  hardware_interface::HardwareInfo info;
+  info.name = "demo_hw";
+  info.type = "system";
+  info.hardware_class_type = "demo/DemoSystem";
+  info.hardware_parameters["command_writer_period_us"] = "2000";
+  for (const char * j : {"j1", "j2"}) {
+    hardware_interface::ComponentInfo c;
+    c.name = j;
+    c.type = "joint";
+    hardware_interface::InterfaceInfo ii;
+    ii.name = hardware_interface::HW_IF_POSITION;
+    c.command_interfaces.push_back(ii);
+    c.state_interfaces.push_back(ii);
+    info.joints.push_back(c);
+  }
+  hardware_interface::ComponentInfo imu;
+  imu.name = "base_imu";
+  imu.type = "sensor";
+  info.sensors.push_back(imu);
+  info.gpios.clear();
+  info.transmissions.clear();
+  info.original_xml = "<ros2_control/>";
+
+  demo::DemoSystem sys;
+  CHECK(sys.get_state().id() == lifecycle_msgs::msg::State::PRIMARY_STATE_UNKNOWN);
+  CHECK(sys.get_state().label() == "unknown");
+  CHECK(sys.on_init(info) == hardware_interface::CallbackReturn::SUCCESS);
+  CHECK(sys.get_name() == "demo_hw");
+  auto states = sys.export_state_interfaces();
+  auto cmds = sys.export_command_interfaces();
+  CHECK(states.size() == 2 && cmds.size() == 2);
+  CHECK(states[1].get_name() == "j2/position");
+  CHECK(states[1].get_prefix_name() == "j2");
+  CHECK(states[1].get_interface_name() == "position");
+  CHECK(static_cast<bool>(states[0]));
+  cmds[1].set_value(1.25);
+  CHECK(cmds[1].get_value() == 1.25);
+  CHECK(sys.write(rclcpp::Time(0, 0), rclcpp::Duration(0, 2000000)) == hardware_interface::return_type::OK);
+  CHECK(states[1].get_value() == 1.25);
+  hardware_interface::CommandInterface moved(std::move(cmds[0]));
+  CHECK(moved.get_name() == "j1/position");
+  hardware_interface::StateInterface copy(states[0]);
+  CHECK(copy.get_name() == "j1/position");
+  hardware_interface::StateInterface unbound("a", "b");
+  CHECK(!static_cast<bool>(unbound));
+  CHECK_THROWS(std::runtime_error, (void)unbound.get_value());
+  CHECK(sys.prepare_command_mode_switch({}, {}) == hardware_interface::return_type::OK);
+  CHECK(sys.perform_command_mode_switch({}, {}) == hardware_interface::return_type::OK);
+  rclcpp_lifecycle::State active(lifecycle_msgs::msg::State::PRIMARY_STATE_ACTIVE, "active");
+  CHECK(sys.on_configure(active) == hardware_interface::CallbackReturn::SUCCESS);
+  CHECK(sys.on_activate(active) == hardware_interface::CallbackReturn::SUCCESS);
+  CHECK(sys.on_deactivate(active) == hardware_interface::CallbackReturn::SUCCESS);
+  sys.set_state(active);
+  CHECK(sys.get_state().id() == 3 && sys.get_state().label() == "active");
+
+  // pluginlib registration + rhi_fake::plugins
+  auto classes = rhi_fake::plugins::classes();
+  bool found = false;
+  for (auto & c : classes) {
+    found |= c.derived == "demo::DemoSystem" && c.base == "hardware_interface::SystemInterface";
+  }
+  CHECK(found);
+  auto plugin = rhi_fake::plugins::create<hardware_interface::SystemInterface>("demo::DemoSystem");
+  CHECK(plugin != nullptr);
+  CHECK(plugin->on_init(info) == hardware_interface::CallbackReturn::SUCCESS);
+  CHECK(plugin->export_command_interfaces().size() == 2);
+  CHECK_THROWS(std::out_of_range, rhi_fake::plugins::create<hardware_interface::SystemInterface>("nope::X"));
+  auto made = demo::DemoSystem::make_shared();
+  CHECK(made != nullptr);
+}
+
+// ============================================================== messages
+static void test_messages()
+{
+  geometry_msgs::msg::Quaternion q;
+  CHECK(q.x == 0.0 && q.y == 0.0 && q.z == 0.0 && q.w == 1.0);
+  sensor_msgs::msg::Imu imu;
+  static_assert(std::is_same<decltype(imu.orientation_covariance), std::array<double, 9>>::value, "cov");
+  static_assert(std::is_same<decltype(imu.angular_velocity_covariance), std::array<double, 9>>::value, "cov");
+  static_assert(std::is_same<decltype(imu.linear_acceleration_covariance), std::array<double, 9>>::value, "cov");
+  CHECK(imu.orientation.w == 1.0 && imu.orientation_covariance[8] == 0.0);
+  imu.header.frame_id = "imu_link";
+  imu.header.stamp.sec = 3;
+  sensor_msgs::msg::Imu::SharedPtr imu_ptr = std::make_shared<sensor_msgs::msg::Imu>(imu);
+  sensor_msgs::msg::Imu::ConstSharedPtr imu_cptr = imu_ptr;
+  CHECK(*imu_cptr == imu);
+  imu_ptr->linear_acceleration.z = 9.81;
+  CHECK(*imu_cptr != imu);
+  sensor_msgs::msg::JointState js;
+  js.name = {"a"};
+  js.position = {1.0};
+  CHECK(js.velocity.empty() && js.effort.empty());
+  std_msgs::msg::Header h;
+  builtin_interfaces::msg::Time t;
+  builtin_interfaces::msg::Duration d;
+  CHECK(h.stamp.sec == 0 && t.nanosec == 0u && d.sec == 0);
+
+  aimdk_msgs::msg::JointCommandArray cmd;
+  cmd.joints.resize(2);
+  cmd.joints[0].name = "left_hip_pitch_joint";
+  cmd.joints[0].stiffness = 40.0;
+  cmd.header.sequence = 7;
+  CHECK(cmd.joints[1].damping == 0.0 && cmd.header.meas_stamp.sec == 0);
+  aimdk_msgs::msg::JointCommand jc;
+  CHECK(jc.position == 0.0 && jc.velocity == 0.0 && jc.effort == 0.0 && jc.name.empty());
+  aimdk_msgs::msg::JointStateArray st;
+  st.joints.resize(1);
+  st.joints[0].error_code = 5;
+  static_assert(std::is_same<decltype(st.joints[0].error_code), uint16_t>::value, "error_code");
+  CHECK(st.state.value == aimdk_msgs::msg::DomainErrorState::NONE);
+  static_assert(aimdk_msgs::msg::DomainErrorState::DAMPING == 1, "DAMPING");
+  static_assert(aimdk_msgs::msg::DomainErrorState::DISCONNECT == 4, "DISCONNECT");
+  aimdk_msgs::msg::JointState ajs;
+  aimdk_msgs::msg::MessageHeader mh;
+  CHECK(ajs.effort == 0.0 && mh.sequence == 0u);
+
+  interface_protocol::msg::JointCommand ic;
+  ic.position.assign(24, 0.0);
+  ic.parallel_parser_type = interface_protocol::msg::ParallelParserType::RL_PARSER;
+  static_assert(interface_protocol::msg::ParallelParserType::CLASSIC_PARSER == 0, "CLASSIC");
+  static_assert(interface_protocol::msg::ParallelParserType::RL_PARSER == 1, "RL");
+  CHECK(ic.feed_forward_torque.empty() && ic.torque.empty() && ic.stiffness.empty() && ic.damping.empty());
+  interface_protocol::msg::JointState ijs;
+  interface_protocol::msg::ImuInfo ii;
+  interface_protocol::msg::ParallelParserType ppt;
+  CHECK(ijs.torque.empty() && ii.quaternion.w == 1.0 && ii.rpy.x == 0.0 && ppt.structure_needs_at_least_one_member == 0);
+  CHECK(ii.linear_acceleration.z == 0.0 && ii.angular_velocity.y == 0.0);
+
+  static_assert(lifecycle_msgs::msg::State::PRIMARY_STATE_INACTIVE == 2, "INACTIVE");
+  CHECK(std::string(rosidl_generator_traits::name<sensor_msgs::msg::Imu>()) == "sensor_msgs/msg/Imu");
+  CHECK(std::string(rosidl_generator_traits::data_type<aimdk_msgs::msg::JointCommandArray>()) ==
+    "aimdk_msgs::msg::JointCommandArray");
+  static_assert(rosidl_generator_traits::is_message<interface_protocol::msg::ImuInfo>::value, "msg");
+  static_assert(!rosidl_generator_traits::is_message<int>::value, "not msg");
+  static_assert(!std::is_convertible<rosidl_runtime_cpp::MessageInitialization, sensor_msgs::msg::Imu>::value,
+    "explicit ctor");
+  sensor_msgs::msg::Imu skip(rosidl_runtime_cpp::MessageInitialization::SKIP);
+  (void)skip;
+  auto set_result = std::make_shared<std_msgs::msg::Header>();
+  set_result->set__frame_id("x");
+  CHECK(set_result->frame_id == "x");
+}
+
+// ============================================================== time, duration, clock
+static void test_time()
+{
+  rclcpp::Duration a(1, 500000000);
+  CHECK(a.nanoseconds() == 1500000000LL);
+  CHECK(std::fabs(a.seconds() - 1.5) < 1e-12);
+  rclcpp::Duration b = std::chrono::milliseconds(2);
+  CHECK(b.nanoseconds() == 2000000);
+  CHECK(rclcpp::Duration::from_seconds(0.25).nanoseconds() == 250000000);
+  CHECK(rclcpp::Duration::from_nanoseconds(7).nanoseconds() == 7);
+  CHECK((a + b).nanoseconds() == 1502000000LL && (a - a).nanoseconds() == 0 && b < a);
+  CHECK((b * 2.0).nanoseconds() == 4000000);
+  CHECK(a.to_chrono<std::chrono::milliseconds>().count() == 1500);
+  builtin_interfaces::msg::Duration dmsg = a;
+  CHECK(dmsg.sec == 1 && dmsg.nanosec == 500000000u);
+
+  rclcpp::Time t0(5, 0);
+  CHECK(t0.get_clock_type() == RCL_SYSTEM_TIME && t0.nanoseconds() == 5000000000LL);
+  rclcpp::Time t1 = t0 + a;
+  CHECK((t1 - t0).nanoseconds() == 1500000000LL);
+  CHECK(t1 > t0 && t0 < t1 && !(t0 == t1));
+  rclcpp::Time ros_t(1, 0, RCL_ROS_TIME);
+  CHECK_THROWS(std::runtime_error, (void)(ros_t < t0));
+  CHECK_THROWS(std::runtime_error, (void)(ros_t - t0));
+  builtin_interfaces::msg::Time tmsg = t1;
+  CHECK(tmsg.sec == 6 && tmsg.nanosec == 500000000u);
+  rclcpp::Time from_msg(tmsg);
+  CHECK(from_msg.get_clock_type() == RCL_ROS_TIME && from_msg.nanoseconds() == t1.nanoseconds());
+  CHECK_THROWS(std::runtime_error, rclcpp::Time(-1, 0));
+
+  rclcpp::Clock clock(RCL_ROS_TIME);
+  CHECK(clock.now().get_clock_type() == RCL_ROS_TIME);
+  CHECK(clock.now().nanoseconds() > 1600000000LL * 1000000000LL);   // system time, after 2020
+  rhi_fake::ros::set_time(42);
+  CHECK(clock.now().nanoseconds() == 42);
+  rhi_fake::ros::advance_time(std::chrono::nanoseconds(8));
+  CHECK(clock.now().nanoseconds() == 50);
+  CHECK_NO_ALLOC("Clock::now", (void)clock.now());
+  rhi_fake::ros::use_system_time();
+  CHECK(clock.now().nanoseconds() > 50);
+  CHECK_NO_ALLOC("Clock::now (system)", (void)clock.now());
+}
+
+// ============================================================== logging
+static void test_logging(const rclcpp::Node::SharedPtr & node)
+{
+  rhi_fake::logs::clear();
+  auto logger = node->get_logger();
+  RCLCPP_DEBUG(logger, "debug %d", 1);
+  RCLCPP_INFO(logger, "info %s", "two");
+  RCLCPP_WARN(node->get_logger(), "warn %.1f", 3.0);
+  RCLCPP_ERROR(rclcpp::get_logger("other"), "error");
+  RCLCPP_FATAL(logger, "fatal %lu", 5ul);
+  CHECK(rhi_fake::logs::count(rhi_fake::logs::Severity::Debug) == 1);
+  CHECK(rhi_fake::logs::count(rhi_fake::logs::Severity::Info) == 1);
+  CHECK(rhi_fake::logs::count(rhi_fake::logs::Severity::Warn) == 1);
+  CHECK(rhi_fake::logs::count(rhi_fake::logs::Severity::Error) == 1);
+  CHECK(rhi_fake::logs::count(rhi_fake::logs::Severity::Fatal) == 1);
+  CHECK(rhi_fake::logs::count_all() == 5);
+  CHECK(rhi_fake::logs::contains("info two"));
+  CHECK(rhi_fake::logs::contains("warn 3.0", rhi_fake::logs::Severity::Warn));
+  CHECK(!rhi_fake::logs::contains("debug 1", rhi_fake::logs::Severity::Info));
+  auto lines = rhi_fake::logs::lines();
+  CHECK(lines.size() == 5);
+  CHECK(lines[3].logger == "other" && lines[3].text == "error" && lines[0].logger == node->get_name());
+  CHECK(std::string(rhi_fake::logs::severity_name(lines[1].severity)) == "INFO");
+
+  rhi_fake::logs::clear();
+  for (int i = 0; i < 3; ++i) {
+    RCLCPP_WARN_ONCE(logger, "once");
+    RCLCPP_INFO_SKIPFIRST(logger, "skipfirst %d", i);
+    RCLCPP_INFO_EXPRESSION(logger, i == 2, "expr %d", i);
+  }
+  CHECK(rhi_fake::logs::count_containing("once") == 1);
+  CHECK(rhi_fake::logs::count_containing("skipfirst") == 2 && !rhi_fake::logs::contains("skipfirst 0"));
+  CHECK(rhi_fake::logs::count_containing("expr") == 1 && rhi_fake::logs::contains("expr 2"));
+  RCLCPP_ERROR_STREAM(logger, "stream " << 12 << "!");
+  CHECK(rhi_fake::logs::contains("stream 12!", rhi_fake::logs::Severity::Error));
+
+  // THROTTLE with a fake clock: takes the clock by reference, period in milliseconds
+  rhi_fake::logs::clear();
+  rhi_fake::ros::set_time(10LL * 1000000000LL);
+  auto throttled = [&]() {RCLCPP_WARN_THROTTLE(logger, *node->get_clock(), 1000, "late by %d us", 7);};
+  throttled();
+  throttled();
+  CHECK(rhi_fake::logs::count_containing("late by") == 1);
+  rhi_fake::ros::advance_time(std::chrono::milliseconds(999));
+  throttled();
+  CHECK(rhi_fake::logs::count_containing("late by") == 1);
+  rhi_fake::ros::advance_time(std::chrono::milliseconds(1));
+  throttled();
+  CHECK(rhi_fake::logs::count_containing("late by") == 2);
+  rhi_fake::ros::use_system_time();
+
+  // the printf-style macros never allocate
+  rclcpp::Clock & clk = *node->get_clock();
+  CHECK_NO_ALLOC("RCLCPP_WARN", RCLCPP_WARN(logger, "hot path %d %s", 1, "x"));
+  CHECK_NO_ALLOC("RCLCPP_ERROR_THROTTLE", RCLCPP_ERROR_THROTTLE(logger, clk, 1000, "throttled %d", 2));
+  CHECK_NO_ALLOC("RCLCPP_INFO_ONCE", RCLCPP_INFO_ONCE(logger, "once %d", 3));
+  CHECK_NO_ALLOC("node->get_logger()", {auto l = node->get_logger(); (void)l;});
+  CHECK_NO_ALLOC("RCLCPP_WARN_THROTTLE(node->get_logger(), *node->get_clock(), ...)",
+    RCLCPP_WARN_THROTTLE(node->get_logger(), *node->get_clock(), 500, "x=%f", 1.0));
+  CHECK_NO_ALLOC("node->now()", (void)node->now());
+
+  // long lines are truncated, the ring keeps the newest lines
+  std::string long_text(2000, 'x');
+  RCLCPP_INFO(logger, "%s", long_text.c_str());
+  CHECK(rhi_fake::logs::lines().back().truncated);
+  for (int i = 0; i < 1500; ++i) {RCLCPP_DEBUG(logger, "spam %d", i);}
+  auto ring = rhi_fake::logs::lines();
+  CHECK(ring.size() == rhi_fake::detail::kLogRingSize && ring.back().text == "spam 1499");
+  CHECK(rhi_fake::logs::wait_for("spam 1499", std::chrono::milliseconds(10)));
+  rhi_fake::logs::clear();
+  CHECK(rhi_fake::logs::count_all() == 0 && rhi_fake::logs::lines().empty());
+}
+
+// ============================================================== rclcpp graph, pub/sub, timers
+struct CallbackCounters
+{
+  std::atomic<int> const_ref{0};
+  std::atomic<int> by_value{0};
+  std::atomic<int> shared_const{0};
+  std::atomic<int> ref_shared_const{0};
+  std::atomic<int> unique{0};
+  std::atomic<int> bound{0};
+  std::atomic<int> timer{0};
+  std::atomic<int> timer_ref{0};
+  double last_z = 0.0;
+  std::shared_ptr<const sensor_msgs::msg::Imu> kept;
+};
+
+class BoundHandler
+{
+public:
+  explicit BoundHandler(CallbackCounters & c)
+  : c_(c) {}
+  void on_state(const interface_protocol::msg::JointState & msg) {c_.bound += static_cast<int>(msg.position.size());}
+  void on_timer() {c_.timer++;}
+
+private:
+  CallbackCounters & c_;
+};
+
+static void test_rclcpp()
+{
+  CHECK(!rclcpp::ok());
+  CHECK_THROWS(rclcpp::exceptions::RCLError, rclcpp::Node("too_early"));
+  rclcpp::init(0, nullptr);
+  CHECK(rclcpp::ok());
+  CHECK_THROWS(rclcpp::ContextAlreadyInitialized, rclcpp::init(0, nullptr));
+
+  CHECK_THROWS(rclcpp::exceptions::InvalidNodeNameError, rclcpp::Node("bad-name"));
+  CHECK_THROWS(rclcpp::exceptions::InvalidNodeNameError, rclcpp::Node("1abc"));
+  auto node = std::make_shared<rclcpp::Node>("g1_hardware_interface");
+  CHECK(std::string(node->get_name()) == "g1_hardware_interface");
+  CHECK(std::string(node->get_namespace()) == "/");
+  CHECK(std::string(node->get_fully_qualified_name()) == "/g1_hardware_interface");
+  CHECK(std::string(node->get_logger().get_name()) == "g1_hardware_interface");
+  CHECK(node->now().get_clock_type() == RCL_ROS_TIME);
+  CHECK(node->get_clock()->get_clock_type() == RCL_ROS_TIME);
+
+  test_logging(node);
+
+  // ---- QoS ----
+  rclcpp::QoS q3(3);
+  q3.best_effort().durability_volatile();
+  CHECK(q3.reliability() == rclcpp::ReliabilityPolicy::BestEffort);
+  CHECK(q3.durability() == rclcpp::DurabilityPolicy::Volatile && q3.depth() == 3);
+  rclcpp::SensorDataQoS sensor;
+  CHECK(sensor.reliability() == rclcpp::ReliabilityPolicy::BestEffort && sensor.depth() == 5);
+  rclcpp::QoS reliable_tl = rclcpp::QoS(rclcpp::KeepLast(1)).reliable().transient_local();
+  CHECK(reliable_tl.durability() == rclcpp::DurabilityPolicy::TransientLocal);
+  rclcpp::QoS ten = 10;
+  CHECK(ten.reliability() == rclcpp::ReliabilityPolicy::Reliable && ten.history() == rclcpp::HistoryPolicy::KeepLast);
+  CHECK(rclcpp::QoS(rclcpp::KeepAll()).history() == rclcpp::HistoryPolicy::KeepAll);
+  CHECK(rclcpp::QoS(1).keep_last(4).depth() == 4 && rclcpp::QoS(1).keep_all().history() == rclcpp::HistoryPolicy::KeepAll);
+  CHECK(rclcpp::SystemDefaultsQoS().reliability() == rclcpp::ReliabilityPolicy::SystemDefault);
+  CHECK(sensor == rclcpp::SensorDataQoS() && sensor != ten);
+
+  // ---- publishers ----
+  auto cmd_pub = node->create_publisher<interface_protocol::msg::JointCommand>("/hardware/joint_command", q3);
+  auto rel_pub = node->create_publisher<std_msgs::msg::Header>("relative/topic", 10);
+  auto priv_pub = node->create_publisher<std_msgs::msg::Header>("~/private", rclcpp::QoS(rclcpp::KeepLast(2)));
+  CHECK(std::string(cmd_pub->get_topic_name()) == "/hardware/joint_command");
+  CHECK(std::string(rel_pub->get_topic_name()) == "/relative/topic");
+  CHECK(std::string(priv_pub->get_topic_name()) == "/g1_hardware_interface/private");
+  CHECK_THROWS(rclcpp::exceptions::InvalidTopicNameError, node->create_publisher<std_msgs::msg::Header>("bad topic", 1));
+  CHECK_THROWS(rclcpp::exceptions::InvalidTopicNameError, node->create_publisher<std_msgs::msg::Header>("a//b", 1));
+  CHECK_THROWS(rclcpp::exceptions::InvalidTopicNameError, node->create_publisher<std_msgs::msg::Header>("/1a", 1));
+  CHECK_THROWS(std::logic_error, node->create_publisher<sensor_msgs::msg::Imu>("relative/topic", 1));
+
+  interface_protocol::msg::JointCommand jc;
+  jc.position.assign(24, 0.5);
+  jc.velocity.assign(24, 0.0);
+  jc.feed_forward_torque.assign(24, 0.0);
+  jc.torque.assign(24, 0.0);
+  jc.stiffness.assign(24, 40.0);
+  jc.damping.assign(24, 1.0);
+  jc.parallel_parser_type = interface_protocol::msg::ParallelParserType::RL_PARSER;
+  CHECK(rhi_fake::ros::publish_count("/hardware/joint_command") == 0);
+  CHECK(!rhi_fake::ros::last_published<interface_protocol::msg::JointCommand>("/hardware/joint_command"));
+  cmd_pub->publish(jc);   // first publish sizes the retained message
+  jc.position[3] = 1.5;
+  CHECK_NO_ALLOC("Publisher::publish (warm)", cmd_pub->publish(jc));
+  CHECK(rhi_fake::ros::publish_count("/hardware/joint_command") == 2);
+  CHECK(rhi_fake::ros::publish_count("hardware/joint_command") == 2);
+  auto last = rhi_fake::ros::last_published<interface_protocol::msg::JointCommand>("/hardware/joint_command");
+  CHECK(last && last->position[3] == 1.5 && last->stiffness[23] == 40.0 && last->parallel_parser_type == 1);
+  interface_protocol::msg::JointCommand out;
+  CHECK(rhi_fake::ros::last_published("/hardware/joint_command", out) && out == jc);
+  CHECK_THROWS(std::logic_error, rhi_fake::ros::last_published<sensor_msgs::msg::Imu>("/hardware/joint_command"));
+  cmd_pub->publish(std::make_unique<interface_protocol::msg::JointCommand>(jc));
+  CHECK(rhi_fake::ros::publish_count("/hardware/joint_command") == 3);
+  CHECK(rhi_fake::ros::publish_count("/nowhere") == 0);
+
+  aimdk_msgs::msg::JointCommandArray arr;
+  arr.joints.resize(12);
+  for (size_t i = 0; i < arr.joints.size(); ++i) {arr.joints[i].name = "left_long_joint_name_" + std::to_string(i);}
+  auto arr_pub = node->create_publisher<aimdk_msgs::msg::JointCommandArray>("/aima/hal/joint/leg/command", rclcpp::SensorDataQoS());
+  arr_pub->publish(arr);
+  arr.joints[2].position = 0.3;
+  CHECK_NO_ALLOC("Publisher::publish JointCommandArray (warm)", arr_pub->publish(arr));
+  auto arr_last = rhi_fake::ros::last_published<aimdk_msgs::msg::JointCommandArray>("/aima/hal/joint/leg/command");
+  CHECK(arr_last && arr_last->joints[2].position == 0.3 && arr_last->joints[11].name == "left_long_joint_name_11");
+
+  // ---- subscriptions: every supported callback form ----
+  CallbackCounters c;
+  using Imu = sensor_msgs::msg::Imu;
+  auto s1 = node->create_subscription<Imu>(
+    "/aima/hal/imu/torso/state", rclcpp::SensorDataQoS(),
+    [&c](const Imu & m) {c.const_ref++; c.last_z = m.linear_acceleration.z;});
+  auto s2 = node->create_subscription<Imu>(
+    "/aima/hal/imu/torso/state", rclcpp::SensorDataQoS(),
+    [&c](Imu::ConstSharedPtr m) {c.shared_const++; (void)m;});
+  auto s3 = node->create_subscription<Imu>(
+    "/aima/hal/imu/torso/state", rclcpp::SensorDataQoS(),
+    [&c](const std::shared_ptr<const Imu> & m) {c.ref_shared_const++; (void)m;});
+  auto s4 = node->create_subscription<Imu>(
+    "/aima/hal/imu/torso/state", rclcpp::SensorDataQoS(),
+    [&c](std::unique_ptr<Imu> m) {c.unique++; (void)m;});
+  std::function<void(Imu)> by_value = [&c](Imu m) {c.by_value++; (void)m;};
+  auto s5 = node->create_subscription<Imu>("/aima/hal/imu/torso/state", rclcpp::SensorDataQoS(), by_value);
+  rclcpp::Subscription<Imu>::SharedPtr s6 = node->create_subscription<Imu>(
+    "/aima/hal/imu/torso/state", 1, [&c](Imu::ConstSharedPtr m) {c.kept = m;});
+  BoundHandler handler(c);
+  auto s7 = node->create_subscription<interface_protocol::msg::JointState>(
+    "/hardware/joint_state", q3, std::bind(&BoundHandler::on_state, &handler, std::placeholders::_1));
+  CHECK(std::string(s1->get_topic_name()) == "/aima/hal/imu/torso/state");
+  CHECK(s1->get_publisher_count() == 0 && cmd_pub->get_subscription_count() == 0);
+
+  Imu imu;
+  imu.linear_acceleration.z = 9.81;
+  CHECK(rhi_fake::ros::deliver("/aima/hal/imu/torso/state", imu) == 6);
+  CHECK(c.const_ref == 1 && c.shared_const == 1 && c.ref_shared_const == 1 && c.unique == 1 && c.by_value == 1);
+  CHECK(c.last_z == 9.81 && c.kept && c.kept->linear_acceleration.z == 9.81);
+  auto imu_ptr = std::make_shared<const Imu>(imu);
+  CHECK(rhi_fake::ros::deliver("aima/hal/imu/torso/state", imu_ptr) == 6);
+  CHECK(c.kept == imu_ptr);   // shared_ptr callbacks get the test's pointer itself
+  CHECK(rhi_fake::ros::deliver("/no/subscribers", imu) == 0);
+  CHECK(rhi_fake::ros::deliver<sensor_msgs::msg::JointState>("/aima/hal/imu/torso/state", sensor_msgs::msg::JointState()) == 0);
+  s4.reset();   // unique_ptr callbacks allocate by design
+  s5.reset();   // by-value callbacks copy the message
+  s6.reset();   // drops c.kept's producer
+  c.kept.reset();
+  rhi_fake::ros::deliver("/aima/hal/imu/torso/state", imu);   // warm the pooled shared_ptr
+  CHECK_NO_ALLOC("deliver const& to const-ref + shared-const-ptr callbacks (warm)",
+    rhi_fake::ros::deliver("/aima/hal/imu/torso/state", imu));
+  CHECK_NO_ALLOC("deliver shared_ptr<const Imu>", rhi_fake::ros::deliver("/aima/hal/imu/torso/state", imu_ptr));
+
+  interface_protocol::msg::JointState js;
+  js.position.assign(24, 0.0);
+  CHECK(rhi_fake::ros::deliver("/hardware/joint_state", js) == 1 && c.bound == 24);
+  CHECK_NO_ALLOC("deliver to std::bind member callback", rhi_fake::ros::deliver("/hardware/joint_state", js));
+
+  // ---- graph / QoS report ----
+  auto info = rhi_fake::ros::topic("/hardware/joint_command");
+  CHECK(info && info->publishers.size() == 1 && info->subscriptions.empty());
+  CHECK(info && info->publishers[0].reliability == rclcpp::ReliabilityPolicy::BestEffort);
+  CHECK(info && info->publishers[0].durability == rclcpp::DurabilityPolicy::Volatile);
+  CHECK(info && info->publishers[0].depth == 3 && info->publishers[0].history == rclcpp::HistoryPolicy::KeepLast);
+  CHECK(info && info->publishers[0].node == "/g1_hardware_interface");
+  CHECK(info && info->publishers[0].type_name == "interface_protocol/msg/JointCommand");
+  CHECK(info && info->publish_count == 3);
+  auto imu_topic = rhi_fake::ros::topic("/aima/hal/imu/torso/state");
+  CHECK(imu_topic && imu_topic->subscriptions.size() == 3 && imu_topic->publishers.empty());
+  CHECK(imu_topic && imu_topic->subscriptions[0].depth == 5);
+  CHECK(std::string(rhi_fake::ros::to_string(imu_topic->subscriptions[0].reliability)) == "best_effort");
+  CHECK(std::string(rhi_fake::ros::to_string(rclcpp::DurabilityPolicy::TransientLocal)) == "transient_local");
+  CHECK(std::string(rhi_fake::ros::to_string(rclcpp::HistoryPolicy::KeepAll)) == "keep_all");
+  CHECK(rhi_fake::ros::topics().size() >= 6);
+  CHECK(!rhi_fake::ros::topic("/nope"));
+  CHECK(rel_pub->get_actual_qos().depth() == 10);
+  auto state_sub_pub = node->create_publisher<interface_protocol::msg::JointState>("/hardware/joint_state", 1);
+  CHECK(s7->get_publisher_count() == 1 && state_sub_pub->get_subscription_count() == 1);
+
+  // ---- timers ----
+  auto timer = node->create_wall_timer(std::chrono::microseconds(2000), [&c]() {c.timer++;});
+  rclcpp::TimerBase::SharedPtr timer2 = node->create_wall_timer(
+    std::chrono::milliseconds(5), [&c](rclcpp::TimerBase & t) {c.timer_ref++; (void)t.is_canceled();});
+  auto timer3 = node->create_wall_timer(std::chrono::seconds(1), std::bind(&BoundHandler::on_timer, &handler));
+  auto periods = rhi_fake::ros::timer_periods();
+  CHECK(periods.size() == 3 && periods[0] == std::chrono::microseconds(2000) && periods[1] == std::chrono::milliseconds(5));
+  CHECK(rhi_fake::ros::fire_timers() == 3 && c.timer == 2 && c.timer_ref == 1);
+  timer3->cancel();
+  CHECK(timer3->is_canceled());
+  CHECK(rhi_fake::ros::fire_timers() == 2 && c.timer == 3);
+  CHECK_NO_ALLOC("fire_timers", rhi_fake::ros::fire_timers());
+  timer3->reset();
+  CHECK(!timer3->is_canceled() && rhi_fake::ros::timer_periods().size() == 3);
+  timer3.reset();
+  CHECK(rhi_fake::ros::timer_periods().size() == 2);
+  CHECK_THROWS(std::invalid_argument, node->create_wall_timer(std::chrono::milliseconds(-1), []() {}));
+  timer->execute_callback();
+  CHECK(c.timer == 5);
+
+  // ---- executor: spin blocks until cancel; real-time timers; Humble edge cases ----
+  auto exec = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
+  exec->add_node(node);
+  CHECK_THROWS(std::runtime_error, exec->add_node(node));
+  rclcpp::executors::SingleThreadedExecutor other;
+  CHECK_THROWS(std::runtime_error, other.add_node(node));
+  CHECK_THROWS(std::runtime_error, other.remove_node(node));
+  CHECK(rhi_fake::ros::spinning_executors() == 0 && !rhi_fake::ros::is_spinning(*exec));
+  std::atomic<bool> spin_returned{false};
+  std::thread spinner([&]() {exec->spin(); spin_returned = true;});
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  CHECK(rhi_fake::ros::is_spinning(*exec));
+  CHECK_THROWS(std::runtime_error, exec->spin());
+  int before = c.timer.load();
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  CHECK(c.timer.load() == before);   // no real-time firing by default
+  CHECK(!spin_returned);
+  rhi_fake::ros::set_realtime_timers(true);
+  CHECK(rhi_fake::ros::realtime_timers());
+  CHECK(eventually([&]() {return c.timer.load() >= before + 5;}));
+  // deliveries from the test thread interleave safely with timer callbacks on the spin thread
+  for (int i = 0; i < 200; ++i) {rhi_fake::ros::deliver("/hardware/joint_state", js);}
+  rhi_fake::ros::set_realtime_timers(false);
+  exec->cancel();
+  spinner.join();
+  CHECK(spin_returned && !rhi_fake::ros::is_spinning(*exec));
+  CHECK(rhi_fake::ros::wait_spinning_executors(0, std::chrono::milliseconds(100)));
+
+  // a cancel() issued before spin() starts is lost (Humble semantics)
+  exec->cancel();
+  spin_returned = false;
+  std::thread late([&]() {exec->spin(); spin_returned = true;});
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  CHECK(!spin_returned);
+  exec->cancel();
+  late.join();
+  CHECK(spin_returned);
+
+  // spin_some does not block
+  exec->spin_some();
+  exec->remove_node(node);
+  exec->add_node(node->get_node_base_interface());
+  exec->remove_node(node->get_node_base_interface());
+
+  // MultiThreadedExecutor: same contract; rclcpp::shutdown() ends spin()
+  rclcpp::executors::MultiThreadedExecutor mt(rclcpp::ExecutorOptions(), 2);
+  CHECK(mt.get_number_of_threads() == 2);
+  mt.add_node(node);
+  std::thread mt_spinner([&]() {mt.spin();});
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  CHECK(rclcpp::shutdown());
+  mt_spinner.join();
+  CHECK(!rclcpp::ok() && !rclcpp::shutdown());
+  mt.remove_node(node);
+  rclcpp::init(0, nullptr);   // init again after shutdown works, as in rclcpp
+
+  // executor destruction releases its nodes
+  {
+    rclcpp::executors::SingleThreadedExecutor tmp;
+    tmp.add_node(node);
+  }
+  exec->add_node(node);
+  exec->remove_node(node);
+
+  // rclcpp::spin(node) on a helper thread, ended by shutdown
+  std::thread free_spin([&]() {rclcpp::spin(node);});
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  rclcpp::shutdown();
+  free_spin.join();
+  rclcpp::init(0, nullptr);
+}
+
+// ============================================================== thread-safety smoke (for TSan)
+static void test_concurrency()
+{
+  auto node = std::make_shared<rclcpp::Node>("concurrency_node", "/ns");
+  CHECK(std::string(node->get_fully_qualified_name()) == "/ns/concurrency_node");
+  CHECK(std::string(node->get_logger().get_name()) == "ns.concurrency_node");
+  auto pub = node->create_publisher<sensor_msgs::msg::JointState>("state_out", 1);
+  CHECK(std::string(pub->get_topic_name()) == "/ns/state_out");
+  std::atomic<long> received{0};
+  long unguarded = 0;   // only touched inside callbacks: the node mutex must serialize them
+  auto sub = node->create_subscription<sensor_msgs::msg::JointState>(
+    "/ns/state_in", 10, [&](const sensor_msgs::msg::JointState & m) {received += static_cast<long>(m.position.size()); ++unguarded;});
+  auto timer = node->create_wall_timer(std::chrono::microseconds(200), [&]() {++unguarded;});
+  rclcpp::executors::SingleThreadedExecutor exec;
+  exec.add_node(node);
+  rhi_fake::ros::set_realtime_timers(true);
+  std::thread spinner([&]() {exec.spin();});
+  std::vector<std::thread> workers;
+  for (int w = 0; w < 3; ++w) {
+    workers.emplace_back([&, w]() {
+        sensor_msgs::msg::JointState m;
+        m.position.assign(3, static_cast<double>(w));
+        for (int i = 0; i < 300; ++i) {
+          rhi_fake::ros::deliver("/ns/state_in", m);
+          pub->publish(m);
+          RCLCPP_DEBUG(node->get_logger(), "worker %d iteration %d", w, i);
+          (void)rhi_fake::ros::publish_count("/ns/state_out");
+        }
+      });
+  }
+  for (auto & t : workers) {t.join();}
+  rhi_fake::ros::set_realtime_timers(false);
+  exec.cancel();
+  spinner.join();
+  CHECK(received == 3 * 300 * 3);
+  CHECK(rhi_fake::ros::publish_count("/ns/state_out") == 900);
+  CHECK(unguarded >= 900);
+  (void)rhi_fake::logs::lines();
+}
+
+// ============================================================== unitree_sdk2
+namespace g1 {
+using LowCmd = unitree_hg::msg::dds_::LowCmd_;
+using LowState = unitree_hg::msg::dds_::LowState_;
+
+class MiniDriver
+{
+public:
+  void Init(const std::string & nic)
+  {
+    unitree::robot::ChannelFactory::Instance()->Init(0, nic);
+    pub_.reset(new unitree::robot::ChannelPublisher<LowCmd>("rt/lowcmd"));
+    pub_->InitChannel();
+    sub_.reset(new unitree::robot::ChannelSubscriber<LowState>("rt/lowstate"));
+    sub_->InitChannel(std::bind(&MiniDriver::StateHandler, this, std::placeholders::_1), 1);
+    thread_ = unitree::common::CreateRecurrentThreadEx("command_writer", UT_CPU_ID_NONE, 2000, &MiniDriver::CommandWriter, this);
+  }
+  void Stop()
+  {
+    if (thread_) {
+      thread_->Wait();
+      thread_.reset();
+    }
+    sub_->CloseChannel();
+    pub_->CloseChannel();
+  }
+  void StateHandler(const void * message)
+  {
+    const auto & state = *static_cast<const LowState *>(message);
+    mode_machine_ = state.mode_machine();
+    q0_ = state.motor_state()[0].q();
+    states_++;
+  }
+  void CommandWriter()
+  {
+    cmd_.mode_machine() = mode_machine_.load();
+    cmd_.motor_cmd().at(0).q() = q0_.load();
+    cmd_.motor_cmd()[1].mode(1);
+    pub_->Write(cmd_);
+    writes_++;
+  }
+
+  unitree::robot::ChannelPublisherPtr<LowCmd> pub_;
+  unitree::robot::ChannelSubscriberPtr<LowState> sub_;
+  unitree::common::ThreadPtr thread_;
+  LowCmd cmd_;
+  std::atomic<uint8_t> mode_machine_{0};
+  std::atomic<float> q0_{0.0f};
+  std::atomic<int> states_{0};
+  std::atomic<int> writes_{0};
+};
+}  // namespace g1
+
+static void test_unitree()
+{
+  using namespace unitree_hg::msg::dds_;
+  static_assert(sizeof(MotorCmd_) == 28, "MotorCmd_");
+  static_assert(sizeof(MotorState_) == 56, "MotorState_");
+  static_assert(sizeof(IMUState_) == 56, "IMUState_");
+  static_assert(sizeof(LowCmd_) == 1004, "LowCmd_");
+  static_assert(sizeof(LowState_) == 2092, "LowState_");
+  LowCmd_ cmd;
+  CHECK(cmd.mode_pr() == 0 && cmd.motor_cmd().size() == 35 && cmd.reserve().size() == 4 && cmd.crc() == 0);
+  cmd.mode_machine(5);
+  cmd.motor_cmd()[3].kp() = 60.0f;
+  cmd.crc() = 0xFE172F9Fu;
+  const LowCmd_ & ccmd = cmd;
+  CHECK(ccmd.mode_machine() == 5 && ccmd.motor_cmd()[3].kp() == 60.0f && ccmd.crc() == 0xFE172F9Fu);
+  uint32_t last_word = 0;
+  std::memcpy(&last_word, reinterpret_cast<const unsigned char *>(&cmd) + 1000, 4);
+  CHECK(last_word == 0xFE172F9Fu);   // crc is the trailing 32-bit word
+  LowState_ st;
+  st.imu_state().quaternion() = {1.0f, 0.0f, 0.0f, 0.0f};
+  st.motor_state()[28].temperature()[1] = 40;
+  st.wireless_remote()[39] = 1;
+  st.crc(7);
+  std::memcpy(&last_word, reinterpret_cast<const unsigned char *>(&st) + 2088, 4);
+  CHECK(last_word == 7u && st.version().size() == 2 && st.tick() == 0);
+  MotorState_ ms;
+  CHECK(ms.tau_est() == 0.0f && ms.motorstate() == 0u && ms.sensor().size() == 2 && ms.vol() == 0.0f);
+  IMUState_ imu;
+  CHECK(imu.temperature() == 0 && imu.rpy().size() == 3 && imu.gyroscope()[2] == 0.0f && imu.accelerometer()[0] == 0.0f);
+  MotorCmd_ mc(1, 0.5f, 0.0f, 0.0f, 10.0f, 1.0f, 0u);
+  CHECK(mc.mode() == 1 && mc.q() == 0.5f && mc.kd() == 1.0f && mc.dq() == 0.0f && mc.tau() == 0.0f && mc.reserve() == 0u);
+  CHECK(LowCmd_() == LowCmd_() && cmd != LowCmd_());
+
+  // channels before ChannelFactory::Init: Write false, InitChannel throws (the SDK would crash)
+  unitree::robot::ChannelPublisher<LowCmd_> early("rt/lowcmd");
+  CHECK(!early.Write(cmd));
+  CHECK_THROWS(std::logic_error, early.InitChannel());
+
+  // motion switcher release loop, as in the SDK example
+  rhi_fake::unitree::set_motion_mode("normal", "ai");
+  {
+    auto msc = std::make_shared<unitree::robot::b2::MotionSwitcherClient>();
+    msc->SetTimeout(5.0f);
+    msc->Init();
+    std::string form, name;
+    int loops = 0;
+    while (msc->CheckMode(form, name), !name.empty()) {
+      CHECK(msc->ReleaseMode() == 0);
+      if (++loops > 5) {break;}
+    }
+    CHECK(loops == 1);
+    msc->SetTimeout(static_cast<int64_t>(2000000));
+    bool silent = true;
+    CHECK(msc->GetSilent(silent) == 0 && !silent && msc->SetSilent(true) == 0 && msc->SelectMode("ai") == 0);
+  }
+  auto ms_stats = rhi_fake::unitree::motion_switcher();
+  CHECK(ms_stats.constructed == 1 && ms_stats.init_calls == 1 && ms_stats.set_timeout_calls == 2);
+  CHECK(ms_stats.check_calls == 2 && ms_stats.release_calls == 1 && std::fabs(ms_stats.last_timeout_s - 2.0) < 1e-9);
+  CHECK(ms_stats.name == "ai");
+  rhi_fake::unitree::set_motion_switcher_behaviour(3, 4, false);
+  {
+    unitree::robot::b2::MotionSwitcherClient m2;
+    std::string form, name;
+    CHECK(m2.CheckMode(form, name) == 3 && name == "ai" && m2.ReleaseMode() == 4);
+    CHECK(m2.CheckMode(form, name) == 3 && name == "ai");
+  }
+
+  // ticked recurrent thread (default mode)
+  g1::MiniDriver drv;
+  drv.Init("lo");
+  auto fi = rhi_fake::unitree::factory_init();
+  CHECK(fi.init_count == 1 && fi.inited && !fi.by_config_file && fi.domain_id == 0 && fi.network_interface == "lo");
+  auto threads = rhi_fake::unitree::threads();
+  CHECK(threads.size() == 1 && threads[0].name == "command_writer" && threads[0].interval_us == 2000);
+  CHECK(threads[0].cpu_id == UT_CPU_ID_NONE && !threads[0].real && !threads[0].stopped && threads[0].runs == 0);
+  CHECK(drv.writes_ == 0);   // nothing runs by itself
+  CHECK(rhi_fake::unitree::tick_thread("command_writer") == 1 && drv.writes_ == 1);
+  CHECK(rhi_fake::unitree::tick_thread("other") == 0);
+  CHECK(rhi_fake::unitree::tick_all_threads() == 1 && drv.writes_ == 2);
+  CHECK(rhi_fake::unitree::write_count("rt/lowcmd") == 2);
+
+  LowState_ state;
+  state.mode_machine() = 5;
+  state.motor_state()[0].q() = 0.75f;
+  CHECK(rhi_fake::unitree::deliver("rt/lowstate", state) == 1 && drv.states_ == 1 && drv.mode_machine_ == 5);
+  CHECK(drv.sub_->GetLastDataAvailableTime() > 0);
+  LowState_ latest;
+  CHECK(drv.sub_->ReadLatest(latest) && latest.motor_state()[0].q() == 0.75f && drv.sub_->Read(latest));
+  rhi_fake::unitree::tick_thread("command_writer");
+  LowCmd_ written;
+  CHECK(rhi_fake::unitree::last_written("rt/lowcmd", written));
+  CHECK(written.mode_machine() == 5 && written.motor_cmd()[0].q() == 0.75f && written.motor_cmd()[1].mode() == 1);
+  CHECK(rhi_fake::unitree::last_written<LowCmd_>("rt/lowcmd")->mode_machine() == 5);
+  CHECK(!rhi_fake::unitree::last_written<LowCmd_>("rt/none"));
+  CHECK_THROWS(std::logic_error, rhi_fake::unitree::last_written<LowState_>("rt/lowcmd"));
+  CHECK_NO_ALLOC("unitree deliver", rhi_fake::unitree::deliver("rt/lowstate", state));
+  CHECK_NO_ALLOC("unitree tick + Write", rhi_fake::unitree::tick_thread("command_writer"));
+  CHECK_NO_ALLOC("ChannelPublisher::Write", drv.pub_->Write(written));
+  CHECK(rhi_fake::unitree::write_count("rt/lowcmd") == 5);
+
+  auto chans = rhi_fake::unitree::channels();
+  CHECK(chans.size() == 2);
+  CHECK(chans[0].name == "rt/lowcmd" && chans[0].type_name == "unitree_hg::msg::dds_::LowCmd_" && chans[0].writers_created == 1);
+  CHECK(chans[1].name == "rt/lowstate" && chans[1].open_readers == 1 && chans[1].reader_queue_lengths[0] == 1);
+  CHECK(drv.pub_->GetChannelName() == "rt/lowcmd" && drv.sub_->GetChannelName() == "rt/lowstate");
+
+  drv.Stop();
+  CHECK(rhi_fake::unitree::tick_thread("command_writer") == 0);
+  CHECK(rhi_fake::unitree::deliver("rt/lowstate", state) == 0 && drv.states_ == 2);
+  CHECK(!drv.pub_->Write(written));
+  CHECK(drv.sub_->GetLastDataAvailableTime() == -1);
+
+  // a polling subscriber (no handler) still sees ReadLatest()
+  unitree::robot::ChannelSubscriber<LowState_> poller("rt/lowstate");
+  poller.InitChannel();
+  LowState_ polled;
+  CHECK(!poller.ReadLatest(polled));
+  rhi_fake::unitree::deliver("rt/lowstate", state);
+  CHECK(poller.ReadLatest(polled) && polled.mode_machine() == 5);
+
+  // real threads: run every interval on their own std::thread until Wait()
+  rhi_fake::unitree::use_real_threads(true);
+  std::atomic<int> ticks{0};
+  auto counter = [&ticks]() {ticks++;};
+  unitree::common::ThreadPtr real = unitree::common::CreateRecurrentThreadEx("real_writer", 2, 1000, counter);
+  CHECK(eventually([&]() {return ticks.load() >= 5;}));
+  CHECK(rhi_fake::unitree::tick_thread("real_writer") == 0);   // real threads are not ticked
+  auto rinfo = rhi_fake::unitree::threads();
+  CHECK(!rinfo.empty() && rinfo.back().real && rinfo.back().cpu_id == 2);
+  CHECK(real->Wait());
+  int after_wait = ticks.load();
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  CHECK(ticks.load() == after_wait);
+  real.reset();
+  // destruction without Wait() also stops it; CreateRecurrentThread (no name) works
+  {
+    auto anon = unitree::common::CreateRecurrentThread(500, counter);
+    CHECK(eventually([&]() {return ticks.load() >= after_wait + 3;}));
+  }
+  int after_destroy = ticks.load();
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  CHECK(ticks.load() == after_destroy);
+  // the real-mode driver: writer thread and state deliveries race (for TSan)
+  {
+    g1::MiniDriver live;
+    live.Init("eth0");
+    for (int i = 0; i < 200; ++i) {rhi_fake::unitree::deliver("rt/lowstate", state);}
+    CHECK(eventually([&]() {return live.writes_.load() >= 3;}));
+    live.Stop();
+  }
+  rhi_fake::unitree::use_real_threads(false);
+
+  unitree::robot::ChannelFactory::Instance()->Init("config.json");
+  fi = rhi_fake::unitree::factory_init();
+  CHECK(fi.by_config_file && fi.config_file == "config.json" && fi.init_count == 3);
+  unitree::robot::ChannelFactory::Instance()->Release();
+  CHECK(rhi_fake::unitree::factory_init().release_count == 1 && !rhi_fake::unitree::factory_init().inited);
+}
+
+// ============================================================== reset
+static void test_reset()
+{
+  rhi_fake::reset_all();
+  CHECK(!rclcpp::ok());
+  CHECK(rhi_fake::ros::topics().empty() && rhi_fake::ros::timer_periods().empty());
+  CHECK(rhi_fake::unitree::channels().empty() && rhi_fake::unitree::threads().empty());
+  CHECK(rhi_fake::unitree::factory_init().init_count == 0);
+  CHECK(rhi_fake::logs::count_all() == 0);
+  CHECK(!rhi_fake::ros::realtime_timers());
+  rclcpp::init(0, nullptr);
+  CHECK(rclcpp::ok());
+  rclcpp::shutdown();
+}
+
+int main()
+{
+  test_hardware_interface();
+  test_messages();
+  test_time();
+  test_rclcpp();
+  test_concurrency();
+  test_unitree();
+  test_reset();
+  if (g_failures != 0) {
+    std::fprintf(stderr, "selftest: %d of %d checks FAILED\n", g_failures, g_checks);
+    return 1;
+  }
+  std::printf("selftest: all %d checks passed\n", g_checks);
+  return 0;
+}

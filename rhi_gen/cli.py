@@ -289,12 +289,12 @@ def main(argv: list[str] | None = None) -> int:
         _err("interrupted; nothing half-written was left behind")
         return 130
     except Exception as exc:  # click usage errors and real bugs
-        import click
-
-        if isinstance(exc, click.exceptions.Abort):
+        # Typer ships click either as a dependency or vendored (typer._click): match by class name.
+        names = {cls.__name__ for cls in type(exc).__mro__}
+        if "Abort" in names:
             return 130
-        if isinstance(exc, click.ClickException):
-            exc.show()
+        if "ClickException" in names:
+            exc.show()  # type: ignore[attr-defined]
             return 2
         if os.environ.get("RHI_GEN_DEBUG"):
             raise

@@ -99,7 +99,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_
             raise err(key, f"joint {name!r} is not an actuated joint ({joint.type}"
                       f"{', mimic' if joint.mimic else ''}); only actuated joints need listing", "remove it")
 
-    _check_existing_ros2_control(urdf, by_name, urdf_shown)
+    # The URDF as the loader names it (project-relative, or as given to `new`), not as the YAML spells it.
+    _check_existing_ros2_control(urdf, by_name, urdf.source)
 
     actuated = urdf.actuated_joints
     if not actuated:

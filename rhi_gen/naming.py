@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import re
 
+from .c_library_names import C_LIBRARY_NAMES
+
 IDENTIFIER_RE = re.compile(r"^[a-z][a-z0-9_]{0,47}$")
 CLASS_PREFIX_RE = re.compile(r"^[A-Z][A-Za-z0-9]{0,47}$")
 
@@ -27,6 +29,9 @@ RESERVED_NAMESPACES = frozenset({
     "unitree", "unitree_hg", "aimdk_msgs", "interface_protocol", "sensor_msgs", "std_msgs",
     "geometry_msgs", "builtin_interfaces", "rcutils", "rmw", "posix", "main",
 })
+# Folders of include/robot_hardware_interface/ that hold rhi-gen's shared headers: a vendor of that
+# name would put its robot headers there (vendor "common", robot "types" would overwrite types.hpp).
+RESERVED_VENDOR_FOLDERS = frozenset({"common", "transport"})
 # Vendor namespaces that are ours to use (the reference vendors) even though SDKs use some of them.
 ALLOWED_VENDOR_NAMESPACES = frozenset({"unitree", "agibot", "engineai"})
 
@@ -49,6 +54,12 @@ def vendor_problem(name: object) -> str | None:
     problem = identifier_problem(name, "vendor")
     if problem is None and name in RESERVED_NAMESPACES and name not in ALLOWED_VENDOR_NAMESPACES:
         return f"vendor {name!r} would clash with the C++ namespace of a library the driver uses"
+    if problem is None and name in C_LIBRARY_NAMES:
+        return (f"vendor {name!r} is a function, type or macro the C library declares at global scope, so it "
+                "cannot be the driver's C++ namespace")
+    if problem is None and name in RESERVED_VENDOR_FOLDERS:
+        return (f"vendor {name!r} is the folder of rhi-gen's shared headers "
+                f"(include/robot_hardware_interface/{name}/)")
     return problem
 
 

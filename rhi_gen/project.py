@@ -40,7 +40,8 @@ def find_project(explicit: Path | None = None) -> Project:
     """The folder holding robots/: the one named, else the current folder or its nearest parent."""
     if explicit is not None:
         if not explicit.is_dir():
-            raise ProjectError("project folder does not exist", file=str(explicit))
+            raise ProjectError("project folder does not exist", file=str(explicit),
+                               fix="create it first (mkdir), or give the folder that holds robots/")
         return Project(explicit.resolve())
     here = Path.cwd().resolve()
     for folder in (here, *here.parents):
@@ -92,4 +93,5 @@ def validate_names(vendor: str, robot: str) -> None:
     """For `new`: refuse names that would escape robots/ or break C++ before touching disk."""
     for problem, key in ((vendor_problem(vendor), "--vendor"), (identifier_problem(robot, "robot"), "--robot")):
         if problem:
-            raise ProjectError(problem, key=key, fix="use lowercase letters, digits and underscores")
+            raise ProjectError(problem, key=key, fix="choose another name: lowercase letters, digits and "
+                               "underscores, not a C++ keyword or a reserved name (e.g. my_company, my_arm)")

@@ -158,6 +158,9 @@ def render_package(models: Sequence[RobotModel],
         banner = _banner_for(robot_inputs_line(robot))
         for template, pattern in ROBOT_FILES:
             out = pattern.format(vendor=robot.vendor, robot=robot.robot)
+            if out in plan:  # e.g. vendor "common" + robot "types": never overwrite silently
+                raise GenerationError(f"{robot.vendor}/{robot.robot} would overwrite {out}, which another part "
+                                      "of the package already generates", fix="rename the robot or vendor")
             plan[out] = _render_one(env, template, {"banner": banner, "robot": robot, "robots": robots}, out)
 
     for path in plan:

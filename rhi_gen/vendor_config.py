@@ -84,7 +84,8 @@ class _Loader:
             out: dict[str, Any] = {}
             for key_node, value_node in node.value:
                 if not isinstance(key_node, yaml.ScalarNode):
-                    raise self.error("keys must be plain strings", path, line=key_node.start_mark.line + 1)
+                    raise self.error("keys must be plain strings", path, line=key_node.start_mark.line + 1,
+                                     fix="write each key as plain text (no '?', lists or mappings as keys)")
                 key = key_node.value  # raw text: 'on'/'yes' stay names, not booleans
                 sub = f"{path}.{key}" if path else key
                 if key in out:
@@ -113,14 +114,16 @@ def _read_text(path: Path, shown: str) -> str:
     if not path.exists():
         raise ConfigError("file not found", file=shown, fix="check the path (rhi-gen list shows the robots)")
     if path.is_dir():
-        raise ConfigError("is a directory, not a vendor YAML", file=shown)
+        raise ConfigError("is a directory, not a vendor YAML", file=shown, fix="give the path of the .yaml file")
     try:
         size = path.stat().st_size
         if size > MAX_YAML_BYTES:
-            raise ConfigError(f"file is {size} bytes; a vendor YAML is a few kB", file=shown)
+            raise ConfigError(f"file is {size} bytes; a vendor YAML is a few kB", file=shown,
+                              fix="start from `rhi-gen new` or the README's YAML reference")
         data = path.read_bytes()
     except OSError as exc:
-        raise ConfigError(f"cannot read: {exc.strerror}", file=shown) from exc
+        raise ConfigError(f"cannot read: {exc.strerror}", file=shown,
+                          fix="check the file's permissions (chmod a+r)") from exc
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
@@ -136,16 +139,19 @@ def parse_yaml_text(text: str, shown: str) -> tuple[dict[str, Any], dict[str, in
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark else None
-        raise ConfigError(f"invalid YAML: {exc.problem or exc.context}", file=shown, line=line) from exc
+        problem = f"{exc.problem or exc.context}"
+        fix = ("indent with spaces, not tabs" if "\\t" in problem or "\t" in problem else
+               "fix the YAML syntax at that line (quote values that contain ': ' or ' #')")
+        raise ConfigError(f"invalid YAML: {problem}", file=shown, line=line, fix=fix) from exc
     except yaml.YAMLError as exc:
-        raise ConfigError(f"invalid YAML: {exc}", file=shown) from exc
+        raise ConfigError(f"invalid YAML: {exc}", file=shown, fix="fix the YAML syntax") from exc
     docs = [d for d in docs if d is not None]
     if not docs:
         raise ConfigError("file is empty (only comments)", file=shown,
                           fix="start from `rhi-gen new` or the README's YAML reference")
     if len(docs) > 1:
         raise ConfigError("holds several YAML documents; a vendor YAML is one mapping", file=shown,
-                          line=docs[1].start_mark.line + 1)
+                          line=docs[1].start_mark.line + 1, fix="remove the '---' and everything after it")
     root = docs[0]
     if not isinstance(root, yaml.MappingNode):
         kind = "a list" if isinstance(root, yaml.SequenceNode) else "a single value"
@@ -179,29 +185,33 @@ class _Validator:
 
     def scalar(self, value: Any, path: str) -> Any:
         if not isinstance(value, _Scalar):
-            raise self.error(path, "must be a single value, not a list or mapping")
+            raise self.error(path, "must be a single value, not a list or mapping",
+                             fix="write one value after the colon")
         return value.value
 
     def string(self, value: Any, path: str, pattern: re.Pattern[str] | None = None, what: str = "") -> str:
         v = self.scalar(value, path)
         if not isinstance(v, str) or not v:
-            raise self.error(path, f"must be a non-empty string, got {value.raw!r}")
+            raise self.error(path, f"must be a non-empty string, got {value.raw!r}",
+                             fix="write the text in quotes, e.g. \"name\"")
         if pattern is not None and not pattern.match(v):
-            raise self.error(path, f"{v!r} is not a valid {what}")
+            raise self.error(path, f"{v!r} is not a valid {what}", fix=f"write a valid {what}")
         return v
 
     def integer(self, value: Any, path: str, low: int, high: int) -> int:
         v = self.scalar(value, path)
         if isinstance(v, bool) or not isinstance(v, int):
-            raise self.error(path, f"must be a whole number, got {value.raw!r}")
+            raise self.error(path, f"must be a whole number, got {value.raw!r}",
+                             fix=f"write a whole number from {low} to {high}, without quotes")
         if not low <= v <= high:
-            raise self.error(path, f"{v} is out of range {low}..{high}")
+            raise self.error(path, f"{v} is out of range {low}..{high}",
+                             fix=f"write a whole number from {low} to {high}")
         return v
 
     def boolean(self, value: Any, path: str) -> bool:
         v = self.scalar(value, path)
         if not isinstance(v, bool):
-            raise self.error(path, f"must be true or false, got {value.raw!r}")
+            raise self.error(path, f"must be true or false, got {value.raw!r}", fix="write true or false")
         return v
 
     def choice(self, value: Any, path: str, choices: tuple[str, ...]) -> str:
@@ -217,11 +227,11 @@ class _Validator:
         if isinstance(value, _Scalar) and value.value is None:
             return ()
         if not isinstance(value, dict):
-            raise self.error(path, "must be a mapping of name: value")
+            raise self.error(path, "must be a mapping of name: value", fix="write one `name: value` per line")
         out = []
         for key, item in value.items():
             if not isinstance(item, _Scalar) or item.value is None:
-                raise self.error(f"{path}.{key}", "must be a single value")
+                raise self.error(f"{path}.{key}", "must be a single value", fix="write one value after the colon")
             out.append((key, item.raw))
         return tuple(out)
 
@@ -259,7 +269,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
 
     urdf_rel = v.string(data["urdf"], "urdf")
     if "\x00" in urdf_rel:
-        raise v.error("urdf", "path contains a NUL character")
+        raise v.error("urdf", "path contains a NUL character", fix="write the plain path of the URDF or xacro file")
     urdf_path = (base_dir / urdf_rel) if not os.path.isabs(urdf_rel) else Path(urdf_rel)
 
     class_prefix = None
@@ -313,12 +323,12 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         if isinstance(raw, _Scalar) and raw.value is None:
             raw = []
         if not isinstance(raw, list):
-            raise v.error("unmapped_joints", "must be a list of URDF joint names")
+            raise v.error("unmapped_joints", "must be a list of URDF joint names", fix="e.g. [left_wheel, right_wheel]")
         names = []
         for i, item in enumerate(raw):
             name = v.string(item, f"unmapped_joints[{i}]")
             if name in names:
-                raise v.error(f"unmapped_joints[{i}]", f"{name!r} is listed twice")
+                raise v.error(f"unmapped_joints[{i}]", f"{name!r} is listed twice", fix="remove the duplicate")
             if name in dict(joint_map):
                 raise v.error(f"unmapped_joints[{i}]", f"{name!r} is also in joint_map",
                               fix="a joint is either mapped to a motor or intentionally unmapped")
@@ -343,12 +353,14 @@ def _joint_map(v: _Validator, raw: Any, motor_count: int) -> tuple[tuple[str, in
     for name, item in raw.items():
         path = f"joint_map.{name}"
         if not name:
-            raise v.error(path, "joint name is empty")
+            raise v.error(path, "joint name is empty", fix="write the URDF joint name before the colon")
         if not isinstance(item, _Scalar):
-            raise v.error(path, "must be a motor index (a whole number)")
+            raise v.error(path, "must be a motor index (a whole number)",
+                          fix=f"write a whole number from 0 to {motor_count - 1}")
         value = item.value
         if isinstance(value, bool) or not isinstance(value, int):
-            raise v.error(path, f"motor index must be a whole number, got {item.raw!r}")
+            raise v.error(path, f"motor index must be a whole number, got {item.raw!r}",
+                          fix=f"write a whole number from 0 to {motor_count - 1}, without quotes")
         if not 0 <= value < motor_count:
             raise v.error(path, f"motor index {value} is out of range 0..{motor_count - 1} "
                           f"(motor_count is {motor_count})",
@@ -426,7 +438,8 @@ def _transport_options(v: _Validator, raw: Any, transport: str, motor_count: int
         sdk_slots=motor_count,
     )
     if options.command_topic == options.state_topic:
-        raise v.error(f"{p}.command_topic", "command and state topics must differ")
+        raise v.error(f"{p}.command_topic", "command and state topics must differ",
+                      fix="give command_topic and state_topic different names")
     return options
 
 
@@ -437,14 +450,15 @@ def _groups(v: _Validator, raw: Any, motor_count: int) -> tuple[JointGroup, ...]
                  for name, size in AGIBOT_DEFAULT_GROUPS]
     else:
         if not isinstance(raw, list) or not raw:
-            raise v.error(path, "must be a non-empty list of {name, size, command_topic, state_topic}")
+            raise v.error(path, "must be a non-empty list of {name, size, command_topic, state_topic}",
+                          fix="e.g. [{name: leg, size: 12}] or remove groups for the AgiBot defaults")
         specs = []
         for i, item in enumerate(raw):
             q = f"{path}[{i}]"
             m = v.mapping(item, q, GROUP_KEYS)
             for key in ("name", "size"):
                 if key not in m:
-                    raise v.error(q, f"group needs {key!r}")
+                    raise v.error(q, f"group needs {key!r}", fix=f"add {key}: to the group")
             name = v.string(m["name"], f"{q}.name", re.compile(r"^[a-z][a-z0-9_]*$"), "group name")
             size = v.integer(m["size"], f"{q}.size", 1, MAX_MOTORS)
             cmd = v.topic(m["command_topic"], f"{q}.command_topic") if "command_topic" in m \
@@ -452,7 +466,7 @@ def _groups(v: _Validator, raw: Any, motor_count: int) -> tuple[JointGroup, ...]
             state = v.topic(m["state_topic"], f"{q}.state_topic") if "state_topic" in m \
                 else f"/aima/hal/joint/{name}/state"
             if any(s[0] == name for s in specs):
-                raise v.error(f"{q}.name", f"group {name!r} is defined twice")
+                raise v.error(f"{q}.name", f"group {name!r} is defined twice", fix="give every group its own name")
             specs.append((name, size, cmd, state))
     total = sum(s[1] for s in specs)
     if total != motor_count:

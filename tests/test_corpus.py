@@ -1,0 +1,252 @@
+"""Real robot descriptions no one here wrote: each generates a driver that compiles, or is rejected.
+
+The corpus is every URDF (and every xacro that needs no ROS package) of the ``example-robot-data``
+package on PyPI (a test dependency: G1, Go1/Go2, A1, B1, Talos with mimic joints, Tiago, UR, Panda,
+Allegro, ...) plus the upstream vendor URDFs in ../shared/upstream/urdf when that folder exists.
+
+For each file the test does what a user does: ``rhi-gen new --vendor corpus --robot <name> --urdf
+FILE --transport generic_topics`` in a fresh project (the vendor YAML is built from the URDF's
+actuated joints), then compiles the generated driver against the stand-in headers (g++ -Werror,
+two files at a time). A file may instead be rejected with exit 2 and one clear line, but only the
+rejections listed in EXPECTED_REJECTIONS: each is a genuine defect of that input, explained there.
+Anything else — a crash, a driver that does not compile, a new rejection, or an expected rejection
+that disappeared — fails the test.
+
+The per-file outcome and the summary ("N descriptions: G generated and compiled, R rejected with
+reasons") are printed (visible without -s) and written to tests/.corpus_report.txt.
+"""
+from __future__ import annotations
+
+import importlib.metadata
+import re
+import time
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+import yaml
+from lxml import etree
+
+from tests.cpp_build import syntax_check_driver
+from tests.test_hostile_inputs import run_cli, snapshot
+
+REPO = Path(__file__).resolve().parents[1]
+SHARED = REPO.parent / "shared"
+UPSTREAM_URDF = SHARED / "upstream" / "urdf"
+REPORT = Path(__file__).resolve().parent / ".corpus_report.txt"
+PACKAGE = "robot_hardware_interface"
+COMPILE_WORKERS = 2
+
+# label -> (words the one-line reason must contain, why the input itself is at fault)
+EXPECTED_REJECTIONS: dict[str, tuple[tuple[str, ...], str]] = {
+    "example-robot-data:alex_description/urdf/alex_psyonic_hands.urdf": (
+        (":1037:", "mimics 'index_q1', which is not a joint of this URDF", "did you mean 'Left_index_q1'?"),
+        "the <mimic> tags name 'index_q1', 'middle_q1', ... but the joints are called 'Left_index_q1', "
+        "'Right_index_q1', ...: the mimic targets do not exist"),
+    "example-robot-data:hector_description/robots/quadrotor_base.urdf": (
+        ("has no actuated joints",),
+        "a quadrotor body: one link, no joint at all, so nothing a ros2_control driver could command"),
+    "example-robot-data:iris_description/robots/iris_simple.urdf": (
+        ("has no actuated joints",),
+        "a drone whose rotor joints are all type=\"fixed\": nothing a ros2_control driver could command"),
+    "example-robot-data:ur_description/urdf/ur3.urdf": (
+        (":6:", "<robot> has no name attribute"),
+        "the root <robot> element has no name; urdfdom (and so robot_state_publisher and ros2_control) "
+        "rejects such a file"),
+    "example-robot-data:hector_description/robots/quadrotor_base.urdf.xacro": (
+        ("<robot> has no name attribute",),
+        "a xacro macro library (it only defines quadrotor_base_macro, never calls it): not a robot; its "
+        "<robot> has no name"),
+    "example-robot-data:hector_description/robots/quadrotor_base.xacro": (
+        ("cannot include 'package://example-robot-data/robots/hector_description/urdf/quadrotor_base.urdf.xacro'",
+         "xacro does not resolve package:// URLs"),
+        "xacro:include with a package:// URL (xacro itself cannot open it) that points at a file the "
+        "package does not contain (it lives in robots/, not urdf/)"),
+}
+
+
+@dataclass(frozen=True)
+class Description:
+    label: str   # "example-robot-data:<path under robots/>" or "upstream:<file>"
+    path: Path
+    robot: str   # the --robot name used
+
+
+@dataclass
+class Outcome:
+    description: Description
+    status: str = ""            # "generated" | "rejected" | "crashed"
+    reason: str = ""            # the error line for "rejected"/"crashed"
+    compile_error: str = ""     # g++'s first errors when the driver does not compile
+    problems: list[str] = field(default_factory=list)  # contract violations found along the way
+
+    @property
+    def ok(self) -> bool:
+        return not self.problems and not self.compile_error and self.status in ("generated", "rejected")
+
+
+def robot_name(stem: str, taken: set[str]) -> str:
+    """A valid, unique --robot name from a file stem: 'anymal-kinova' -> 'anymal_kinova'."""
+    name = re.sub(r"[^a-z0-9]+", "_", stem.lower()).strip("_") or "robot"
+    if not name[0].isalpha():
+        name = f"r_{name}"
+    name = re.sub(r"_+", "_", name)[:40]
+    base, n = name, 2
+    while name in taken:
+        name = f"{base}_{n}"
+        n += 1
+    taken.add(name)
+    return name
+
+
+def corpus() -> list[Description]:
+    try:
+        files = importlib.metadata.files("example-robot-data") or []
+        dist = importlib.metadata.distribution("example-robot-data")
+    except importlib.metadata.PackageNotFoundError:
+        pytest.fail("example-robot-data is not installed: pip install -e '.[test]' (it is a test dependency)")
+    found: list[tuple[str, Path]] = []
+    for f in files:
+        text = str(f)
+        if not text.endswith((".urdf", ".xacro")) or "/robots/" not in f"/{text}":
+            continue
+        under = text.split("example-robot-data/robots/", 1)[-1]
+        found.append((f"example-robot-data:{under}", Path(dist.locate_file(f))))
+    if UPSTREAM_URDF.is_dir():
+        found += [(f"upstream:{p.name}", p) for p in UPSTREAM_URDF.glob("*.urdf")]
+    found.sort(key=lambda item: item[0])
+    taken: set[str] = set()
+    return [Description(label, path, robot_name(path.name.split(".")[0], taken)) for label, path in found]
+
+
+def check_generated(root: Path, d: Description, outcome: Outcome) -> None:
+    """What `new` wrote follows ros2_control's rules for this URDF."""
+    yaml_path = root / "robots" / "corpus" / f"{d.robot}.yaml"
+    pkg = root / "generated" / PACKAGE
+    for needed in (yaml_path, pkg / "src" / "corpus" / f"{d.robot}.cpp",
+                   pkg / "include" / PACKAGE / "corpus" / f"{d.robot}.hpp",
+                   pkg / "description" / f"{d.robot}.ros2_control.xacro"):
+        if not needed.is_file():
+            outcome.problems.append(f"missing {needed.relative_to(root)}")
+            return
+    config = yaml.safe_load(yaml_path.read_text())
+    mapped = list(config["joint_map"])
+    # the URDF as ros2_control's parser sees it (an independent read, lxml only): movable joints
+    # without <mimic> get interfaces, mimic joints get none
+    if (yaml_path.parent / config["urdf"]).resolve() != d.path.resolve():
+        outcome.problems.append(f"the YAML's urdf: {config['urdf']!r} does not lead to {d.path}")
+    urdf = etree.parse(str(d.path)) if not d.path.name.endswith(".xacro") else None
+    if urdf is not None:
+        joints = urdf.getroot().findall("joint")
+        movable = [j.get("name") for j in joints if j.get("type") in ("revolute", "continuous", "prismatic")]
+        mimic = {j.get("name") for j in joints if j.find("mimic") is not None}
+        expected = [n for n in movable if n not in mimic]
+        if sorted(mapped) != sorted(expected):
+            outcome.problems.append(f"joint_map {len(mapped)} joints, URDF has {len(expected)} actuated non-mimic")
+        types = {j.get("name"): j.get("type") for j in joints}
+    else:
+        mimic, types = set(), {}
+    described = etree.parse(str(pkg / "description" / f"{d.robot}.ros2_control.xacro"))
+    rc_joints = {j.get("name"): j for j in described.iter("joint")}
+    if set(rc_joints) != set(mapped):
+        outcome.problems.append("ros2_control description joints differ from joint_map")
+    for name, el in rc_joints.items():
+        if name in mimic and el.find("command_interface") is not None:
+            outcome.problems.append(f"mimic joint {name!r} got command interfaces")
+        if types.get(name) == "continuous" and el.find("command_interface/param[@name='min']") is not None:
+            outcome.problems.append(f"continuous joint {name!r} got position limits")
+
+
+def run_new(tmp_path: Path, index: int, d: Description) -> Outcome:
+    outcome = Outcome(d)
+    root = tmp_path / f"{index:03d}_{d.robot}"
+    root.mkdir()
+    before = snapshot(root)
+    result = run_cli("new", "--vendor", "corpus", "--robot", d.robot, "--urdf", d.path,
+                     "--transport", "generic_topics", "--project", root)
+    lines = result.error_lines
+    if result.code == 0:
+        outcome.status = "generated"
+        check_generated(root, d, outcome)
+    elif result.code == 2:
+        outcome.status = "rejected"
+        outcome.reason = lines[0] if lines else "(no message)"
+        if len(lines) != 1 or not lines[0].startswith("error: ") or " -> " not in lines[0]:
+            outcome.problems.append(f"rejection is not one 'error: ... -> fix' line: {lines!r}")
+        if snapshot(root) != before:
+            outcome.problems.append("files were written although the input was rejected")
+    else:
+        outcome.status = "crashed"
+        outcome.reason = f"exit {result.code}: " + " | ".join(lines[-3:])
+    return outcome
+
+
+def compile_driver(tmp_path: Path, index: int, outcome: Outcome) -> None:
+    root = tmp_path / f"{index:03d}_{outcome.description.robot}"
+    try:
+        syntax_check_driver(root / "generated" / PACKAGE, "corpus", outcome.description.robot)
+    except AssertionError as exc:
+        outcome.compile_error = "\n".join(str(exc).splitlines()[:8])
+
+
+def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(tmp_path, capsys, record_property):
+    start = time.perf_counter()
+    descriptions = corpus()
+    erd = [d for d in descriptions if d.label.startswith("example-robot-data:")]
+    assert len(erd) >= 60, f"example-robot-data holds only {len(erd)} descriptions: wrong package version?"
+
+    outcomes = [run_new(tmp_path, i, d) for i, d in enumerate(descriptions)]
+    generate_time = time.perf_counter() - start
+    generated = [(i, o) for i, o in enumerate(outcomes) if o.status == "generated"]
+    with ThreadPoolExecutor(max_workers=COMPILE_WORKERS) as pool:
+        list(pool.map(lambda item: compile_driver(tmp_path, *item), generated))
+    elapsed = time.perf_counter() - start
+
+    failures: list[str] = []
+    labels = {d.label for d in descriptions}
+    for o in outcomes:
+        label = o.description.label
+        expected = EXPECTED_REJECTIONS.get(label)
+        if o.status == "crashed":
+            failures.append(f"{label}: rhi-gen crashed ({o.reason})")
+        elif o.status == "rejected" and expected is None:
+            failures.append(f"{label}: unexpected rejection (a valid description? fix the loader): {o.reason}")
+        elif o.status == "rejected":
+            missing = [w for w in expected[0] if w not in o.reason]
+            if missing:
+                failures.append(f"{label}: rejected for another reason than expected ({missing}): {o.reason}")
+        elif o.status == "generated" and expected is not None:
+            failures.append(f"{label}: generated although listed in EXPECTED_REJECTIONS; update the list")
+        if o.compile_error:
+            failures.append(f"{label}: driver does not compile:\n{o.compile_error}")
+        failures += [f"{label}: {p}" for p in o.problems]
+    stale = [label for label in EXPECTED_REJECTIONS if label.startswith("example-robot-data:") and label not in labels]
+    failures += [f"{label}: listed in EXPECTED_REJECTIONS but not in the corpus any more" for label in stale]
+
+    compiled = [o for o in outcomes if o.status == "generated" and not o.compile_error and not o.problems]
+    rejected = [o for o in outcomes if o.status == "rejected"]
+    summary = (f"{len(descriptions)} descriptions: {len(compiled)} generated and compiled, "
+               f"{len(rejected)} rejected with reasons"
+               + (f", {len(outcomes) - len(compiled) - len(rejected)} FAILED" if failures else "")
+               + f" ({elapsed:.1f} s: {generate_time:.1f} s rhi-gen new, {elapsed - generate_time:.1f} s g++ "
+                 f"with {COMPILE_WORKERS} workers)")
+    report = ["rhi-gen corpus: example-robot-data"
+              + (f" + {UPSTREAM_URDF}" if UPSTREAM_URDF.is_dir() else " (shared upstream folder absent)")]
+    for o in outcomes:
+        mark = {"generated": "compiled" if not o.compile_error else "NO-COMPILE"}.get(o.status, o.status)
+        if o.problems:
+            mark += " (PROBLEM)"
+        report.append(f"  {mark:<12} {o.description.label}" + (f"\n               {o.reason}" if o.reason else ""))
+    report.append("rejected, each a genuine defect of the input:")
+    for o in rejected:
+        why = EXPECTED_REJECTIONS.get(o.description.label, ((), "NOT EXPECTED"))[1]
+        report.append(f"  {o.description.label}: {why}")
+    report.append(summary)
+    text = "\n".join(report) + "\n"
+    REPORT.write_text(text)
+    record_property("corpus_summary", summary)
+    with capsys.disabled():
+        print(f"\n{text}", end="")
+
+    assert not failures, f"{summary}\n" + "\n".join(failures)

@@ -536,6 +536,7 @@ return_type X2HardwareInterface::write(const rclcpp::Time& /*time*/, const rclcp
 // State callback context: hand a validated state (motor_state_cache_) over to read(), and on the
 // first one of an activation seed the command buffer (layer 2) before the writer may send.
 void X2HardwareInterface::publishState(int64_t state_time_ns) {
+  state_frames_valid_ = true;
   motor_state_buffer_.setData(motor_state_cache_);
   last_state_time_ns_.store(state_time_ns, std::memory_order_release);
   if (first_state_received_.load(std::memory_order_acquire)) {
@@ -674,6 +675,15 @@ void X2HardwareInterface::groupStateCallback(
   // Decimation per group: the first frame of a group in an activation is always processed.
   const uint32_t frame_count = group_frame_counter_[group_index]++;
   if (group_reported_[group_index] && (frame_count % state_decimation_) != 0U) {
+    // A skipped frame still proves that the group reports: it keeps the group fresh for the
+    // stale-state check, unless the group's last processed frame was rejected.
+    if (group_frames_valid_[group_index]) {
+      group_state_time_ns_[group_index] = steadyNowNs();
+      if (groups_reported_ == X2_NUM_JOINT_GROUPS) {
+        last_state_time_ns_.store(*std::min_element(group_state_time_ns_.begin(), group_state_time_ns_.end()),
+                                  std::memory_order_release);
+      }
+    }
     return;
   }
 
@@ -685,6 +695,7 @@ void X2HardwareInterface::groupStateCallback(
       continue;
     }
     if (!allFinite(joint.position, joint.velocity, joint.effort)) {
+      group_frames_valid_[group_index] = false;
       ++invalid_state_count_;
       RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
                            "dropped state frame: "
@@ -696,6 +707,7 @@ void X2HardwareInterface::groupStateCallback(
     ++matched;
   }
   if (matched < group.driven) {
+    group_frames_valid_[group_index] = false;
     ++invalid_state_count_;
     RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
                          "dropped state frame: "
@@ -716,6 +728,7 @@ void X2HardwareInterface::groupStateCallback(
   }
 
   group_state_time_ns_[group_index] = steadyNowNs();
+  group_frames_valid_[group_index] = true;
   if (!group_reported_[group_index]) {
     group_reported_[group_index] = true;
     ++groups_reported_;

@@ -485,6 +485,7 @@ return_type PM01HardwareInterface::write(const rclcpp::Time& /*time*/, const rcl
 // State callback context: hand a validated state (motor_state_cache_) over to read(), and on the
 // first one of an activation seed the command buffer (layer 2) before the writer may send.
 void PM01HardwareInterface::publishState(int64_t state_time_ns) {
+  state_frames_valid_ = true;
   motor_state_buffer_.setData(motor_state_cache_);
   last_state_time_ns_.store(state_time_ns, std::memory_order_release);
   if (first_state_received_.load(std::memory_order_acquire)) {
@@ -616,6 +617,7 @@ void PM01HardwareInterface::jointStateCallback(const interface_protocol::msg::Jo
   // ========== Every frame: a frame too short to cover every motor is malformed ==========
   if (msg.position.size() < PM01_NUM_MOTOR || msg.velocity.size() < PM01_NUM_MOTOR ||
       msg.torque.size() < PM01_NUM_MOTOR) {
+    state_frames_valid_ = false;
     ++invalid_state_count_;
     RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
                          "dropped state frame: "
@@ -629,6 +631,11 @@ void PM01HardwareInterface::jointStateCallback(const interface_protocol::msg::Jo
   const bool is_first_state = !first_state_received_.load(std::memory_order_acquire);
   const uint32_t frame_count = state_frame_counter_.fetch_add(1, std::memory_order_relaxed);
   if (!is_first_state && (frame_count % state_decimation_) != 0U) {
+    // A skipped frame still proves that state arrives: it keeps the state fresh for the stale-state
+    // check, unless the last processed frame was rejected.
+    if (state_frames_valid_) {
+      last_state_time_ns_.store(steadyNowNs(), std::memory_order_release);
+    }
     return;
   }
 
@@ -640,6 +647,7 @@ void PM01HardwareInterface::jointStateCallback(const interface_protocol::msg::Jo
     const double dq = msg.velocity[slot];
     const double tau = msg.torque[slot];
     if (!allFinite(q, dq, tau)) {
+      state_frames_valid_ = false;
       ++invalid_state_count_;
       RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
                            "dropped state frame: "

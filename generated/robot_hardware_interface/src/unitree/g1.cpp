@@ -500,6 +500,7 @@ return_type G1HardwareInterface::write(const rclcpp::Time& /*time*/, const rclcp
 // State callback context: hand a validated state (motor_state_cache_) over to read(), and on the
 // first one of an activation seed the command buffer (layer 2) before the writer may send.
 void G1HardwareInterface::publishState(int64_t state_time_ns) {
+  state_frames_valid_ = true;
   motor_state_buffer_.setData(motor_state_cache_);
   last_state_time_ns_.store(state_time_ns, std::memory_order_release);
   if (first_state_received_.load(std::memory_order_acquire)) {
@@ -615,6 +616,11 @@ void G1HardwareInterface::lowStateHandler(const void* message) {
   const bool is_first_state = !first_state_received_.load(std::memory_order_acquire);
   const uint32_t frame_count = state_frame_counter_.fetch_add(1, std::memory_order_relaxed);
   if (!is_first_state && (frame_count % state_decimation_) != 0U) {
+    // A skipped frame still proves that state arrives: it keeps the state fresh for the stale-state
+    // check, unless the last processed frame was rejected.
+    if (state_frames_valid_) {
+      last_state_time_ns_.store(steadyNowNs(), std::memory_order_release);
+    }
     return;
   }
 
@@ -623,6 +629,7 @@ void G1HardwareInterface::lowStateHandler(const void* message) {
   for (const size_t slot : kMappedSlots) {
     const auto& motor = motors[slot];
     if (!allFinite(motor.q(), motor.dq(), motor.tau_est())) {
+      state_frames_valid_ = false;
       ++invalid_state_count_;
       RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
                            "dropped state frame: "

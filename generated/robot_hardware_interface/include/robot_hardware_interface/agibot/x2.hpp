@@ -181,6 +181,7 @@ private:
   size_t groups_reported_{0};
   std::array<uint32_t, X2_NUM_JOINT_GROUPS> group_frame_counter_{};  // decimation, per group
   std::array<int64_t, X2_NUM_JOINT_GROUPS> group_state_time_ns_{};   // last valid frame of each group
+  std::array<bool, X2_NUM_JOINT_GROUPS> group_frames_valid_{};       // the group's last processed frame was accepted
 
   // ========== ROS 2 executor: spins the node (topic callbacks + command timer) ==========
   rclcpp::executors::SingleThreadedExecutor::SharedPtr executor_;
@@ -196,6 +197,7 @@ private:
   bool holding_{false};                            // writer: holding because the state is stale
   uint64_t invalid_command_count_{0};              // writer: cycles with a rejected joint command
   uint64_t invalid_state_count_{0};                // state callback: rejected state frames
+  bool state_frames_valid_{false};                 // state callback: the last processed frame was accepted
   uint64_t invalid_imu_count_{0};                  // IMU callback: rejected IMU samples
 
   // ========== Performance monitoring ==========

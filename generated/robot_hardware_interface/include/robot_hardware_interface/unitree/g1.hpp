@@ -180,6 +180,7 @@ private:
   bool holding_{false};                            // writer: holding because the state is stale
   uint64_t invalid_command_count_{0};              // writer: cycles with a rejected joint command
   uint64_t invalid_state_count_{0};                // state callback: rejected state frames
+  bool state_frames_valid_{false};                 // state callback: the last processed frame was accepted
   uint64_t invalid_imu_count_{0};                  // IMU callback: rejected IMU samples
 
   // ========== Performance monitoring ==========

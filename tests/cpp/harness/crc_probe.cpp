@@ -1,0 +1,17 @@
+// Exposes the generated CRC header's functions to driver_harness.cpp, which checks them against
+// SDK_FACTS.md's test vectors and the independent reference (hg_crc_reference.hpp).
+// Compiled against the generated package; RHI_CRC_HEADER names the header (set by cpp_build.py).
+#include <cstdint>
+
+#include RHI_CRC_HEADER
+
+uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg);
+uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg);
+
+uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg) {
+  return robot_hardware_interface::unitree_hg_crc::lowCmdCrc(msg);
+}
+
+uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg) {
+  return robot_hardware_interface::unitree_hg_crc::lowStateCrc(msg);
+}

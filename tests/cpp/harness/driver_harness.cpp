@@ -1,0 +1,1078 @@
+// Runs one generated driver against a simulated robot (the rhi_fake stand-ins).
+//
+// Built per robot by tests/cpp_build.py: this file + robot_data.hpp (tables written from the
+// vendor YAML, the URDF and the expanded ros2_control xacro) + the generated driver's object file
+// (+ crc_probe.cpp for unitree_dds). The driver is created through pluginlib's registry
+// (PLUGINLIB_EXPORT_CLASS), exactly as ros2_control's ResourceManager does: this translation unit
+// never includes the generated header.
+//
+// Sections (see tests/cpp/harness/README.md): interfaces, safety, joint_map, imu, commands,
+// command_safety, crc, parameters, decimation, allocations, threads.
+// Output: "section <name>: P passed, F failed" per section and "rhi-check: P passed, F failed".
+#include <atomic>
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <hardware_interface/system_interface.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <lifecycle_msgs/msg/state.hpp>
+#include <rclcpp_lifecycle/state.hpp>
+
+#include "alloc_counter.hpp"
+#include "check.hpp"
+#include "harness_common.hpp"
+#include "rhi_fake/all.hpp"
+#include "rhi_fake/plugins.hpp"
+
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+#include "transport_unitree_dds.hpp"
+#elif defined(RHI_TRANSPORT_AGIBOT_TOPICS)
+#include "transport_agibot_topics.hpp"
+#elif defined(RHI_TRANSPORT_ENGINEAI_TOPICS)
+#include "transport_engineai_topics.hpp"
+#elif defined(RHI_TRANSPORT_GENERIC_TOPICS)
+#include "transport_generic_topics.hpp"
+#else
+#error "robot_data.hpp names no known transport"
+#endif
+
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+// crc_probe.cpp: the generated CRC header's functions (compiled against the generated package).
+uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg);
+uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg);
+#endif
+
+namespace {
+
+using namespace rhi_test;  // NOLINT
+using hardware_interface::SystemInterface;
+using CallbackReturn = rclcpp_lifecycle::node_interfaces::LifecycleNodeInterface::CallbackReturn;
+using Severity = rhi_fake::logs::Severity;
+
+const rclcpp::Time kTime(0, 0, RCL_ROS_TIME);
+const rclcpp::Duration kPeriod(0, 2000000);
+const rclcpp_lifecycle::State kInactive(lifecycle_msgs::msg::State::PRIMARY_STATE_INACTIVE, "inactive");
+const rclcpp_lifecycle::State kActive(lifecycle_msgs::msg::State::PRIMARY_STATE_ACTIVE, "active");
+constexpr const char* kFloatName = sizeof(SdkFloat) == sizeof(float) ? "float" : "double";
+
+void fresh_process() {
+  rhi_fake::reset_all();
+  rclcpp::init(0, nullptr);
+}
+
+struct Rig {
+  std::shared_ptr<SystemInterface> hw;
+  Transport t;
+  Interfaces ifs;
+  bool active{false};
+};
+
+std::shared_ptr<SystemInterface> create_driver() {
+  try {
+    return rhi_fake::plugins::create<SystemInterface>(kPluginType);
+  } catch (const std::exception& e) {
+    CHECK(false, "plugin class %s is not exported as a hardware_interface::SystemInterface: %s", kPluginType,
+          e.what());
+    return nullptr;
+  }
+}
+
+// on_init through a try block: a driver must report bad input with ERROR, never throw.
+CallbackReturn init_driver(SystemInterface& hw, const hardware_interface::HardwareInfo& info, bool* threw) {
+  *threw = false;
+  try {
+    return hw.on_init(info);
+  } catch (const std::exception& e) {
+    *threw = true;
+    std::printf("on_init threw: %s\n", e.what());
+  } catch (...) {
+    *threw = true;
+  }
+  return CallbackReturn::ERROR;
+}
+
+bool setup(Rig& rig, const hardware_interface::HardwareInfo& info) {
+  rig.hw = create_driver();
+  if (!rig.hw) {
+    return false;
+  }
+  bool threw = false;
+  const CallbackReturn r = init_driver(*rig.hw, info, &threw);
+  CHECK(!threw && r == CallbackReturn::SUCCESS, "on_init with a valid description returned %d%s",
+        static_cast<int>(r), threw ? " (threw)" : "");
+  if (r != CallbackReturn::SUCCESS) {
+    return false;
+  }
+  rig.ifs.states = rig.hw->export_state_interfaces();
+  rig.ifs.commands = rig.hw->export_command_interfaces();
+  rig.ifs.index();
+  CHECK(rig.ifs.complete(), "every expected interface is exported");
+  return rig.ifs.complete();
+}
+
+bool activate(Rig& rig) {
+  const CallbackReturn r = rig.hw->on_activate(kInactive);
+  CHECK(r == CallbackReturn::SUCCESS, "on_activate returned %d", static_cast<int>(r));
+#if defined(RHI_TRANSPORT_ROS)
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::seconds(5)),
+        "on_activate starts exactly one executor spinning");
+#endif
+  rig.active = r == CallbackReturn::SUCCESS;
+  return rig.active;
+}
+
+void deactivate(Rig& rig) {
+  if (!rig.active) {
+    return;
+  }
+  const CallbackReturn r = rig.hw->on_deactivate(kActive);
+  CHECK(r == CallbackReturn::SUCCESS, "on_deactivate returned %d", static_cast<int>(r));
+#if defined(RHI_TRANSPORT_ROS)
+  CHECK(rhi_fake::ros::wait_spinning_executors(0, std::chrono::seconds(5)),
+        "on_deactivate stops the executor thread");
+#endif
+  rig.active = false;
+}
+
+void teardown(Rig& rig) {
+  deactivate(rig);
+  rig.ifs = Interfaces{};
+  rig.hw.reset();
+}
+
+// A command that holds `state`'s positions with zero gains, zero velocity and zero effort.
+void check_hold(const CommandFrame& c, const StateFrame& state, const char* what) {
+  for (const Joint& j : kJoints) {
+    const size_t s = j.slot;
+    CHECK(c.present[s], "%s: slot %zu (%s) is in the command", what, s, j.name);
+    CHECK_EQ(c.q[s], state.q[s], "%s: %s position target = measured position", what, j.name);
+    CHECK_EQ(c.dq[s], 0.0, "%s: %s velocity target", what, j.name);
+    CHECK_EQ(c.tau[s], 0.0, "%s: %s feed-forward effort", what, j.name);
+    if (c.has_gains) {
+      CHECK_EQ(c.kp[s], 0.0, "%s: %s stiffness", what, j.name);
+      CHECK_EQ(c.kd[s], 0.0, "%s: %s damping", what, j.name);
+    }
+  }
+}
+
+bool last_command(Transport& t, CommandFrame& c, const char* what) {
+  c = CommandFrame{};
+  const bool ok = t.last_command(c);
+  CHECK(ok, "%s: a command was sent", what);
+  return ok;
+}
+
+void check_state_interfaces(const Interfaces& ifs, const StateFrame& f, const char* what) {
+  for (size_t k = 0; k < kJointCount; ++k) {
+    const Joint& j = kJoints[k];
+    CHECK_EQ(ifs.pos[k]->get_value(), f.q[j.slot], "%s: %s/position = SDK slot %zu", what, j.name, j.slot);
+    CHECK_EQ(ifs.vel[k]->get_value(), f.dq[j.slot], "%s: %s/velocity = SDK slot %zu", what, j.name, j.slot);
+    CHECK_EQ(ifs.eff[k]->get_value(), f.tau[j.slot], "%s: %s/effort = SDK slot %zu", what, j.name, j.slot);
+  }
+}
+
+// ================================================================ interfaces
+void test_interfaces() {
+  rhi_check::Section section("interfaces");
+  fresh_process();
+
+  bool exported = false;
+  for (const auto& c : rhi_fake::plugins::classes()) {
+    if (c.derived == kPluginType && c.base == "hardware_interface::SystemInterface") {
+      exported = true;
+    }
+  }
+  CHECK(exported, "PLUGINLIB_EXPORT_CLASS(%s, hardware_interface::SystemInterface) is registered", kPluginType);
+
+  const hardware_interface::HardwareInfo info = make_hardware_info();
+  CHECK(info.hardware_class_type == kPluginName, "the description's <plugin> is %s", kPluginName);
+  CHECK_EQ(info.joints.size(), kJointCount, "joints in the ros2_control description");
+
+  Rig rig;
+  rig.hw = create_driver();
+  if (!rig.hw) {
+    return;
+  }
+  bool threw = false;
+  const CallbackReturn r = init_driver(*rig.hw, info, &threw);
+  CHECK(!threw && r == CallbackReturn::SUCCESS, "on_init(description) = SUCCESS");
+  if (r != CallbackReturn::SUCCESS) {
+    return;
+  }
+  auto states = rig.hw->export_state_interfaces();
+  auto commands = rig.hw->export_command_interfaces();
+  std::map<std::string, int> state_count;
+  std::map<std::string, int> command_count;
+  for (const auto& s : states) {
+    ++state_count[s.get_name()];
+  }
+  for (const auto& c : commands) {
+    ++command_count[c.get_name()];
+  }
+  const auto count_of = [](const std::map<std::string, int>& counts, const std::string& name) {
+    const auto it = counts.find(name);
+    return it == counts.end() ? 0 : it->second;
+  };
+  for (const Joint& j : kJoints) {
+    for (const char* iface : kJointStates) {
+      CHECK_EQ(count_of(state_count, std::string(j.name) + "/" + iface), 1,
+               "state interface %s/%s exported exactly once", j.name, iface);
+    }
+    for (const char* iface : kJointCommands) {
+      CHECK_EQ(count_of(command_count, std::string(j.name) + "/" + iface), 1,
+               "command interface %s/%s exported exactly once", j.name, iface);
+    }
+  }
+  if (kImuEnabled) {
+    for (const char* iface : kImuInterfaces) {
+      CHECK_EQ(count_of(state_count, std::string(kImuName) + "/" + iface), 1,
+               "IMU interface %s/%s exported exactly once", kImuName, iface);
+    }
+  }
+  // Nothing else: the totals equal the expected sets.
+  CHECK_EQ(states.size(), 3 * kJointCount + (kImuEnabled ? kImuInterfaces.size() : 0U),
+           "number of state interfaces (3 per mapped joint + IMU)");
+  CHECK_EQ(commands.size(), 5 * kJointCount, "number of command interfaces (5 per mapped joint)");
+  CHECK_EQ(state_count.size(), states.size(), "state interface names are unique");
+  CHECK_EQ(command_count.size(), commands.size(), "command interface names are unique");
+  bool readable = true;
+  for (const auto& s : states) {
+    try {
+      (void)s.get_value();
+    } catch (const std::exception&) {
+      readable = false;
+    }
+  }
+  CHECK(readable, "every state interface points at storage");
+  states.clear();
+  commands.clear();
+  rig.hw.reset();
+
+  // A joint the driver does not drive: refused with ERROR and a log line, not a crash.
+  hardware_interface::HardwareInfo unknown = info;
+  hardware_interface::ComponentInfo extra;
+  extra.name = "rhi_test_unknown_joint";
+  extra.type = "joint";
+  unknown.joints.push_back(extra);
+  auto hw2 = create_driver();
+  if (hw2) {
+    rhi_fake::logs::clear();
+    const CallbackReturn r2 = init_driver(*hw2, unknown, &threw);
+    CHECK(!threw && r2 == CallbackReturn::ERROR, "on_init with a joint the robot does not have = ERROR");
+    CHECK(rhi_fake::logs::contains("rhi_test_unknown_joint", Severity::Error),
+          "the error log line names the unknown joint");
+  }
+}
+
+// ================================================================ main scenario
+void test_main_scenario() {
+  fresh_process();
+  Rig rig;
+  if (!setup(rig, make_hardware_info()) || !activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  Transport& t = rig.t;
+  Interfaces& ifs = rig.ifs;
+  SystemInterface& hw = *rig.hw;
+  const size_t per_cycle = Transport::command_messages_per_cycle();
+  const StateFrame s0 = distinct_state(0);
+  const ControllerCommand bogus = distinct_command(7);  // what a controller may already hold
+  CommandFrame c;
+
+  {
+    rhi_check::Section section("parameters");
+    uint64_t period = 0;
+    CHECK(t.writer_period_us(period), "one command writer runs after on_activate");
+    CHECK_EQ(period, kDescriptionPeriodUs, "command writer period [us] from the description");
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+    CHECK(t.network_interface() == kDescriptionNetworkInterface, "DDS network interface from the description (%s)",
+          kDescriptionNetworkInterface);
+#endif
+  }
+
+  {
+    rhi_check::Section section("safety");
+    for (int i = 0; i < 5; ++i) {
+      t.tick_writer();
+    }
+    CHECK_EQ(t.sent_messages(), 0U, "layer 1: messages sent before any state");
+
+    apply_command(ifs, bogus);
+    CHECK(hw.read(kTime, kPeriod) == hardware_interface::return_type::OK, "read() without state returns OK");
+    CHECK(hw.write(kTime, kPeriod) == hardware_interface::return_type::OK, "write() without state returns OK");
+    for (int i = 0; i < 3; ++i) {
+      t.tick_writer();
+    }
+    CHECK_EQ(t.sent_messages(), 0U, "layers 1+3: write() before the first state sends nothing");
+    for (size_t k = 0; k < kJointCount; ++k) {
+      CHECK_EQ(ifs.pos[k]->get_value(), 0.0, "%s/position before any state", kJoints[k].name);
+    }
+
+    t.deliver_invalid_state(distinct_state(1));
+    t.tick_writer();
+    CHECK_EQ(t.sent_messages(), 0U, "an invalid first frame is not a state: nothing sent");
+
+    // Layer 2: the first valid state makes the writer hold the measured position, zero gains.
+    CHECK(t.deliver_state(s0) > 0, "the state frame reaches the driver's subscription");
+    const size_t imu_reached = t.deliver_imu(s0);
+    CHECK(imu_reached > 0 || !kImuEnabled, "the IMU sample reaches the driver's subscription");
+    t.tick_writer();
+    CHECK_EQ(t.sent_messages(), per_cycle, "one command cycle after the first state");
+    if (last_command(t, c, "layer 2")) {
+      check_hold(c, s0, "layer 2 (first command after the first state)");
+    }
+
+    // Layer 3: the state arrived after this cycle's read(): write() must not forward the
+    // controller's stale commands.
+    apply_command(ifs, bogus);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    if (last_command(t, c, "layer 3")) {
+      check_hold(c, s0, "layer 3 (write() before read() copied a state)");
+    }
+
+    // read() copies the state; the first write() seeds the command interfaces with it.
+    hw.read(kTime, kPeriod);
+    apply_command(ifs, bogus);
+    hw.write(kTime, kPeriod);
+    for (size_t k = 0; k < kJointCount; ++k) {
+      const Joint& j = kJoints[k];
+      CHECK_EQ(ifs.cpos[k]->get_value(), s0.q[j.slot], "layer 3: first write() sets %s/position to the measured one",
+               j.name);
+      CHECK_EQ(ifs.cvel[k]->get_value(), 0.0, "layer 3: first write() zeroes %s/velocity", j.name);
+      CHECK_EQ(ifs.ckp[k]->get_value(), 0.0, "layer 3: first write() zeroes %s/stiffness", j.name);
+      CHECK_EQ(ifs.ckd[k]->get_value(), 0.0, "layer 3: first write() zeroes %s/damping", j.name);
+      CHECK_EQ(ifs.cff[k]->get_value(), 0.0, "layer 3: first write() zeroes %s/effort", j.name);
+    }
+    t.tick_writer();
+    if (last_command(t, c, "layer 3 first write")) {
+      check_hold(c, s0, "layer 3 (first write() after read())");
+    }
+  }
+
+  {
+    rhi_check::Section section("joint_map");
+    check_state_interfaces(ifs, s0, "state");
+    // Values of slots no joint is mapped to must appear nowhere.
+    std::set<double> unmapped;
+    for (size_t slot = 0; slot < N; ++slot) {
+      if (joint_of_slot(slot) == nullptr) {
+        unmapped.insert(s0.q[slot]);
+        unmapped.insert(s0.dq[slot]);
+        unmapped.insert(s0.tau[slot]);
+      }
+    }
+    int leaked = 0;
+    for (const auto& s : ifs.states) {
+      leaked += unmapped.count(s.get_value()) > 0 ? 1 : 0;
+    }
+    CHECK_EQ(leaked, 0, "state interfaces showing a value of an unmapped SDK slot");
+  }
+
+  {
+    rhi_check::Section section("imu");
+    if (kImuEnabled) {
+      // ros2_control order x, y, z, w; the fake robot sent w, x, y, z = 0.5, -0.25, 0.125, 0.8125.
+      CHECK_EQ(ifs.imu[0]->get_value(), s0.quat_wxyz[1], "%s/orientation.x", kImuName);
+      CHECK_EQ(ifs.imu[1]->get_value(), s0.quat_wxyz[2], "%s/orientation.y", kImuName);
+      CHECK_EQ(ifs.imu[2]->get_value(), s0.quat_wxyz[3], "%s/orientation.z", kImuName);
+      CHECK_EQ(ifs.imu[3]->get_value(), s0.quat_wxyz[0], "%s/orientation.w", kImuName);
+      for (size_t i = 0; i < 3; ++i) {
+        CHECK_EQ(ifs.imu[4 + i]->get_value(), s0.gyro[i], "%s/angular_velocity[%zu]", kImuName, i);
+        CHECK_EQ(ifs.imu[7 + i]->get_value(), s0.acc[i], "%s/linear_acceleration[%zu]", kImuName, i);
+      }
+    }
+  }
+
+  {
+    rhi_check::Section section("commands");
+    for (uint32_t variant = 0; variant < 2; ++variant) {
+      const ControllerCommand cmd = distinct_command(variant);
+      apply_command(ifs, cmd);
+      const uint64_t before = t.sent_messages();
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+      CHECK_EQ(t.sent_messages() - before, per_cycle, "one command cycle per writer tick");
+      if (!last_command(t, c, "commands")) {
+        continue;
+      }
+      CHECK(t.command_names_ok(), "command message names every slot after the joint the YAML maps to it");
+      size_t rounded = 0;
+      for (const Joint& j : kJoints) {
+        const size_t s = j.slot;
+        CHECK(c.present[s], "%s: slot %zu is in the command", j.name, s);
+        CHECK_EQ(c.q[s], sdk(cmd.q[s]), "%s/position -> SDK slot %zu as %s", j.name, s, kFloatName);
+        CHECK_EQ(c.dq[s], sdk(cmd.dq[s]), "%s/velocity -> SDK slot %zu as %s", j.name, s, kFloatName);
+        CHECK_EQ(c.tau[s], sdk(cmd.ff[s]), "%s/effort -> SDK slot %zu as %s", j.name, s, kFloatName);
+        if (c.has_gains) {
+          CHECK_EQ(c.kp[s], sdk(cmd.kp[s]), "%s/stiffness -> SDK slot %zu as %s", j.name, s, kFloatName);
+          CHECK_EQ(c.kd[s], sdk(cmd.kd[s]), "%s/damping -> SDK slot %zu as %s", j.name, s, kFloatName);
+        }
+        rounded += static_cast<double>(static_cast<float>(cmd.q[s])) != cmd.q[s] ? 1U : 0U;
+      }
+      // The values are chosen so that float rounding is visible: a double SDK that received
+      // float-rounded values fails the exact checks above, a float SDK must show the rounding.
+      CHECK(rounded > 0, "test values are not representable in float");
+      // Slots no joint is mapped to stay passive.
+      for (size_t slot = 0; slot < N; ++slot) {
+        if (joint_of_slot(slot) == nullptr && c.present[slot] && c.has_gains) {
+          CHECK_EQ(c.kp[slot], 0.0, "unmapped slot %zu stiffness", slot);
+          CHECK_EQ(c.kd[slot], 0.0, "unmapped slot %zu damping", slot);
+        }
+      }
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+      const auto& raw = t.last_raw_command();
+      CHECK_EQ(raw.mode_pr(), kModePr, "LowCmd_.mode_pr from the YAML");
+      CHECK_EQ(raw.mode_machine(), s0.mode_machine, "LowCmd_.mode_machine copied from LowState_");
+      CHECK_EQ(raw.crc(), rhi_ref::low_cmd_crc(raw), "LowCmd_.crc = reference Crc32Core over the message");
+      for (size_t slot = 0; slot < Transport::kSdkSlots; ++slot) {
+        const bool mapped = slot < N && joint_of_slot(slot) != nullptr;
+        const auto& mc = raw.motor_cmd()[slot];
+        CHECK_EQ(mc.mode(), mapped ? 1 : 0, "LowCmd_.motor_cmd[%zu].mode (1 = enabled)", slot);
+        if (!mapped) {
+          const bool zero = mc.q() == 0.0F && mc.dq() == 0.0F && mc.tau() == 0.0F && mc.kp() == 0.0F && mc.kd() == 0.0F;
+          CHECK(zero, "LowCmd_.motor_cmd[%zu] of an unused slot is all zero", slot);
+        }
+      }
+#elif defined(RHI_TRANSPORT_ENGINEAI_TOPICS)
+      const auto& raw = t.last_raw_command();
+      CHECK_EQ(raw.parallel_parser_type, kParallelParserType, "JointCommand.parallel_parser_type from the YAML");
+      CHECK_EQ(raw.position.size(), N, "JointCommand.position has one entry per SDK slot");
+#endif
+    }
+  }
+
+  {
+    rhi_check::Section section("command_safety");
+    // A non-finite command is never forwarded: that joint holds with damping only.
+    const Joint& j0 = kJoints[0];
+    ControllerCommand cmd = distinct_command(3);
+    apply_command(ifs, cmd);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    CommandFrame good;
+    last_command(t, good, "before NaN");
+    cmd.q[j0.slot] = std::numeric_limits<double>::quiet_NaN();
+    apply_command(ifs, cmd);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    if (last_command(t, c, "NaN command")) {
+      CHECK(std::isfinite(c.q[j0.slot]), "NaN position target of %s is not sent", j0.name);
+      CHECK_EQ(c.q[j0.slot], good.q[j0.slot], "%s keeps its last safe position target", j0.name);
+      CHECK_EQ(c.dq[j0.slot], 0.0, "%s: no velocity target while held", j0.name);
+      CHECK_EQ(c.tau[j0.slot], 0.0, "%s: no feed-forward while held", j0.name);
+      if (c.has_gains) {
+        CHECK_EQ(c.kp[j0.slot], 0.0, "%s: stiffness 0 while held", j0.name);
+      }
+      for (size_t k = 1; k < kJointCount; ++k) {
+        CHECK_EQ(c.q[kJoints[k].slot], sdk(cmd.q[kJoints[k].slot]), "%s unaffected by %s's NaN", kJoints[k].name,
+                 j0.name);
+      }
+    }
+    // Position targets beyond the URDF limits are clamped.
+    cmd = distinct_command(4);
+    size_t clamped = 0;
+    for (const Joint& j : kJoints) {
+      if (std::isfinite(j.upper)) {
+        cmd.q[j.slot] = j.upper + 1.0;
+        ++clamped;
+      }
+    }
+    apply_command(ifs, cmd);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    if (clamped > 0 && last_command(t, c, "clamp")) {
+      for (const Joint& j : kJoints) {
+        if (std::isfinite(j.upper)) {
+          CHECK_EQ(c.q[j.slot], sdk(j.upper), "%s position target clamped to its URDF upper limit", j.name);
+        }
+      }
+    }
+    // Stale state: no frame for longer than state_timeout_ms -> every joint damping only.
+    std::this_thread::sleep_for(std::chrono::milliseconds(kDescriptionTimeoutMs + 60));
+    t.tick_writer();
+    if (last_command(t, c, "stale state")) {
+      for (const Joint& j : kJoints) {
+        CHECK_EQ(c.dq[j.slot], 0.0, "stale state: %s velocity target", j.name);
+        CHECK_EQ(c.tau[j.slot], 0.0, "stale state: %s feed-forward", j.name);
+        if (c.has_gains) {
+          CHECK_EQ(c.kp[j.slot], 0.0, "stale state: %s stiffness", j.name);
+        }
+      }
+    }
+    // Fresh state again: commands flow again.
+    t.deliver_state(s0);
+    hw.read(kTime, kPeriod);
+    cmd = distinct_command(5);
+    apply_command(ifs, cmd);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    if (last_command(t, c, "after stale")) {
+      CHECK_EQ(c.q[j0.slot], sdk(cmd.q[j0.slot]), "commands flow again once state is back");
+      if (c.has_gains) {
+        CHECK_EQ(c.kp[j0.slot], sdk(cmd.kp[j0.slot]), "stiffness flows again once state is back");
+      }
+    }
+  }
+
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+  {
+    rhi_check::Section section("crc");
+    // A LowState_ with a wrong CRC is dropped: neither its joints nor its mode_machine are used.
+    StateFrame bad = distinct_state(1);
+    bad.mode_machine = 9;
+    t.prepare_state(bad, true);
+    CHECK(t.deliver_prepared() > 0, "bad-CRC frame delivered");
+    hw.read(kTime, kPeriod);
+    check_state_interfaces(ifs, s0, "after a bad-CRC LowState_");
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    CHECK_EQ(t.last_raw_command().mode_machine(), s0.mode_machine, "mode_machine of a bad-CRC frame is ignored");
+    // A field changed after the CRC was computed: dropped too (one frame per field class).
+    const std::vector<std::pair<const char*, std::function<void(Transport::LowState&)>>> tamper = {
+        {"tick", [](Transport::LowState& m) { m.tick() += 1; }},
+        {"motor_state[0].q", [](Transport::LowState& m) { m.motor_state()[0].q() += 0.25F; }},
+        {"motor_state[N-1].tau_est", [](Transport::LowState& m) { m.motor_state()[N - 1].tau_est() += 1.0F; }},
+        {"motor_state[34].reserve[3]", [](Transport::LowState& m) { m.motor_state()[34].reserve()[3] ^= 1U; }},
+        {"imu_state.quaternion[0]", [](Transport::LowState& m) { m.imu_state().quaternion()[0] = 0.0F; }},
+        {"wireless_remote[39]", [](Transport::LowState& m) { m.wireless_remote()[39] ^= 1U; }},
+        {"reserve[3]", [](Transport::LowState& m) { m.reserve()[3] ^= 1U; }},
+    };
+    for (const auto& [field, change] : tamper) {
+      t.prepare_state(bad, false);
+      change(t.prepared());
+      t.deliver_prepared();
+      hw.read(kTime, kPeriod);
+      CHECK_EQ(ifs.vel[0]->get_value(), s0.dq[kJoints[0].slot], "LowState_ with %s changed after its CRC is dropped",
+               field);
+    }
+    // A valid frame right after is used, with its mode_machine.
+    t.deliver_state(bad);
+    hw.read(kTime, kPeriod);
+    check_state_interfaces(ifs, bad, "valid frame after bad ones");
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    CHECK_EQ(t.last_raw_command().mode_machine(), 9, "mode_machine of the valid frame is echoed");
+    CHECK_EQ(t.last_raw_command().crc(), rhi_ref::low_cmd_crc(t.last_raw_command()),
+             "LowCmd_.crc = reference after mode_machine changed");
+    t.deliver_state(s0);
+    hw.read(kTime, kPeriod);
+  }
+#endif
+
+  {
+    rhi_check::Section section("allocations");
+    // Warm up: the fakes size their retained messages on first use.
+    ControllerCommand cmd = distinct_command(1);
+    for (uint32_t k = 0; k < 20; ++k) {
+      t.prepare_state(coded_state(k));
+      t.deliver_prepared();
+      t.deliver_prepared_imu();
+      hw.read(kTime, kPeriod);
+      apply_command(ifs, cmd);
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+    }
+    uint64_t in_state = 0, in_imu = 0, in_read = 0, in_write = 0, in_writer = 0;
+    constexpr uint32_t kCycles = 200;
+    const uint64_t sent_before = t.sent_messages();
+    for (uint32_t k = 0; k < kCycles; ++k) {
+      t.prepare_state(coded_state(100 + k));  // harness side, not counted
+      in_state += rhi_alloc::count_in([&] { t.deliver_prepared(); });
+      in_imu += rhi_alloc::count_in([&] { t.deliver_prepared_imu(); });
+      in_read += rhi_alloc::count_in([&] { hw.read(kTime, kPeriod); });
+      in_write += rhi_alloc::count_in([&] { hw.write(kTime, kPeriod); });
+      in_writer += rhi_alloc::count_in([&] { t.tick_writer(); });
+    }
+    std::printf("allocations over %u cycles: state callback %" PRIu64 ", IMU callback %" PRIu64 ", read() %" PRIu64
+                ", write() %" PRIu64 ", command writer %" PRIu64 "\n",
+                kCycles, in_state, in_imu, in_read, in_write, in_writer);
+    CHECK_EQ(t.sent_messages() - sent_before, kCycles * per_cycle, "the measured cycles really sent commands");
+    CHECK_EQ(in_state, 0U, "heap allocations in the state callback");
+    CHECK_EQ(in_imu, 0U, "heap allocations in the IMU callback");
+    CHECK_EQ(in_read, 0U, "heap allocations in read()");
+    CHECK_EQ(in_write, 0U, "heap allocations in write()");
+    CHECK_EQ(in_writer, 0U, "heap allocations in the command writer");
+  }
+
+  {
+    rhi_check::Section section("safety");
+    // Re-activation re-arms all three layers: the robot may have moved meanwhile.
+    deactivate(rig);
+    if (!activate(rig)) {
+      teardown(rig);
+      return;
+    }
+    const uint64_t sent = t.sent_messages();
+    for (int i = 0; i < 3; ++i) {
+      t.tick_writer();
+    }
+    CHECK_EQ(t.sent_messages() - sent, 0U, "layer 1 after re-activation: old commands are not sent");
+    hw.read(kTime, kPeriod);
+    apply_command(ifs, bogus);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    CHECK_EQ(t.sent_messages() - sent, 0U, "layers 1+3 after re-activation: write() sends nothing before a state");
+    t.deliver_invalid_state(distinct_state(1));
+    t.tick_writer();
+    CHECK_EQ(t.sent_messages() - sent, 0U, "after re-activation an invalid frame is not a state");
+    const StateFrame s1 = distinct_state(1);
+    t.deliver_state(s1);
+    t.deliver_imu(s1);
+    t.tick_writer();
+    CHECK_EQ(t.sent_messages() - sent, per_cycle, "one command cycle after the new first state");
+    if (last_command(t, c, "re-activation layer 2")) {
+      check_hold(c, s1, "layer 2 after re-activation");
+    }
+    apply_command(ifs, bogus);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+    if (last_command(t, c, "re-activation layer 3")) {
+      check_hold(c, s1, "layer 3 after re-activation (state not yet read)");
+    }
+  }
+  teardown(rig);
+}
+
+// ================================================================ parameters and decimation
+// Deliver `frames` frames, read() after each; returns the indices whose values read() showed.
+std::vector<uint32_t> processed_frames(Rig& rig, uint32_t frames) {
+  std::vector<uint32_t> processed;
+  int shown = -1;  // code read() showed last
+  for (uint32_t k = 0; k < frames; ++k) {
+    const uint32_t code = 200 + 7 * k;
+    StateFrame f = coded_state(code);
+    f.mode_machine = static_cast<uint8_t>(20 + k);
+    rig.t.deliver_state(f);
+    rig.hw->read(kTime, kPeriod);
+    int same = 0, previous = 0;
+    for (size_t j = 0; j < kJointCount; ++j) {
+      const int d = decode_position(kJoints[j], rig.ifs.pos[j]->get_value());
+      same += d == static_cast<int>(code % kCodes) ? 1 : 0;
+      previous += d == shown ? 1 : 0;
+    }
+    if (same == static_cast<int>(kJointCount)) {
+      processed.push_back(k);
+      shown = static_cast<int>(code % kCodes);
+    } else {
+      CHECK(previous == static_cast<int>(kJointCount), "frame %u: read() shows a mix of frames", k);
+    }
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+    // mode_machine is safety-critical: copied from every valid frame, decimated or not.
+    rig.t.tick_writer();
+    CHECK_EQ(rig.t.last_raw_command().mode_machine(), f.mode_machine, "mode_machine of frame %u (decimated or not)",
+             k);
+#endif
+  }
+  return processed;
+}
+
+void check_decimation(Rig& rig, uint32_t decimation, uint32_t frames) {
+  rhi_check::Section section("decimation");
+  const std::vector<uint32_t> processed = processed_frames(rig, frames);
+  std::vector<uint32_t> expected;
+  for (uint32_t k = 0; k < frames; k += decimation) {
+    expected.push_back(k);
+  }
+  CHECK_EQ(processed.size(), expected.size(), "state_decimation %u: frames processed out of %u", decimation, frames);
+  CHECK(processed == expected, "state_decimation %u: the first frame and every %u-th after it are processed",
+        decimation, decimation);
+  std::printf("decimation %u: %zu of %u frames processed\n", decimation, processed.size(), frames);
+}
+
+void test_parameters() {
+  // Defaults: a description without <param>s gets the vendor YAML's values (spec defaults).
+  {
+    rhi_check::Section section("parameters");
+    fresh_process();
+    Rig rig;
+    hardware_interface::HardwareInfo info = make_hardware_info();
+    info.hardware_parameters.clear();
+    if (setup(rig, info) && activate(rig)) {
+      uint64_t period = 0;
+      CHECK(rig.t.writer_period_us(period), "one command writer");
+      CHECK_EQ(period, kDefaultPeriodUs, "default command_writer_period_us");
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+      CHECK(rig.t.network_interface() == kDefaultNetworkInterface, "default network_interface %s",
+            kDefaultNetworkInterface);
+#endif
+      check_decimation(rig, kDefaultDecimation, 12);
+    }
+    teardown(rig);
+  }
+  // Overrides.
+  for (const uint32_t decimation : {3U, 4U}) {
+    rhi_check::Section section("parameters");
+    fresh_process();
+    Rig rig;
+    hardware_interface::HardwareInfo info = make_hardware_info();
+    info.hardware_parameters["command_writer_period_us"] = "5000";
+    info.hardware_parameters["state_decimation"] = std::to_string(decimation);
+    info.hardware_parameters["state_timeout_ms"] = "250";
+    info.hardware_parameters["enable_monitor"] = "false";
+    info.hardware_parameters["network_interface"] = "rhi_test0";
+    if (setup(rig, info) && activate(rig)) {
+      uint64_t period = 0;
+      CHECK(rig.t.writer_period_us(period), "one command writer");
+      CHECK_EQ(period, 5000U, "command_writer_period_us override");
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+      CHECK(rig.t.network_interface() == "rhi_test0", "network_interface override");
+#endif
+      check_decimation(rig, decimation, 10);
+    }
+    teardown(rig);
+  }
+  // Invalid values: CallbackReturn::ERROR and an error line naming the parameter; no exception.
+  {
+    rhi_check::Section section("parameters");
+    const std::vector<std::pair<const char*, const char*>> invalid = {
+        {"command_writer_period_us", "abc"}, {"command_writer_period_us", ""},
+        {"command_writer_period_us", "-1"},  {"command_writer_period_us", "0"},
+        {"command_writer_period_us", "12x"}, {"command_writer_period_us", "99999999999999999999999"},
+        {"state_decimation", "0"},           {"state_decimation", "-3"},
+        {"state_decimation", "two"},         {"state_decimation", "4.5"},
+        {"state_timeout_ms", "0"},           {"state_timeout_ms", "soon"},
+        {"enable_monitor", "maybe"},
+    };
+    fresh_process();
+    for (const auto& [name, value] : invalid) {
+      hardware_interface::HardwareInfo info = make_hardware_info();
+      info.hardware_parameters[name] = value;
+      auto hw = create_driver();
+      if (!hw) {
+        return;
+      }
+      rhi_fake::logs::clear();
+      bool threw = false;
+      const CallbackReturn r = init_driver(*hw, info, &threw);
+      CHECK(!threw, "%s='%s': on_init does not throw", name, value);
+      CHECK(r == CallbackReturn::ERROR, "%s='%s': on_init returns ERROR (got %d)", name, value, static_cast<int>(r));
+      CHECK(rhi_fake::logs::contains(name, Severity::Error), "%s='%s': an error line names the parameter", name,
+            value);
+    }
+  }
+}
+
+// Decimated frames still prove that state arrives: with state_decimation x frame period longer
+// than state_timeout_ms, frames arriving every period must not make the writer hold the robot.
+void test_decimation_keeps_state_fresh() {
+  rhi_check::Section section("decimation");
+  fresh_process();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  constexpr int kDecimation = 8;
+  constexpr int kTimeoutMs = 60;
+  constexpr int kFramePeriodMs = 12;  // 8 x 12 ms = 96 ms between processed frames > 60 ms timeout
+  info.hardware_parameters["state_decimation"] = std::to_string(kDecimation);
+  info.hardware_parameters["state_timeout_ms"] = std::to_string(kTimeoutMs);
+  if (!setup(rig, info) || !activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  const ControllerCommand cmd = distinct_command(6);
+  int ticks = 0, held = 0;
+  CommandFrame c;
+  for (uint32_t k = 0; k < 40; ++k) {
+    rig.t.deliver_state(coded_state(300 + k));
+    rig.hw->read(kTime, kPeriod);
+    apply_command(rig.ifs, cmd);
+    rig.hw->write(kTime, kPeriod);
+    rig.t.tick_writer();
+    if (k >= 2 && rig.t.last_command(c)) {  // frame 0 seeds, frame 1's write() is the layer-3 hold
+      const Joint& j = kJoints[0];
+      const bool holding = c.has_gains ? c.kp[j.slot] == 0.0 : (c.dq[j.slot] == 0.0 && c.tau[j.slot] == 0.0);
+      ++ticks;
+      held += holding ? 1 : 0;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(kFramePeriodMs));
+  }
+  std::printf("decimation %d, state_timeout_ms %d, a frame every %d ms: held in %d of %d writer cycles\n", kDecimation,
+              kTimeoutMs, kFramePeriodMs, held, ticks);
+  // A scheduling hiccup may hold a cycle now and then; a driver that ignores decimated frames
+  // holds about a third of them.
+  CHECK(held * 10 <= ticks, "frames keep arriving (decimated): the writer held %d of %d cycles as if state were stale",
+        held, ticks);
+
+  // But decimated frames must not hide a bad stream: after a processed frame is rejected (NaN),
+  // the skipped frames that follow do not keep the state fresh. Frame 40 is processed (40 % 8 == 0).
+  auto hold_after = [&](const StateFrame& f) {
+    rig.t.deliver_state(f);
+    rig.hw->read(kTime, kPeriod);
+    apply_command(rig.ifs, cmd);
+    rig.hw->write(kTime, kPeriod);
+    rig.t.tick_writer();
+    rig.t.last_command(c);
+    const Joint& j = kJoints[0];
+    return c.has_gains ? c.kp[j.slot] == 0.0 : (c.dq[j.slot] == 0.0 && c.tau[j.slot] == 0.0);
+  };
+  StateFrame bad = coded_state(340);
+  bad.q[kJoints[0].slot] = std::numeric_limits<double>::quiet_NaN();
+  hold_after(bad);
+  std::this_thread::sleep_for(std::chrono::milliseconds(kFramePeriodMs));
+  bool last_held = false;
+  for (uint32_t k = 41; k < 48; ++k) {  // skipped frames, 7 x 12 ms > 60 ms
+    last_held = hold_after(coded_state(300 + k));
+    std::this_thread::sleep_for(std::chrono::milliseconds(kFramePeriodMs));
+  }
+  CHECK(last_held, "after a rejected frame, decimated frames alone do not keep the state fresh (writer holds)");
+  CHECK(!hold_after(coded_state(348)), "the next processed valid frame makes the state fresh again");
+  teardown(rig);
+}
+
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+// ================================================================ CRC (reference and generated)
+void test_crc_functions() {
+  rhi_check::Section section("crc");
+  using LowCmd = Transport::LowCmd;
+  using LowState = Transport::LowState;
+  // The reference reproduces the test vectors of SDK_FACTS.md.
+  static const uint32_t zeros[522] = {};
+  CHECK_EQ(rhi_ref::Crc32Core(zeros, 250), 0xFE172F9FU, "reference: 250 zero words");
+  CHECK_EQ(rhi_ref::Crc32Core(zeros, 522), 0xD64BB04AU, "reference: 522 zero words");
+  LowCmd vector_cmd{};
+  vector_cmd.mode_machine() = 5;
+  for (auto& m : vector_cmd.motor_cmd()) {
+    m.mode() = 1;
+  }
+  CHECK_EQ(rhi_ref::low_cmd_crc(vector_cmd), 0x77176F39U, "reference: LowCmd mode_machine=5, every mode=1");
+  // The generated CRC agrees with them.
+  CHECK_EQ(rhi_probe_low_cmd_crc(LowCmd{}), 0xFE172F9FU, "generated: zero LowCmd_");
+  CHECK_EQ(rhi_probe_low_state_crc(LowState{}), 0xD64BB04AU, "generated: zero LowState_");
+  CHECK_EQ(rhi_probe_low_cmd_crc(vector_cmd), 0x77176F39U, "generated: LowCmd mode_machine=5, every mode=1");
+
+  // Every field counts: changing any one changes the CRC, and generated = reference.
+  LowCmd base = vector_cmd;
+  for (size_t i = 0; i < 35; ++i) {
+    auto& m = base.motor_cmd()[i];
+    m.q() = 0.1F * i;
+    m.dq() = -0.2F * i;
+    m.tau() = 0.3F;
+    m.kp() = 40.0F + i;
+    m.kd() = 1.5F;
+    m.reserve() = 7U + i;
+  }
+  base.reserve() = {1U, 2U, 3U, 4U};
+  const std::vector<std::pair<const char*, std::function<void(LowCmd&)>>> cmd_fields = {
+      {"mode_pr", [](LowCmd& m) { m.mode_pr() = 1; }},
+      {"mode_machine", [](LowCmd& m) { m.mode_machine() = 6; }},
+      {"motor_cmd[0].mode", [](LowCmd& m) { m.motor_cmd()[0].mode() = 0; }},
+      {"motor_cmd[0].q", [](LowCmd& m) { m.motor_cmd()[0].q() += 1.0F; }},
+      {"motor_cmd[17].dq", [](LowCmd& m) { m.motor_cmd()[17].dq() += 1.0F; }},
+      {"motor_cmd[28].tau", [](LowCmd& m) { m.motor_cmd()[28].tau() += 1.0F; }},
+      {"motor_cmd[5].kp", [](LowCmd& m) { m.motor_cmd()[5].kp() += 1.0F; }},
+      {"motor_cmd[6].kd", [](LowCmd& m) { m.motor_cmd()[6].kd() += 1.0F; }},
+      {"motor_cmd[34].q", [](LowCmd& m) { m.motor_cmd()[34].q() = 3.0F; }},
+      {"motor_cmd[9].reserve", [](LowCmd& m) { m.motor_cmd()[9].reserve() ^= 0x80000000U; }},
+      {"reserve[0]", [](LowCmd& m) { m.reserve()[0] ^= 1U; }},
+      {"reserve[3]", [](LowCmd& m) { m.reserve()[3] ^= 0x100U; }},
+  };
+  const uint32_t base_crc = rhi_probe_low_cmd_crc(base);
+  CHECK_EQ(base_crc, rhi_ref::low_cmd_crc(base), "generated = reference for a LowCmd_ with every field set");
+  for (const auto& [field, change] : cmd_fields) {
+    LowCmd m = base;
+    change(m);
+    CHECK(rhi_probe_low_cmd_crc(m) != base_crc, "LowCmd_ CRC covers %s", field);
+    CHECK_EQ(rhi_probe_low_cmd_crc(m), rhi_ref::low_cmd_crc(m), "generated = reference after changing %s", field);
+  }
+  LowCmd with_crc = base;
+  with_crc.crc() = 0xDEADBEEFU;
+  CHECK_EQ(rhi_probe_low_cmd_crc(with_crc), base_crc, "the crc field itself is not part of the CRC");
+
+  Transport filler;
+  filler.prepare_state(distinct_state(0));
+  const LowState state_base = filler.prepared();
+  const std::vector<std::pair<const char*, std::function<void(LowState&)>>> state_fields = {
+      {"version[1]", [](LowState& m) { m.version()[1] ^= 1U; }},
+      {"mode_pr", [](LowState& m) { m.mode_pr() ^= 1U; }},
+      {"mode_machine", [](LowState& m) { m.mode_machine() ^= 1U; }},
+      {"tick", [](LowState& m) { m.tick() += 1U; }},
+      {"imu_state.quaternion[3]", [](LowState& m) { m.imu_state().quaternion()[3] += 1.0F; }},
+      {"imu_state.gyroscope[0]", [](LowState& m) { m.imu_state().gyroscope()[0] += 1.0F; }},
+      {"imu_state.accelerometer[2]", [](LowState& m) { m.imu_state().accelerometer()[2] += 1.0F; }},
+      {"imu_state.rpy[1]", [](LowState& m) { m.imu_state().rpy()[1] += 1.0F; }},
+      {"imu_state.temperature", [](LowState& m) { m.imu_state().temperature() += 1; }},
+      {"motor_state[0].mode", [](LowState& m) { m.motor_state()[0].mode() ^= 1U; }},
+      {"motor_state[1].q", [](LowState& m) { m.motor_state()[1].q() += 1.0F; }},
+      {"motor_state[2].dq", [](LowState& m) { m.motor_state()[2].dq() += 1.0F; }},
+      {"motor_state[3].ddq", [](LowState& m) { m.motor_state()[3].ddq() += 1.0F; }},
+      {"motor_state[4].tau_est", [](LowState& m) { m.motor_state()[4].tau_est() += 1.0F; }},
+      {"motor_state[5].temperature[1]", [](LowState& m) { m.motor_state()[5].temperature()[1] += 1; }},
+      {"motor_state[6].vol", [](LowState& m) { m.motor_state()[6].vol() += 1.0F; }},
+      {"motor_state[7].sensor[1]", [](LowState& m) { m.motor_state()[7].sensor()[1] ^= 1U; }},
+      {"motor_state[8].motorstate", [](LowState& m) { m.motor_state()[8].motorstate() ^= 1U; }},
+      {"motor_state[34].reserve[3]", [](LowState& m) { m.motor_state()[34].reserve()[3] ^= 1U; }},
+      {"wireless_remote[39]", [](LowState& m) { m.wireless_remote()[39] ^= 1U; }},
+      {"reserve[3]", [](LowState& m) { m.reserve()[3] ^= 1U; }},
+  };
+  const uint32_t state_crc = rhi_probe_low_state_crc(state_base);
+  CHECK_EQ(state_crc, rhi_ref::low_state_crc(state_base), "generated = reference for a LowState_ with every field set");
+  for (const auto& [field, change] : state_fields) {
+    LowState m = state_base;
+    change(m);
+    CHECK(rhi_probe_low_state_crc(m) != state_crc, "LowState_ CRC covers %s", field);
+    CHECK_EQ(rhi_probe_low_state_crc(m), rhi_ref::low_state_crc(m), "generated = reference after changing %s", field);
+  }
+}
+#endif
+
+// ================================================================ threads
+// Real threads: the SDK's recurrent writer thread / the driver's executor thread with real-time
+// timers, a producer thread delivering state frames, the controller loop on this thread and a
+// monitor thread reading what the robot received. Every frame encodes one code in every joint's
+// position; a frame mixing codes within one consistency group is torn.
+bool consistent_group(const std::array<double, N>& q, const std::array<bool, N>* present, size_t group, int* code) {
+  int first = -1;
+  for (const Joint& j : kJoints) {
+    if (j.group != group || !position_range(j).usable()) {
+      continue;
+    }
+    if (present != nullptr && !(*present)[j.slot]) {
+      return false;
+    }
+    const int d = decode_position(j, q[j.slot]);
+    if (first < 0) {
+      first = d;
+    } else if (d != first) {
+      return false;
+    }
+  }
+  if (code != nullptr) {
+    *code = first;
+  }
+  return true;
+}
+
+void test_threads(int duration_ms) {
+  rhi_check::Section section("threads");
+  fresh_process();
+  Rig rig;
+  rig.t.use_real_threads(true);
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["state_timeout_ms"] = "2000";  // sanitizers slow everything down
+  if (!setup(rig, info) || !activate(rig)) {
+    teardown(rig);
+    rig.t.use_real_threads(false);
+    return;
+  }
+  std::atomic<bool> stop{false};
+  std::atomic<uint64_t> produced{0}, commands_seen{0}, torn_commands{0}, crc_errors{0};
+  std::thread producer([&] {
+    Transport t;
+    for (uint32_t code = 1; !stop.load(); ++code) {
+      const StateFrame f = coded_state(code);
+      t.deliver_state(f);
+      t.deliver_imu(f);
+      produced.fetch_add(1);
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+    }
+  });
+  std::thread monitor([&] {
+    Transport t;
+    CommandFrame c;
+    while (!stop.load()) {
+      if (t.last_command(c)) {
+        commands_seen.fetch_add(1);
+        for (size_t g = 0; g < kGroupCount; ++g) {
+          if (!consistent_group(c.q, &c.present, g, nullptr)) {
+            torn_commands.fetch_add(1);
+          }
+        }
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+        if (t.last_raw_command().crc() != rhi_ref::low_cmd_crc(t.last_raw_command())) {
+          crc_errors.fetch_add(1);
+        }
+#endif
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(700));
+    }
+  });
+  uint64_t cycles = 0, states_seen = 0, torn_states = 0;
+  uint32_t code = 500;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
+  ControllerCommand cmd;
+  while (std::chrono::steady_clock::now() < end) {
+    rig.hw->read(kTime, kPeriod);
+    std::array<double, N> q{};
+    bool any = false;
+    for (size_t k = 0; k < kJointCount; ++k) {
+      q[kJoints[k].slot] = rig.ifs.pos[k]->get_value();
+      any = any || q[kJoints[k].slot] != 0.0;
+    }
+    if (any) {
+      ++states_seen;
+      for (size_t g = 0; g < kGroupCount; ++g) {
+        torn_states += consistent_group(q, nullptr, g, nullptr) ? 0U : 1U;
+      }
+    }
+    for (const Joint& j : kJoints) {
+      cmd.q[j.slot] = encode_position(j, code);
+      cmd.dq[j.slot] = 0.0;
+      cmd.kp[j.slot] = 1.0 + (code % 7);
+      cmd.kd[j.slot] = 0.5;
+      cmd.ff[j.slot] = 0.0;
+    }
+    apply_command(rig.ifs, cmd);
+    rig.hw->write(kTime, kPeriod);
+    ++code;
+    ++cycles;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  deactivate(rig);  // stops the writer thread while the producer still delivers
+  stop.store(true);
+  producer.join();
+  monitor.join();
+  teardown(rig);
+  rig.t.use_real_threads(false);
+  std::printf("threads: %d ms, %" PRIu64 " state frames produced, %" PRIu64 " controller cycles (%" PRIu64
+              " with state), %" PRIu64 " commands observed; torn states %" PRIu64 ", torn commands %" PRIu64
+              ", bad CRCs %" PRIu64 "\n",
+              duration_ms, produced.load(), cycles, states_seen, commands_seen.load(), torn_states,
+              torn_commands.load(), crc_errors.load());
+  CHECK(produced.load() > 10, "the producer delivered state frames");
+  CHECK(states_seen > 5, "read() saw state while threads ran");
+  CHECK(commands_seen.load() > 5, "the robot received commands while threads ran");
+  CHECK_EQ(torn_states, 0U, "torn state frames seen by read()");
+  CHECK_EQ(torn_commands.load(), 0U, "torn command frames received by the robot");
+  CHECK_EQ(crc_errors.load(), 0U, "commands with a wrong CRC");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int threads_ms = 300;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strncmp(argv[i], "--threads-ms=", 13) == 0) {
+      threads_ms = std::atoi(argv[i] + 13);
+    }
+  }
+  std::printf("robot %s: transport %s, %zu SDK slots, %zu mapped joints, SDK float type %s, plugin %s\n",
+              kRobotLabel, Transport::kName, N, kJointCount, kFloatName, kPluginType);
+  try {
+    test_interfaces();
+    test_main_scenario();
+    test_parameters();
+    test_decimation_keeps_state_fresh();
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+    test_crc_functions();
+#endif
+    test_threads(threads_ms);
+  } catch (const std::exception& e) {
+    CHECK(false, "uncaught exception: %s", e.what());
+  }
+  rhi_fake::reset_all();
+  return rhi_check::summary();
+}

@@ -1,0 +1,284 @@
+// Shared pieces of the driver harness: frames exchanged with the fake robot, value encodings,
+// the HardwareInfo built from the generated ros2_control description, interface lookup.
+//
+// robot_data.hpp (written per robot by tests/cpp_build.py) provides namespace rhi_data: the
+// expected joint -> SDK slot table read from the vendor YAML (NOT from the generated
+// jointIndexMap), limits from the URDF, transport topics, parameter defaults and kInfoRecords,
+// the <ros2_control> block of the expanded xacro.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <hardware_interface/handle.hpp>
+#include <hardware_interface/hardware_info.hpp>
+
+#include "robot_data.hpp"
+
+namespace rhi_test {
+
+using namespace rhi_data;  // NOLINT: the per-robot tables
+
+constexpr size_t N = kMotorCount;
+
+// What the fake robot reports, per SDK slot (values already representable in SdkFloat).
+struct StateFrame {
+  std::array<double, N> q{};
+  std::array<double, N> dq{};
+  std::array<double, N> tau{};
+  std::array<double, 4> quat_wxyz{1.0, 0.0, 0.0, 0.0};
+  std::array<double, 3> gyro{};
+  std::array<double, 3> acc{};
+  uint8_t mode_machine{5};
+  uint32_t sequence{0};
+};
+
+// What the fake robot received, per SDK slot.
+struct CommandFrame {
+  std::array<double, N> q{};
+  std::array<double, N> dq{};
+  std::array<double, N> tau{};
+  std::array<double, N> kp{};
+  std::array<double, N> kd{};
+  std::array<bool, N> present{};  // the message carried this slot
+  bool has_gains{true};           // sensor_msgs/JointState carries no kp/kd
+};
+
+inline double sdk(double v) { return static_cast<double>(static_cast<SdkFloat>(v)); }
+
+// The joint the YAML maps to `slot`, or nullptr.
+inline const Joint* joint_of_slot(size_t slot) {
+  for (const Joint& j : kJoints) {
+    if (j.slot == slot) {
+      return &j;
+    }
+  }
+  return nullptr;
+}
+
+// A position range inside the URDF limits (continuous joints: [-1, 1]).
+struct Range {
+  double lo;
+  double hi;
+  bool usable() const { return hi - lo > 1e-6; }
+};
+inline Range position_range(const Joint& j) {
+  Range r{std::isfinite(j.lower) ? j.lower : -1.0, std::isfinite(j.upper) ? j.upper : 1.0};
+  return r;
+}
+
+// Distinct position per slot, inside the joint's limits; unmapped slots get 1000 + slot.
+inline double distinct_position(size_t slot, uint32_t frame) {
+  const Joint* j = joint_of_slot(slot);
+  if (j == nullptr) {
+    return sdk(1000.0 + static_cast<double>(slot) + 0.5 * frame);
+  }
+  const Range r = position_range(*j);
+  const double f = (static_cast<double>(slot) + 1.0 + 0.37 * (frame % 2)) / (static_cast<double>(N) + 2.0);
+  return sdk(r.lo + (r.hi - r.lo) * f);
+}
+
+inline StateFrame distinct_state(uint32_t frame) {
+  StateFrame s;
+  for (size_t i = 0; i < N; ++i) {
+    s.q[i] = distinct_position(i, frame);
+    s.dq[i] = sdk(10.0 + 0.5 * static_cast<double>(i) + 100.0 * frame);
+    s.tau[i] = sdk(-20.0 - 0.25 * static_cast<double>(i) - 100.0 * frame);
+  }
+  // Distinct, exactly representable in float: a w/x/y/z mix-up cannot go unnoticed.
+  s.quat_wxyz = {0.5, -0.25, 0.125, 0.8125};
+  s.gyro = {1.5, -2.5, 3.25 + frame};
+  s.acc = {0.375, 9.8125, -4.5 - frame};
+  s.sequence = frame;
+  return s;
+}
+
+// Consistency code used by the threaded scenario: every joint of a frame encodes the same j.
+constexpr int kCodes = 1000;
+inline double encode_position(const Joint& j, uint32_t code) {
+  const Range r = position_range(j);
+  return sdk(r.lo + (r.hi - r.lo) * ((code % kCodes) + 0.5) / kCodes);
+}
+inline int decode_position(const Joint& j, double v) {
+  const Range r = position_range(j);
+  return static_cast<int>(std::floor((v - r.lo) / (r.hi - r.lo) * kCodes));
+}
+
+inline StateFrame coded_state(uint32_t code) {
+  StateFrame s = distinct_state(0);
+  for (const Joint& j : kJoints) {
+    s.q[j.slot] = encode_position(j, code);
+  }
+  s.sequence = code;
+  return s;
+}
+
+// ---------------------------------------------------------------- HardwareInfo
+inline hardware_interface::HardwareInfo make_hardware_info() {
+  hardware_interface::HardwareInfo info;
+  hardware_interface::ComponentInfo* component = nullptr;
+  for (const InfoRecord& r : kInfoRecords) {
+    switch (r.kind) {
+      case 'N':  // <ros2_control name type>
+        info.name = r.a;
+        info.type = r.b;
+        break;
+      case 'L':  // <plugin>
+        info.hardware_class_type = r.a;
+        break;
+      case 'H':  // <hardware><param>
+        info.hardware_parameters[r.a] = r.b;
+        break;
+      case 'J':  // <joint>
+        info.joints.emplace_back();
+        component = &info.joints.back();
+        component->name = r.a;
+        component->type = "joint";
+        break;
+      case 'S':  // <sensor>
+        info.sensors.emplace_back();
+        component = &info.sensors.back();
+        component->name = r.a;
+        component->type = "sensor";
+        break;
+      case 'C': {  // <command_interface> (+ min/max params)
+        hardware_interface::InterfaceInfo i;
+        i.name = r.a;
+        i.min = r.b;
+        i.max = r.c;
+        i.size = 1;
+        component->command_interfaces.push_back(i);
+        break;
+      }
+      case 'T': {  // <state_interface>
+        hardware_interface::InterfaceInfo i;
+        i.name = r.a;
+        i.size = 1;
+        component->state_interfaces.push_back(i);
+        break;
+      }
+      case 'P':  // component <param>
+        component->parameters[r.a] = r.b;
+        break;
+      default:
+        break;
+    }
+  }
+  return info;
+}
+
+// ---------------------------------------------------------------- exported interfaces
+constexpr std::array<const char*, 10> kImuInterfaces = {
+    "orientation.x",      "orientation.y",      "orientation.z",        "orientation.w",
+    "angular_velocity.x", "angular_velocity.y", "angular_velocity.z",   "linear_acceleration.x",
+    "linear_acceleration.y", "linear_acceleration.z"};
+constexpr std::array<const char*, 3> kJointStates = {"position", "velocity", "effort"};
+constexpr std::array<const char*, 5> kJointCommands = {"position", "velocity", "stiffness", "damping",
+                                                       "effort"};
+
+struct Interfaces {
+  std::vector<hardware_interface::StateInterface> states;
+  std::vector<hardware_interface::CommandInterface> commands;
+  // per kJoints entry (nullptr when missing)
+  std::vector<const hardware_interface::StateInterface*> pos, vel, eff;
+  std::vector<hardware_interface::CommandInterface*> cpos, cvel, ckp, ckd, cff;
+  std::array<const hardware_interface::StateInterface*, 10> imu{};
+
+  void index() {
+    pos.assign(kJointCount, nullptr);
+    vel.assign(kJointCount, nullptr);
+    eff.assign(kJointCount, nullptr);
+    cpos.assign(kJointCount, nullptr);
+    cvel.assign(kJointCount, nullptr);
+    ckp.assign(kJointCount, nullptr);
+    ckd.assign(kJointCount, nullptr);
+    cff.assign(kJointCount, nullptr);
+    imu.fill(nullptr);
+    for (const auto& s : states) {
+      for (size_t k = 0; k < kJointCount; ++k) {
+        if (s.get_prefix_name() != kJoints[k].name) {
+          continue;
+        }
+        const std::string& n = s.get_interface_name();
+        if (n == "position") pos[k] = &s;
+        if (n == "velocity") vel[k] = &s;
+        if (n == "effort") eff[k] = &s;
+      }
+      if (kImuEnabled && s.get_prefix_name() == kImuName) {
+        for (size_t i = 0; i < kImuInterfaces.size(); ++i) {
+          if (s.get_interface_name() == kImuInterfaces[i]) imu[i] = &s;
+        }
+      }
+    }
+    for (auto& c : commands) {
+      for (size_t k = 0; k < kJointCount; ++k) {
+        if (c.get_prefix_name() != kJoints[k].name) {
+          continue;
+        }
+        const std::string& n = c.get_interface_name();
+        if (n == "position") cpos[k] = &c;
+        if (n == "velocity") cvel[k] = &c;
+        if (n == "stiffness") ckp[k] = &c;
+        if (n == "damping") ckd[k] = &c;
+        if (n == "effort") cff[k] = &c;
+      }
+    }
+  }
+
+  bool complete() const {
+    for (size_t k = 0; k < kJointCount; ++k) {
+      if (!pos[k] || !vel[k] || !eff[k] || !cpos[k] || !cvel[k] || !ckp[k] || !ckd[k] || !cff[k]) {
+        return false;
+      }
+    }
+    if (kImuEnabled) {
+      for (const auto* i : imu) {
+        if (!i) return false;
+      }
+    }
+    return true;
+  }
+};
+
+// Values a controller writes: distinct per joint, inside the URDF limits, NOT representable in
+// float (so a float SDK visibly rounds them and a double SDK must not).
+struct ControllerCommand {
+  std::array<double, N> q{}, dq{}, kp{}, kd{}, ff{};
+};
+inline ControllerCommand distinct_command(uint32_t variant) {
+  ControllerCommand c;
+  for (const Joint& j : kJoints) {
+    const size_t s = j.slot;
+    const Range r = position_range(j);
+    c.q[s] = r.lo + (r.hi - r.lo) * (0.1 + 0.8 * (static_cast<double>(s) + 0.5) / static_cast<double>(N)) +
+             1e-9 * (variant + 1);
+    const double v = std::isfinite(j.velocity) && j.velocity > 0 ? 0.5 * j.velocity : 1.0;
+    c.dq[s] = v * (0.1 + 0.01 * static_cast<double>(s)) * ((s % 2) != 0U ? -1.0 : 1.0) + 1e-9;
+    c.kp[s] = 10.1 + static_cast<double>(s) + variant;
+    c.kd[s] = 0.7 + 0.03 * static_cast<double>(s) + 0.001 * variant;
+    const double e = std::isfinite(j.effort) && j.effort > 0 ? 0.5 * j.effort : 1.0;
+    c.ff[s] = e * (0.05 + 0.01 * static_cast<double>(s)) * ((s % 3) == 0U ? -1.0 : 1.0) + 1e-9;
+  }
+  return c;
+}
+
+inline void apply_command(Interfaces& ifs, const ControllerCommand& c) {
+  for (size_t k = 0; k < kJointCount; ++k) {
+    const size_t s = kJoints[k].slot;
+    if (ifs.cpos[k]) ifs.cpos[k]->set_value(c.q[s]);
+    if (ifs.cvel[k]) ifs.cvel[k]->set_value(c.dq[s]);
+    if (ifs.ckp[k]) ifs.ckp[k]->set_value(c.kp[s]);
+    if (ifs.ckd[k]) ifs.ckd[k]->set_value(c.kd[s]);
+    if (ifs.cff[k]) ifs.cff[k]->set_value(c.ff[s]);
+  }
+}
+
+}  // namespace rhi_test

@@ -1,0 +1,246 @@
+"""Every generated driver compiles with g++ -Werror and runs correctly against a simulated robot.
+
+For every robot of robots/ (and the harness's test-only generic_topics robot, tests/cpp/harness/robots/)
+the package is rendered into a temporary folder, then:
+
+* each common header (and the unitree CRC header) compiles on its own, twice included, with
+  -std=c++17 -Wall -Wextra -Wpedantic -Werror; so does each robot's driver header;
+* the ros2_control description, expanded by xacro as a user includes it, lists exactly the YAML's
+  mapped joints with their interfaces, the IMU sensor, and a plugin the plugin descriptor exports;
+* the driver is compiled with -Werror in three flavours (plain -O2, ASan+UBSan, TSan) and linked into
+  tests/cpp/harness/driver_harness.cpp, which creates it through pluginlib's registry and checks, per
+  section: interfaces, safety (the three layers, re-armed on re-activation), joint_map, imu, commands
+  (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
+  SDK_FACTS.md vectors, every field, bad frames dropped), parameters (description values, defaults,
+  overrides, invalid values), decimation, allocations (zero in read/write/callbacks/writer after
+  warm-up) and threads (real writer/executor threads, no torn frames);
+* sanitizer runs must print no report.
+
+The checks are counted by the harness; the counts per robot, flavour and section, the sanitizer and
+allocation results and the timings are printed at the end and written to tests/.cpp_report.txt.
+A missing g++ fails these tests (never a skip).
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+from tests.cpp_build import (FLAVOURS, PACKAGE, STANDINS_INCLUDE, WARNING_FLAGS, build_harness,
+                             crc_header, expand_description, plugin_types, project_robot_labels, require_compiler,
+                             run_binary_retrying, run_parallel, session_builder, session_reference_package,
+                             yaml_joint_map)
+
+ROBOTS = project_robot_labels()
+REPORT = Path(__file__).resolve().parent / ".cpp_report.txt"
+SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "crc", "parameters",
+                 "decimation", "allocations", "threads")
+THREADS_MS = 300
+
+_TIMES: dict[str, float] = {}
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    start = time.monotonic()
+    package = session_reference_package(tmp_path_factory)
+    _TIMES["render"] = time.monotonic() - start
+    return package
+
+
+@pytest.fixture(scope="module")
+def harness_binaries(reference, tmp_path_factory):
+    """{(robot, flavour): (link result, [compile results])}, built in parallel, each once."""
+    builder = session_builder(tmp_path_factory)
+    jobs = [(b, flavour) for b in reference.builds for flavour in FLAVOURS]
+    start = time.monotonic()
+    results = run_parallel(jobs, lambda job: build_harness(builder, *job))
+    _TIMES["build"] = time.monotonic() - start
+    return {(b.label, flavour): result for (b, flavour), result in zip(jobs, results)}
+
+
+@pytest.fixture(scope="module")
+def harness_runs(harness_binaries):
+    """{(robot, flavour): HarnessRun} for every binary that linked; two at a time."""
+    linked = [(key, link.path) for key, (link, _) in harness_binaries.items() if link.ok]
+    start = time.monotonic()
+    runs = run_parallel(linked, lambda item: run_binary_retrying(item[1], [f"--threads-ms={THREADS_MS}"]), workers=2)
+    _TIMES["run"] = time.monotonic() - start
+    return {key: run for (key, _), run in zip(linked, runs)}
+
+
+def _robot(reference, label):
+    return reference.build(label)
+
+
+# ------------------------------------------------------------------------------------ coverage
+def test_every_robot_of_the_project_gets_a_harness(reference):
+    """robots/ as it is on disk (so a robot a user adds is covered), plus the test-only robots."""
+    assert [b.label for b in reference.builds] == ROBOTS
+    for label in ("unitree/g1", "agibot/x2", "engineai/pm01"):
+        assert label in ROBOTS, f"reference robot {label} is missing from robots/"
+    transports = {b.model.transport for b in reference.builds}
+    assert transports == {"unitree_dds", "agibot_topics", "engineai_topics", "generic_topics"}, transports
+
+
+# ------------------------------------------------------------------------------------ headers alone
+def _headers_alone(reference) -> list[Path]:
+    include = reference.package_dir / "include" / PACKAGE
+    headers = sorted((include / "common").glob("*.hpp"))
+    crc = crc_header(reference.package_dir)
+    return headers + ([crc] if crc else [])
+
+
+def test_common_headers_compile_on_their_own(reference, tmp_path):
+    cxx = require_compiler()
+    include = reference.package_dir / "include"
+    headers = _headers_alone(reference)
+    names = {h.name for h in headers}
+    assert {"data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp"} <= names, names
+
+    def compile_one(header: Path):
+        rel = header.relative_to(include).as_posix()
+        src = tmp_path / f"alone_{header.stem}.cpp"
+        # Twice: the include guard / #pragma once works; alone: it includes what it uses.
+        src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
+        proc = subprocess.run([cxx, *WARNING_FLAGS, "-Wpedantic", "-fsyntax-only", f"-I{include}",
+                               f"-I{STANDINS_INCLUDE}", str(src)], capture_output=True, text=True)
+        return rel, proc
+
+    failures = [f"{rel}:\n{proc.stderr[:3000]}" for rel, proc in run_parallel(headers, compile_one)
+                if proc.returncode != 0]
+    assert not failures, "\n".join(failures)
+
+
+@pytest.mark.parametrize("label", ROBOTS)
+def test_driver_header_compiles_on_its_own(reference, label, tmp_path):
+    cxx = require_compiler()
+    b = _robot(reference, label)
+    rel = f"{PACKAGE}/{b.model.vendor}/{b.model.robot}.hpp"
+    src = tmp_path / "alone.cpp"
+    src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
+    proc = subprocess.run([cxx, *WARNING_FLAGS, "-Wpedantic", "-fsyntax-only",
+                           f"-I{reference.package_dir / 'include'}", f"-I{STANDINS_INCLUDE}", str(src)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, f"{rel} does not compile on its own:\n{proc.stderr[:4000]}"
+
+
+# ------------------------------------------------------------------------------------ description
+@pytest.mark.parametrize("label", ROBOTS)
+def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path):
+    b = _robot(reference, label)
+    joint_map = yaml_joint_map(b.loaded.yaml_path)
+    d = expand_description(reference.package_dir, b.model.robot, tmp_path)
+    names = [j["name"] for j in d.joints]
+    assert len(names) == len(set(names)), f"a joint is described twice: {names}"
+    assert set(names) == set(joint_map), \
+        f"description joints must be exactly the YAML's mapped joints: {sorted(set(names) ^ set(joint_map))}"
+    for j in d.joints:
+        assert [c for c, _ in j["command_interfaces"]] == ["position", "velocity", "stiffness", "damping",
+                                                          "effort"], j["name"]
+        assert j["state_interfaces"] == ["position", "velocity", "effort"], j["name"]
+    if b.model.imu.enabled:
+        assert [s["name"] for s in d.sensors] == [b.model.imu.name]
+        assert d.sensors[0]["state_interfaces"] == [
+            "orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
+            "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
+            "linear_acceleration.z"]
+    assert d.plugin == b.model.plugin_name
+    assert plugin_types(reference.package_dir).get(d.plugin) == f"{b.model.vendor}::{b.model.class_name}"
+    params = b.model.parameters
+    assert d.parameters["command_writer_period_us"] == str(params.command_writer_period_us)
+    assert d.parameters["state_decimation"] == str(params.state_decimation)
+    assert d.parameters["enable_monitor"] == ("true" if params.enable_monitor else "false")
+
+
+# ------------------------------------------------------------------------------------ compile
+@pytest.mark.parametrize("flavour", list(FLAVOURS))
+@pytest.mark.parametrize("label", ROBOTS)
+def test_driver_compiles_with_werror(harness_binaries, label, flavour):
+    link, steps = harness_binaries[(label, flavour)]
+    driver = steps[0]
+    assert driver.ok, (f"{label} driver does not compile ({flavour}, -Wall -Wextra -Werror):\n"
+                       f"{' '.join(driver.command)}\n{driver.stderr[:6000]}")
+    for step in steps[1:]:
+        assert step.ok, f"{label} harness part does not compile ({flavour}):\n{step.stderr[:6000]}"
+    assert link.ok, f"{label} harness does not link ({flavour}):\n{link.stderr[:6000]}"
+
+
+# ------------------------------------------------------------------------------------ run
+@pytest.mark.parametrize("flavour", list(FLAVOURS))
+@pytest.mark.parametrize("label", ROBOTS)
+def test_driver_against_simulated_robot(harness_runs, harness_binaries, reference, label, flavour):
+    link, _ = harness_binaries[(label, flavour)]
+    assert link.ok, f"{label} ({flavour}) did not build: see test_driver_compiles_with_werror"
+    run = harness_runs[(label, flavour)]
+    reports = run.sanitizer_reports()
+    assert not reports, f"{label} ({flavour}): sanitizer reports:\n" + "\n".join(reports[:20]) + \
+        f"\n{run.stderr[-6000:]}"
+    assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{label} ({flavour}): {run.describe()}"
+    expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "parameters",
+                "decimation", "allocations", "threads"}
+    if _robot(reference, label).model.transport == "unitree_dds":
+        expected.add("crc")
+    missing = expected - set(run.sections)
+    assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
+
+
+@pytest.mark.parametrize("label", ROBOTS)
+def test_hot_paths_allocate_nothing(harness_runs, label):
+    run = harness_runs.get((label, "plain"))
+    assert run is not None, f"{label}: plain harness did not build"
+    m = re.search(r"^allocations over (\d+) cycles: state callback (\d+), IMU callback (\d+), read\(\) (\d+), "
+                  r"write\(\) (\d+), command writer (\d+)$", run.stdout, re.M)
+    assert m, f"{label}: no allocation line in the harness output:\n{run.stdout[-3000:]}"
+    counts = dict(zip(("state callback", "IMU callback", "read()", "write()", "command writer"),
+                      map(int, m.groups()[1:])))
+    assert all(v == 0 for v in counts.values()), f"{label}: heap allocations after activation: {counts}"
+
+
+@pytest.mark.parametrize("flavour", ["tsan", "asan_ubsan"])
+@pytest.mark.parametrize("label", ROBOTS)
+def test_no_torn_frames_with_real_threads(harness_runs, label, flavour):
+    run = harness_runs.get((label, flavour))
+    assert run is not None, f"{label}: {flavour} harness did not build"
+    m = re.search(r"torn states (\d+), torn commands (\d+), bad CRCs (\d+)", run.stdout)
+    assert m, f"{label} ({flavour}): the threaded scenario did not report:\n{run.stdout[-3000:]}"
+    assert m.groups() == ("0", "0", "0"), f"{label} ({flavour}): {m.group(0)}"
+
+
+# ------------------------------------------------------------------------------------ report
+def test_report(harness_runs, harness_binaries, reference, capsys):
+    """Print and save the counts (always passes once the runs exist; the assertions are above)."""
+    lines = ["C++ driver harness (tests/test_cpp_drivers.py)", ""]
+    for label in ROBOTS:
+        b = _robot(reference, label)
+        lines.append(f"{label}: {b.model.transport}, {b.model.motor_count} SDK slots, "
+                     f"{len(b.model.joints)} mapped joints, {b.model.float_type}")
+        for flavour in FLAVOURS:
+            run = harness_runs.get((label, flavour))
+            link, steps = harness_binaries[(label, flavour)]
+            compile_s = sum(s.seconds for s in steps) + link.seconds
+            if run is None:
+                lines.append(f"  {flavour:10s} BUILD FAILED")
+                continue
+            sections = ", ".join(f"{name} {run.sections[name][0]}" + (f"/{run.sections[name][1]} FAILED"
+                                                                        if run.sections[name][1] else "")
+                                 for name in SECTION_ORDER if name in run.sections)
+            sanitizer = "no sanitizer reports" if not run.sanitizer_reports() else \
+                f"{len(run.sanitizer_reports())} SANITIZER REPORT LINES"
+            lines.append(f"  {flavour:10s} exit {run.returncode}: {run.passed} passed, {run.failed} failed "
+                         f"({sanitizer}; compile {compile_s:.1f}s, run {run.seconds:.1f}s)")
+            lines.append(f"             {sections}")
+            for prefix in ("allocations over", "threads:", "decimation"):
+                for line in run.stdout.splitlines():
+                    if line.startswith(prefix) and flavour in ("plain", "tsan"):
+                        lines.append(f"             {line}")
+    lines.append("")
+    lines.append(f"times: render {_TIMES.get('render', 0):.1f}s, build (parallel) {_TIMES.get('build', 0):.1f}s, "
+                 f"run (2 at a time) {_TIMES.get('run', 0):.1f}s")
+    text = "\n".join(lines) + "\n"
+    REPORT.write_text(text)
+    with capsys.disabled():
+        print(f"\n{text}", end="")

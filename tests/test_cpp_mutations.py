@@ -1,0 +1,209 @@
+"""The C++ checks bite: break a template on purpose and the harness must fail.
+
+Each mutation copies rhi_gen/templates/ to a temporary folder, changes one thing (the pattern must
+match exactly where expected, so a template rewrite cannot silently turn a mutation into a no-op),
+renders the reference G1 (unitree_dds, float, CRC) and PM01 (a ROS topic transport, double) with
+that template folder (render_package's env_factory: make_environment()'s settings, FileSystemLoader
+on the copy), builds tests/cpp/harness/driver_harness.cpp against the result (plain flavour) and runs
+it. The run must fail, with failed checks in the section that guards the broken property. The
+DataBuffer mutation builds tests/cpp/harness/data_buffer_stress.cpp instead. A control run of the
+unmodified copy must pass, so the failures come from the mutations, not from the machinery.
+"""
+from __future__ import annotations
+
+import re
+import shutil
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+from tests.cpp_build import (REPO, build_harness, compile_data_buffer_stress, render_test_package, run_binary,
+                             run_parallel, session_builder)
+
+TEMPLATES = REPO / "rhi_gen" / "templates"
+ROBOTS = ("unitree/g1", "engineai/pm01")
+THREADS_MS = 100
+
+BROKEN_DOUBLE_BUFFER = """namespace robot_hardware_interface {
+
+// MUTANT: the seed's double buffer. getData() returns the slot the next setData() but one writes.
+template <typename T>
+class DataBuffer {
+public:
+  DataBuffer() = default;
+  DataBuffer(const DataBuffer&) = delete;
+  DataBuffer& operator=(const DataBuffer&) = delete;
+  void setData(const T& data) {
+    std::lock_guard<std::mutex> lock(write_mutex_);
+    const int next = 1 - index_.load();
+    slots_[next] = data;
+    index_.store(next);
+    has_data_.store(true);
+  }
+  const T* getData() { return has_data_.load() ? &slots_[index_.load()] : nullptr; }
+
+private:
+  std::array<T, 2> slots_{};
+  std::mutex write_mutex_;
+  std::atomic<int> index_{0};
+  std::atomic<bool> has_data_{false};
+};
+
+}  // namespace robot_hardware_interface"""
+
+
+@dataclass(frozen=True)
+class Mutation:
+    id: str
+    what: str
+    template: str          # path under rhi_gen/templates/
+    pattern: str           # regular expression (MULTILINE)
+    replacement: str
+    sections: tuple[str, ...]   # the harness sections expected to catch it
+    robots: tuple[str, ...] = ROBOTS
+    count: int | None = 1  # matches the pattern must have (None: at least one)
+    data_buffer: bool = False  # run data_buffer_stress instead of the driver harness
+
+
+MUTATIONS = (
+    Mutation("layer1_writer_guard", "delete layer 1: the command writer no longer waits for the first state",
+             "driver/driver.cpp.j2",
+             r"^[ \t]*if \(!first_state_received_\.load\(std::memory_order_acquire\)\) \{\n[ \t]*return false;\n"
+             r"[ \t]*\}\n", "", ("safety",)),
+    Mutation("layer2_initial_command", "delete layer 2: the first state no longer seeds the hold command",
+             "driver/driver.cpp.j2", r"^[ \t]*motor_command_buffer_\.setData\(initial_cmd_cache_\);\n", "",
+             ("safety",)),
+    Mutation("layer3_write_guard", "delete layer 3: write() forwards commands before read() copied a state",
+             "driver/driver.cpp.j2",
+             r"^[ \t]*if \(!state_copied_\.load\(std::memory_order_relaxed\)\) \{\n[ \t]*return return_type::OK;\n"
+             r"[ \t]*\}\n", "", ("safety",)),
+    Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
+             "driver/driver.cpp.j2", r"^[ \t]*joint\.posDes_ = joint\.pos_;.*\n", "", ("safety",)),
+    Mutation("joint_map_swap", "jointIndexMap emission swaps the SDK slots of motors 0 and 1",
+             "driver/driver.hpp.j2", r"\{\{ joint\.index \}\}(\{\{ '\}' \}\})",
+             r"{{ (1 - joint.index) if joint.index < 2 else joint.index }}\1", ("joint_map",)),
+    Mutation("crc_polynomial", "CRC32 with a wrong polynomial", "transport/unitree_hg_crc.hpp.j2",
+             r"(CRC_POLYNOMIAL = )0x04C11DB7U", r"\g<1>0x04C11DB6U", ("crc", "commands", "safety"),
+             robots=("unitree/g1",)),
+    Mutation("crc_skips_lowcmd_field", "LowCmd_ CRC skips MotorCmd_.tau", "transport/unitree_hg_crc.hpp.j2",
+             r"^.*putF32\(image, base \+ 12, motor\.tau\(\)\);\n", "", ("crc", "commands"),
+             robots=("unitree/g1",)),
+    Mutation("crc_skips_lowstate_field", "LowState_ CRC skips MotorState_.ddq", "transport/unitree_hg_crc.hpp.j2",
+             r"^.*motor\.ddq\(\)\);\n", "", ("crc", "safety"), robots=("unitree/g1",)),
+    Mutation("imu_quaternion_order", "read() exports x as orientation.w", "driver/driver.cpp.j2",
+             r"(imuData_\.ori_\[3\] = static_cast<double>\(imu->quat\[)0(\]\))", r"\g<1>1\2", ("imu",)),
+    Mutation("decimation", "state decimation off by one", "driver/_macros.j2",
+             r"% state_decimation_\)", "% (state_decimation_ + 1))", ("decimation",)),
+    Mutation("stale_ignores_decimated_frames", "decimated frames no longer count as state arriving",
+             "driver/_macros.j2", r"^[ \t]*if \(state_frames_valid_\) \{\n[ \t]*last_state_time_ns_\.store\(.*\n[ \t]*\}\n",
+             "", ("decimation",)),
+    Mutation("stale_masked_by_decimated_frames", "decimated frames keep the state fresh after a rejected frame",
+             "driver/_macros.j2", r"if \(state_frames_valid_\) \{", "if (true) {", ("decimation",)),
+    Mutation("parameter_range", "an out-of-range parameter (0) is accepted", "driver/driver.cpp.j2",
+             r"parsed < min \|\| ", "", ("parameters",)),
+    Mutation("hot_path_allocation", "write() allocates", "driver/driver.cpp.j2",
+             r"(\{\{ api\.write_head\(\) \}\} \{\n)", r"\1  { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }\n",
+             ("allocations",)),
+    Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
+             "common/data_buffer.hpp.j2",
+             r"(?s)^namespace robot_hardware_interface \{\n.*^\}  // namespace robot_hardware_interface",
+             BROKEN_DOUBLE_BUFFER.replace("\\", "\\\\"),
+             ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),
+)
+
+
+def _mutated_templates(root: Path, mutation: Mutation | None) -> Path:
+    dest = root / "templates"
+    shutil.copytree(TEMPLATES, dest)
+    if mutation is not None:
+        path = dest / mutation.template
+        text = path.read_text(encoding="utf-8")
+        new, n = re.subn(mutation.pattern, mutation.replacement, text, flags=re.M)
+        if mutation.count is None:
+            assert n >= 1, f"{mutation.id}: pattern not found in {mutation.template}; update the mutation"
+        else:
+            assert n == mutation.count, (f"{mutation.id}: pattern matched {n} times in {mutation.template}, "
+                                         f"expected {mutation.count}; update the mutation")
+        path.write_text(new, encoding="utf-8")
+    return dest
+
+
+@dataclass
+class Outcome:
+    mutation: Mutation | None
+    robot: str            # "vendor/robot" or "data_buffer"
+    built: bool
+    build_error: str
+    run: object | None
+    seconds: float
+
+
+def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
+    mutation: Mutation | None = job
+    name = mutation.id if mutation else "control"
+    root = tmp_root / name
+    start = time.monotonic()
+    templates = _mutated_templates(root, mutation)
+    robots = mutation.robots if mutation else ROBOTS
+    package = render_test_package(root, only=robots or ROBOTS[:1], template_dir=templates, extra_robots=False)
+    outcomes = []
+    if mutation is None or mutation.data_buffer:
+        link = compile_data_buffer_stress(builder, package.package_dir, "plain")
+        run = run_binary(link.path, timeout=120) if link.ok else None
+        outcomes.append(Outcome(mutation, "data_buffer", link.ok, link.stderr, run, time.monotonic() - start))
+    for label in robots:
+        link, _ = build_harness(builder, package.build(label), "plain")
+        run = run_binary(link.path, [f"--threads-ms={THREADS_MS}"], timeout=120) if link.ok else None
+        outcomes.append(Outcome(mutation, label, link.ok, link.stderr, run, time.monotonic() - start))
+    return outcomes
+
+
+@pytest.fixture(scope="module")
+def outcomes(tmp_path_factory):
+    builder = session_builder(tmp_path_factory)
+    tmp_root = tmp_path_factory.mktemp("mutations")
+    jobs = [None, *MUTATIONS]
+    start = time.monotonic()
+    results = run_parallel(jobs, lambda job: _run_one(job, tmp_root, builder))
+    elapsed = time.monotonic() - start
+    by_id = {(job.id if job else "control"): result for job, result in zip(jobs, results)}
+    by_id["_seconds"] = elapsed  # type: ignore[assignment]
+    return by_id
+
+
+def test_control_unmodified_templates_pass(outcomes):
+    for o in outcomes["control"]:
+        assert o.built, f"control {o.robot} does not build:\n{o.build_error[:4000]}"
+        assert o.run.returncode == 0 and o.run.failed == 0, f"control {o.robot}: {o.run.describe()}"
+
+
+@pytest.mark.parametrize("mutation", MUTATIONS, ids=[m.id for m in MUTATIONS])
+def test_mutation_is_caught(outcomes, mutation):
+    for o in outcomes[mutation.id]:
+        assert o.built, (f"{mutation.id} ({mutation.what}): {o.robot} no longer compiles, so this mutation "
+                         f"proves nothing; adjust it:\n{o.build_error[:4000]}")
+        run = o.run
+        failed_sections = sorted(name for name, (_, f) in run.sections.items() if f > 0)
+        assert run.returncode != 0, (f"{mutation.id} ({mutation.what}) was NOT caught for {o.robot}: "
+                                     f"{run.passed} checks passed, none failed")
+        assert set(failed_sections) & set(mutation.sections), (
+            f"{mutation.id} ({mutation.what}) on {o.robot} failed, but not in {mutation.sections}: "
+            f"failed sections {failed_sections}\n{run.describe()}")
+
+
+def test_mutation_report(outcomes, capsys):
+    lines = ["C++ mutation tests (tests/test_cpp_mutations.py): each broken template must fail the harness", ""]
+    for key in ["control", *(m.id for m in MUTATIONS)]:
+        for o in outcomes[key]:
+            if not o.built:
+                lines.append(f"  {key:34s} {o.robot:14s} DOES NOT BUILD")
+                continue
+            failed = {name: f for name, (_, f) in o.run.sections.items() if f > 0}
+            verdict = "passes" if o.run.returncode == 0 else "FAILS (caught)"
+            lines.append(f"  {key:34s} {o.robot:14s} {verdict}: {o.run.failed} failed checks "
+                         f"{failed if failed else ''}")
+    lines.append(f"  total {outcomes['_seconds']:.1f}s")
+    with capsys.disabled():
+        print("\n" + "\n".join(lines))

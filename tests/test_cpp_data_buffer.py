@@ -73,33 +73,8 @@ def test_data_buffer_report(stress_runs, capsys):
         print("\n" + "\n".join(out))
 
 
-BROKEN = """#pragma once
-#include <array>
-#include <atomic>
-#include <mutex>
-namespace robot_hardware_interface {
-template <typename T>
-class DataBuffer {  // the seed's double buffer: the slot getData() returns is written by setData()
-public:
-  DataBuffer() = default;
-  DataBuffer(const DataBuffer&) = delete;
-  DataBuffer& operator=(const DataBuffer&) = delete;
-  void setData(const T& data) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const int next = 1 - index_.load();
-    slots_[next] = data;
-    index_.store(next);
-    has_data_.store(true);
-  }
-  const T* getData() { return has_data_.load() ? &slots_[index_.load()] : nullptr; }
-private:
-  std::array<T, 2> slots_{};
-  std::mutex mutex_;
-  std::atomic<int> index_{0};
-  std::atomic<bool> has_data_{false};
-};
-}  // namespace robot_hardware_interface
-"""
+BROKEN = ("#pragma once\n#include <array>\n#include <atomic>\n#include <mutex>\n"
+          + (HARNESS_DIR / "mutants" / "double_buffer.inc").read_text())
 
 
 def test_stress_catches_a_buffer_that_hands_out_an_overwritable_slot(tmp_path, tmp_path_factory):

@@ -26,32 +26,7 @@ TEMPLATES = REPO / "rhi_gen" / "templates"
 ROBOTS = ("unitree/g1", "engineai/pm01")
 THREADS_MS = 100
 
-BROKEN_DOUBLE_BUFFER = """namespace robot_hardware_interface {
-
-// MUTANT: the seed's double buffer. getData() returns the slot the next setData() but one writes.
-template <typename T>
-class DataBuffer {
-public:
-  DataBuffer() = default;
-  DataBuffer(const DataBuffer&) = delete;
-  DataBuffer& operator=(const DataBuffer&) = delete;
-  void setData(const T& data) {
-    std::lock_guard<std::mutex> lock(write_mutex_);
-    const int next = 1 - index_.load();
-    slots_[next] = data;
-    index_.store(next);
-    has_data_.store(true);
-  }
-  const T* getData() { return has_data_.load() ? &slots_[index_.load()] : nullptr; }
-
-private:
-  std::array<T, 2> slots_{};
-  std::mutex write_mutex_;
-  std::atomic<int> index_{0};
-  std::atomic<bool> has_data_{false};
-};
-
-}  // namespace robot_hardware_interface"""
+BROKEN_DOUBLE_BUFFER = (REPO / "tests/cpp/harness/mutants/double_buffer.inc").read_text()
 
 
 @dataclass(frozen=True)

@@ -84,11 +84,6 @@ def xml_escape(text: str) -> str:
             .replace('"', "&quot;").replace("'", "&apos;"))
 
 
-def cmake_string(text: str) -> str:
-    """A quoted CMake argument."""
-    return '"' + str(text).replace("\\", "\\\\").replace('"', '\\"').replace("$", "\\$") + '"'
-
-
 FILTERS = {
     "cpp_string": cpp_string,
     "cpp_double": cpp_double,
@@ -96,5 +91,4 @@ FILTERS = {
     "header_guard": header_guard,
     "yaml_string": yaml_string,
     "xml": xml_escape,
-    "cmake_string": cmake_string,
 }

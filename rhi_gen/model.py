@@ -8,7 +8,6 @@ Three layers, each built by its own module:
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
 ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
 TRANSPORTS = ("unitree_dds", "agibot_topics", "engineai_topics", "generic_topics")
@@ -222,6 +221,3 @@ class RobotModel:
     @property
     def vendor_pascal(self) -> str:
         return "".join(p[:1].upper() + p[1:] for p in self.vendor.split("_"))
-
-    def template_context(self) -> dict[str, Any]:
-        return {"robot": self}

@@ -385,7 +385,7 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
     model = build_model(config, urdf, yaml_path=yaml_path, yaml_bytes=text.encode("utf-8"),
                         project_root=project.root)
     new = LoadedRobot(yaml_path, config, urdf, model)
-    others = [r for r in load_robots(project, [p for p in robot_yamls(project) if p.resolve() != yaml_path.resolve()])]
+    others = load_robots(project, [p for p in robot_yamls(project) if p.resolve() != yaml_path.resolve()])
     if any(r.model.robot == robot for r in others):
         clash = next(r for r in others if r.model.robot == robot)
         raise ProjectError(f"robot name {robot!r} is already used by {project.relative(clash.yaml_path)}",

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable
 
@@ -479,6 +478,3 @@ def _groups(v: _Validator, raw: Any, motor_count: int) -> tuple[JointGroup, ...]
         offset += size
     return tuple(groups)
 
-
-def with_source(config: VendorConfig, shown: str) -> VendorConfig:
-    return replace(config, source=shown)

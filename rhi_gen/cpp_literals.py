@@ -55,8 +55,9 @@ def cpp_float(value: float | int) -> str:
 
 
 def header_guard(relpath: str) -> str:
-    """An include guard macro from a header's path, e.g. ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_."""
-    return re.sub(r"[^A-Za-z0-9]", "_", relpath).upper().replace("/", "__") + "_"
+    """The ROS 2 include guard of a header below include/, as ament_cpplint expects it:
+    folders joined by ``__``, e.g. ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_."""
+    return "__".join(re.sub(r"[^A-Za-z0-9]", "_", part).upper() for part in relpath.split("/")) + "_"
 
 
 def yaml_string(text: str) -> str:

@@ -22,24 +22,31 @@ REGION_BEGIN = "rhi-gen:begin-user-region"
 REGION_END = "rhi-gen:end-user-region"
 
 # (template, output path) — output paths are relative to generated/robot_hardware_interface/
-COMMON_FILES = (
-    ("common/data_buffer.hpp.j2", "include/robot_hardware_interface/common/data_buffer.hpp"),
-    ("common/types.hpp.j2", "include/robot_hardware_interface/common/types.hpp"),
-    ("common/motor_types.hpp.j2", "include/robot_hardware_interface/common/motor_types.hpp"),
-    ("common/monitor.hpp.j2", "include/robot_hardware_interface/common/monitor.hpp"),
-)
+COMMON_FILES = tuple(
+    (f"common/{name}.j2", f"include/robot_hardware_interface/common/{name}")
+    for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
+                 "hardware_parameters.hpp", "ros2_control_compat.hpp", "driver_core.hpp",
+                 "system_driver.hpp"))
+_ROS_TOPICS = ("transport/ros_topics.hpp.j2", "include/robot_hardware_interface/transport/ros_topics.hpp")
 TRANSPORT_FILES = {
-    "unitree_dds": (("transport/unitree_hg_crc.hpp.j2",
-                     "include/robot_hardware_interface/transport/unitree_hg_crc.hpp"),),
+    "unitree_dds": tuple((f"transport/{name}.j2", f"include/robot_hardware_interface/transport/{name}")
+                         for name in ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp")),
+    "agibot_topics": (_ROS_TOPICS, ("transport/agibot_topics.hpp.j2",
+                                    "include/robot_hardware_interface/transport/agibot_topics.hpp")),
+    "engineai_topics": (_ROS_TOPICS, ("transport/engineai_topics.hpp.j2",
+                                      "include/robot_hardware_interface/transport/engineai_topics.hpp")),
+    "generic_topics": (_ROS_TOPICS, ("transport/generic_topics.hpp.j2",
+                                     "include/robot_hardware_interface/transport/generic_topics.hpp")),
 }
+TEST_FILES = (("test/hardware_interface_test.hpp.j2", "test/hardware_interface_test.hpp"),)
 PACKAGE_FILES = (
     ("package/CMakeLists.txt.j2", "CMakeLists.txt"),
     ("package/package.xml.j2", "package.xml"),
     ("package/robot_hardware_interface.xml.j2", "robot_hardware_interface.xml"),
 )
 ROBOT_FILES = (
-    ("driver/driver.hpp.j2", "include/robot_hardware_interface/{vendor}/{robot}.hpp"),
-    ("driver/driver.cpp.j2", "src/{vendor}/{robot}.cpp"),
+    ("robot/driver.hpp.j2", "include/robot_hardware_interface/{vendor}/{robot}.hpp"),
+    ("robot/driver.cpp.j2", "src/{vendor}/{robot}.cpp"),
     ("robot/ros2_control.xacro.j2", "description/{robot}.ros2_control.xacro"),
     ("robot/controllers.yaml.j2", "config/{robot}_controllers.yaml"),
     ("robot/test.cpp.j2", "test/test_{robot}_hardware_interface.cpp"),
@@ -143,7 +150,7 @@ def render_package(models: Sequence[RobotModel],
     plan: dict[str, str] = {}
 
     common_banner = _banner_for("its built-in templates (shared by every robot)")
-    for template, out in COMMON_FILES:
+    for template, out in (*COMMON_FILES, *(TEST_FILES if robots else ())):
         plan[out] = _render_one(env, template, {"banner": common_banner}, out)
     for transport in sorted({r.transport for r in robots}):
         for template, out in TRANSPORT_FILES.get(transport, ()):

@@ -64,4 +64,4 @@ def test_cpp_double_round_trips():
 
 
 def test_header_guard():
-    assert header_guard("robot_hardware_interface/unitree/g1.hpp") == "ROBOT_HARDWARE_INTERFACE_UNITREE_G1_HPP_"
+    assert header_guard("robot_hardware_interface/unitree/g1.hpp") == "ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_"

@@ -477,8 +477,8 @@ def prepare_robot_builds(loaded_robots, package_dir: Path, work_dir: Path) -> li
 
 
 def crc_header(package_dir: Path) -> Path | None:
-    """The generated unitree hg CRC header, wherever the templates put it."""
-    found = sorted((package_dir / "include").rglob("*crc*.hpp"))
+    """The generated header of the unitree hg messages (their CRC), wherever the templates put it."""
+    found = sorted((package_dir / "include").rglob("unitree_hg*.hpp"))
     return found[0] if found else None
 
 

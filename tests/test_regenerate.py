@@ -168,7 +168,7 @@ def test_float_type_change_is_reported(project, capsys):
 # ---------------------------------------------------------------- user regions
 def test_user_region_edits_survive_three_regenerations(project, capsys):
     bodies = {
-        (G1_CPP, "sdk_init"): "    // hand-written: vendor SDK wants a warm-up call\n    vendor_warm_up(node_);\n",
+        (G1_CPP, "includes"): "// hand-written: the vendor's warm-up helper\n#include <vendor/warm_up.hpp>\n",
         (G1_CPP, "callbacks"): "static void on_fault(int code) {  \t// odd spacing kept\n  (void)code;\n}\n\n",
         (G1_HPP, "members"): "  int fault_count_{0};  // µ-controller faults\n",
         (CMAKE, "dependencies"): "# our extra package\nfind_package(vendor_tools QUIET)\n",
@@ -195,8 +195,10 @@ def test_user_region_edits_survive_three_regenerations(project, capsys):
 
 def test_edit_outside_a_region_blocks_generate_and_changes_nothing(project, capsys):
     hpp = project / G1_HPP
-    hpp.write_text(hpp.read_text().replace("#pragma once\n", "#pragma once\n#include <my_hack.hpp>\n", 1))
-    fill_region(project / G1_CPP, "sdk_init", "    vendor_warm_up();\n")
+    guard = "#define ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_\n"
+    assert guard in hpp.read_text()
+    hpp.write_text(hpp.read_text().replace(guard, guard + "#include <my_hack.hpp>\n", 1))
+    fill_region(project / G1_CPP, "includes", "#include <vendor/warm_up.hpp>\n")
     rename_joint(project)
     before = tree(project)
     code, out, err = cli(capsys, project, "generate")
@@ -231,7 +233,9 @@ def test_several_blocked_files_are_all_listed(project, capsys):
 def test_force_overwrites_and_keeps_numbered_backups(project, capsys):
     hpp = project / G1_HPP
     clean = hpp.read_bytes()
-    edited = clean.replace(b"#pragma once\n", b"#pragma once\n// first hand edit\n", 1)
+    guard = b"#define ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_\n"
+    assert guard in clean
+    edited = clean.replace(guard, guard + b"// first hand edit\n", 1)
     hpp.write_bytes(edited)
     fill_region(project / G1_CPP, "callbacks", "void keep_me() {}\n")
     code, out, _ = cli(capsys, project, "generate", "--force")
@@ -248,7 +252,7 @@ def test_force_overwrites_and_keeps_numbered_backups(project, capsys):
     assert not [p for p in (project / PKG).rglob("*") if ".rhi-" in p.name or p.name.endswith(".1")]
     assert cli(capsys, project, "check")[0] == 0
     # a second forced overwrite gets the next number; the first backup stays
-    second = clean.replace(b"#pragma once\n", b"#pragma once\n// second hand edit\n", 1)
+    second = clean.replace(guard, guard + b"// second hand edit\n", 1)
     hpp.write_bytes(second)
     assert cli(capsys, project, "generate", "--force")[0] == 0
     assert backup.read_bytes() == edited
@@ -280,17 +284,17 @@ def test_region_the_template_dropped_is_refused_not_lost(project, capsys, monkey
 
 
 def test_removed_robot_with_user_code_is_refused(project, capsys):
-    fill_region(project / G1_CPP, "on_activate", "  arm_brakes();\n")
+    fill_region(project / G1_CPP, "callbacks", "void arm_brakes() {}\n")
     (project / "robots/unitree/g1.yaml").unlink()
     before = tree(project)
     code, out, err = cli(capsys, project, "diff")
     assert code == 1 and "unitree/g1: robot removed" in out and "would refuse" in err
     code, _, err = cli(capsys, project, "generate")
     assert code == 2 and tree(project) == before
-    assert "user region 'on_activate'" in err and "no longer generated" in err
+    assert "user region 'callbacks'" in err and "no longer generated" in err
     assert cli(capsys, project, "generate", "--force")[0] == 0
     assert not (project / G1_CPP).exists() and not (project / G1_HPP).exists()
-    assert "arm_brakes();" in (project / "generated/.rhi-gen-backup/robot_hardware_interface/src/unitree/g1.cpp.1"
+    assert "void arm_brakes() {}" in (project / "generated/.rhi-gen-backup/robot_hardware_interface/src/unitree/g1.cpp.1"
                                ).read_text()
     assert cli(capsys, project, "check")[0] == 0
 
@@ -298,23 +302,24 @@ def test_removed_robot_with_user_code_is_refused(project, capsys):
 def test_removed_robot_without_user_code_is_removed(project, capsys):
     (project / "robots/unitree/g1.yaml").unlink()
     code, out, _ = cli(capsys, project, "generate")
-    assert code == 0 and "6 removed" in out  # 5 driver files + the unitree CRC header
+    assert code == 0 and "9 removed" in out  # 5 robot files + the 4 unitree transport headers
     assert not any((project / rel).exists() for rel in G1_FILES)
     assert not (project / f"{PKG}/src/unitree").exists()
-    assert not (project / f"{PKG}/include/robot_hardware_interface/transport/unitree_hg_crc.hpp").exists()
+    for header in ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp"):
+        assert not (project / f"{PKG}/include/robot_hardware_interface/transport/{header}").exists()
 
 
 def test_broken_marker_is_reported_with_file_and_line(project, capsys):
     cpp = project / G1_CPP
     lines = cpp.read_text().splitlines(keepends=True)
-    end = next(i for i, line in enumerate(lines) if line.strip() == f"// {REGION_END} sdk_init")
-    begin = next(i for i, line in enumerate(lines) if line.strip() == f"// {REGION_BEGIN} sdk_init")
-    nested = next(i for i, line in enumerate(lines) if line.strip() == f"// {REGION_BEGIN} on_activate")
+    end = next(i for i, line in enumerate(lines) if line.strip() == f"// {REGION_END} includes")
+    begin = next(i for i, line in enumerate(lines) if line.strip() == f"// {REGION_BEGIN} includes")
+    nested = next(i for i, line in enumerate(lines) if line.strip() == f"// {REGION_BEGIN} callbacks")
     cpp.write_text("".join(lines[:end] + lines[end + 1:]))
     before = tree(project)
     code, _, err = cli(capsys, project, "generate")
     assert code == 2 and tree(project) == before
-    assert f"error: {G1_CPP}:{nested}: region 'on_activate' begins inside region 'sdk_init' (line {begin + 1})" \
+    assert f"error: {G1_CPP}:{nested}: region 'callbacks' begins inside region 'includes' (line {begin + 1})" \
         in err
     assert "restore the marker lines" in err
     assert cli(capsys, project, "check")[0] == 1
@@ -433,7 +438,7 @@ def test_bad_yaml_changes_nothing(project, capsys):
 
 def _big_change(project: Path, capsys) -> None:
     """A regeneration that changes, creates, removes and backs up files (with a region to carry)."""
-    fill_region(project / G1_CPP, "sdk_init", "    vendor_warm_up();\n")
+    fill_region(project / G1_CPP, "includes", "#include <vendor/warm_up.hpp>\n")
     x2 = project / f"{PKG}/include/robot_hardware_interface/agibot/x2.hpp"
     x2.write_text(x2.read_text() + "// hand edit, forced away\n")
     rename_joint(project)

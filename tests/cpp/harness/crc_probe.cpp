@@ -9,9 +9,9 @@ uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg);
 uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg);
 
 uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg) {
-  return robot_hardware_interface::unitree_hg_crc::lowCmdCrc(msg);
+  return robot_hardware_interface::unitree_hg::lowCmdCrc(msg);
 }
 
 uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg) {
-  return robot_hardware_interface::unitree_hg_crc::lowStateCrc(msg);
+  return robot_hardware_interface::unitree_hg::lowStateCrc(msg);
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the unitree_sdk2 "hg" IDL stand-ins (unitree/idl/hg/*_.hpp) under ../include.
+"""Writes the unitree_sdk2 IDL stand-ins under ../include: the "hg" family (unitree/idl/hg/*_.hpp,
+namespace unitree_hg) and the "go" family (unitree/idl/go2/*_.hpp, namespace unitree_go).
 
 Shape of the Cyclone DDS idlcxx output used by unitree_sdk2 (checked against the SDK's
 include/unitree/idl/hg/{HandCmd_,PressSensorState_,AgvBmsState_}.hpp): namespace
@@ -7,7 +8,8 @@ unitree_hg::msg::dds_, a class with private members `name_` (primitives `= 0`, a
 `Name_() = default`, an explicit all-members constructor, and per member
   primitive: `T name() const`, `T& name()`, `void name(T)`
   other:     `const T& name() const`, `T& name()`, `void name(const T&)`, `void name(T&&)`
-plus operator== / operator!=. Member order/types from SDK_FACTS.md (= unitree_ros2 unitree_hg msgs).
+plus operator== / operator!=. Member order/types from SDK_FACTS.md sections A and D (= unitree_ros2
+unitree_hg / unitree_go msgs; the go IDL uses uint8_t where the .msg files say int8).
 The DDS type-support parts of the real headers are omitted.
 """
 from __future__ import annotations
@@ -16,9 +18,10 @@ from pathlib import Path
 
 INCLUDE = Path(__file__).resolve().parent.parent / "include"
 NS = "::unitree_hg::msg::dds_::"
-PRIMITIVES = {"uint8_t", "int16_t", "uint32_t", "float"}
+GO = "::unitree_go::msg::dds_::"
+PRIMITIVES = {"uint8_t", "int16_t", "uint16_t", "int32_t", "uint32_t", "float"}
 
-TYPES = {
+HG_TYPES = {
     "MotorCmd_": ([("uint8_t", "mode"), ("float", "q"), ("float", "dq"), ("float", "tau"),
                    ("float", "kp"), ("float", "kd"), ("uint32_t", "reserve")], [], 28),
     "MotorState_": ([("uint8_t", "mode"), ("float", "q"), ("float", "dq"), ("float", "ddq"),
@@ -38,12 +41,44 @@ TYPES = {
                    ("uint32_t", "crc")], ["IMUState_", "MotorState_"], 2092),
 }
 
+GO_HEADER = [("std::array<uint8_t, 2>", "head"), ("uint8_t", "level_flag"), ("uint8_t", "frame_reserve"),
+             ("std::array<uint32_t, 2>", "sn"), ("std::array<uint32_t, 2>", "version"), ("uint16_t", "bandwidth")]
+GO_TYPES = {
+    "MotorCmd_": ([("uint8_t", "mode"), ("float", "q"), ("float", "dq"), ("float", "tau"),
+                   ("float", "kp"), ("float", "kd"), ("std::array<uint32_t, 3>", "reserve")], [], 36),
+    "BmsCmd_": ([("uint8_t", "off"), ("std::array<uint8_t, 3>", "reserve")], [], 4),
+    "MotorState_": ([("uint8_t", "mode"), ("float", "q"), ("float", "dq"), ("float", "ddq"),
+                     ("float", "tau_est"), ("float", "q_raw"), ("float", "dq_raw"), ("float", "ddq_raw"),
+                     ("uint8_t", "temperature"), ("uint32_t", "lost"), ("std::array<uint32_t, 2>", "reserve")],
+                    [], 48),
+    "IMUState_": ([("std::array<float, 4>", "quaternion"), ("std::array<float, 3>", "gyroscope"),
+                   ("std::array<float, 3>", "accelerometer"), ("std::array<float, 3>", "rpy"),
+                   ("uint8_t", "temperature")], [], 56),
+    "BmsState_": ([("uint8_t", "version_high"), ("uint8_t", "version_low"), ("uint8_t", "status"),
+                   ("uint8_t", "soc"), ("int32_t", "current"), ("uint16_t", "cycle"),
+                   ("std::array<uint8_t, 2>", "bq_ntc"), ("std::array<uint8_t, 2>", "mcu_ntc"),
+                   ("std::array<uint16_t, 15>", "cell_vol")], [], 44),
+    "LowCmd_": (GO_HEADER + [(f"std::array<{GO}MotorCmd_, 20>", "motor_cmd"), (f"{GO}BmsCmd_", "bms_cmd"),
+                             ("std::array<uint8_t, 40>", "wireless_remote"), ("std::array<uint8_t, 12>", "led"),
+                             ("std::array<uint8_t, 2>", "fan"), ("uint8_t", "gpio"), ("uint32_t", "reserve"),
+                             ("uint32_t", "crc")], ["MotorCmd_", "BmsCmd_"], 812),
+    "LowState_": (GO_HEADER + [(f"{GO}IMUState_", "imu_state"), (f"std::array<{GO}MotorState_, 20>", "motor_state"),
+                               (f"{GO}BmsState_", "bms_state"), ("std::array<int16_t, 4>", "foot_force"),
+                               ("std::array<int16_t, 4>", "foot_force_est"), ("uint32_t", "tick"),
+                               ("std::array<uint8_t, 40>", "wireless_remote"), ("uint8_t", "bit_flag"),
+                               ("float", "adc_reel"), ("uint8_t", "temperature_ntc1"),
+                               ("uint8_t", "temperature_ntc2"), ("float", "power_v"), ("float", "power_a"),
+                               ("std::array<uint16_t, 4>", "fan_frequency"), ("uint32_t", "reserve"),
+                               ("uint32_t", "crc")], ["IMUState_", "MotorState_", "BmsState_"], 1180),
+}
+FAMILIES = (("hg", "unitree_hg", "hg", HG_TYPES), ("go", "unitree_go", "go2", GO_TYPES))
 
-def render(name: str, members, deps, size: int) -> str:
-    guard = f"DDSCXX_UNITREE_IDL_HG_{name.upper()}_HPP"
+
+def render(name: str, members, deps, size: int, namespace: str = "unitree_hg", folder: str = "hg") -> str:
+    guard = f"DDSCXX_UNITREE_IDL_{folder.upper()}_{name.upper()}_HPP"
     out = [
         "// rhi-gen test stand-in (not the real unitree_sdk2): Cyclone-DDS-style C++ class of the",
-        f"// unitree_hg {name} IDL type. Generated by tests/cpp/standins/tools/gen_unitree_idl.py.",
+        f"// {namespace} {name} IDL type. Generated by tests/cpp/standins/tools/gen_unitree_idl.py.",
         f"#ifndef {guard}",
         f"#define {guard}",
         "",
@@ -53,8 +88,8 @@ def render(name: str, members, deps, size: int) -> str:
         "#include <type_traits>",
         "#include <utility>",
     ]
-    out += [f'#include "unitree/idl/hg/{d}.hpp"' for d in deps]
-    out += ["", "namespace unitree_hg", "{", "namespace msg", "{", "namespace dds_", "{",
+    out += [f'#include "unitree/idl/{folder}/{d}.hpp"' for d in deps]
+    out += ["", f"namespace {namespace}", "{", "namespace msg", "{", "namespace dds_", "{",
             f"class {name}", "{", "private:"]
     for t, m in members:
         if t in PRIMITIVES:
@@ -90,27 +125,28 @@ def render(name: str, members, deps, size: int) -> str:
             "    return !(*this == _other);", "  }", "", "};", "", "}", "", "}", "", "}", ""]
     out += [
         f"// Layout checks (x86-64 g++): the CRC of the SDK is computed over the raw bytes.",
-        f"static_assert(sizeof(::unitree_hg::msg::dds_::{name}) == {size}, "
-        f"\"unitree_hg {name} must be {size} bytes\");",
-        f"static_assert(std::is_standard_layout<::unitree_hg::msg::dds_::{name}>::value, "
-        f"\"unitree_hg {name} must be standard layout\");",
-        f"static_assert(std::is_trivially_copyable<::unitree_hg::msg::dds_::{name}>::value, "
-        f"\"unitree_hg {name} must be trivially copyable\");",
+        f"static_assert(sizeof(::{namespace}::msg::dds_::{name}) == {size}, "
+        f"\"{namespace} {name} must be {size} bytes\");",
+        f"static_assert(std::is_standard_layout<::{namespace}::msg::dds_::{name}>::value, "
+        f"\"{namespace} {name} must be standard layout\");",
+        f"static_assert(std::is_trivially_copyable<::{namespace}::msg::dds_::{name}>::value, "
+        f"\"{namespace} {name} must be trivially copyable\");",
     ]
     if any(m == "crc" for _, m in members):
         out.append(
-            f"static_assert(sizeof(::unitree_hg::msg::dds_::{name}) % 4 == 0, "
+            f"static_assert(sizeof(::{namespace}::msg::dds_::{name}) % 4 == 0, "
             f"\"{name}: whole 32-bit words\");")
     out += ["", f"#endif  // {guard}", ""]
     return "\n".join(out)
 
 
 def main() -> None:
-    for name, (members, deps, size) in TYPES.items():
-        path = INCLUDE / "unitree" / "idl" / "hg" / f"{name}.hpp"
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(render(name, members, deps, size))
-        print("wrote", path.relative_to(INCLUDE))
+    for _, namespace, folder, types in FAMILIES:
+        for name, (members, deps, size) in types.items():
+            path = INCLUDE / "unitree" / "idl" / folder / f"{name}.hpp"
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(render(name, members, deps, size, namespace, folder))
+            print("wrote", path.relative_to(INCLUDE))
 
 
 if __name__ == "__main__":

@@ -2,816 +2,88 @@
 // Do not edit outside rhi-gen user regions: run `rhi-gen generate` after changing the inputs.
 #include "robot_hardware_interface/agibot/x2.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdlib>
-#include <exception>
-#include <limits>
+#include <array>
+#include <map>
+#include <memory>
 #include <string>
-#include <string_view>
-#include <thread>
 
 #include <pluginlib/class_list_macros.hpp>
-#include <rclcpp/logging.hpp>
-#include <rclcpp/qos.hpp>
+
+#include "robot_hardware_interface/transport/agibot_topics.hpp"
 
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
-namespace agibot {
+namespace agibot
+{
+namespace
+{
 
-using robot_hardware_interface::elapsedUs;
-using robot_hardware_interface::steadyNowNs;
-using robot_hardware_interface::steadyNowUs;
+using Transport = robot_hardware_interface::AgibotTopicsTransport<X2_NUM_MOTOR, double>;
 
-// Interface name constants
-constexpr char HW_IF_STIFFNESS[] = "stiffness";
-constexpr char HW_IF_DAMPING[] = "damping";
-constexpr char HW_IF_POSITION[] = "position";
-constexpr char HW_IF_VELOCITY[] = "velocity";
-constexpr char HW_IF_EFFORT[] = "effort";
+// URDF joint -> SDK motor slot, with the URDF limits write() clamps to:
+// {name, slot, position min, position max, |velocity| max, |effort| max}
+constexpr std::array<robot_hardware_interface::JointSpec, 31> kJoints = {{
+  {"left_hip_pitch_joint", 0, -2.70526, 2.556907, 11.93808, 120.0},
+  {"left_hip_roll_joint", 1, -0.235619, 2.905973, 11.93808, 120.0},
+  {"left_hip_yaw_joint", 2, -1.858775925, 3.604104925, 11.93808, 120.0},
+  {"left_knee_joint", 3, 0.0, 2.408554, 11.93808, 120.0},
+  {"left_ankle_pitch_joint", 4, -0.802851, 0.453786, 13.6136, 60.0},
+  {"left_ankle_roll_joint", 5, -0.2967059728, 0.2967059728, 14.660799999999998, 36.0},
+  {"right_hip_pitch_joint", 6, -2.70526, 2.556907, 11.93808, 120.0},
+  {"right_hip_roll_joint", 7, -2.905973, 0.235619, 11.93808, 120.0},
+  {"right_hip_yaw_joint", 8, -3.604104925, 1.858775925, 11.93808, 120.0},
+  {"right_knee_joint", 9, 0.0, 2.408554, 11.93808, 120.0},
+  {"right_ankle_pitch_joint", 10, -0.802851, 0.453786, 13.6136, 60.0},
+  {"right_ankle_roll_joint", 11, -0.2967059728, 0.2967059728, 14.660799999999998, 36.0},
+  {"waist_yaw_joint", 12, -3.429572, 2.120575, 11.93808, 120.0},
+  {"waist_pitch_joint", 13, -0.314159, 0.314159, 14.660799999999998, 36.0},
+  {"waist_roll_joint", 14, -0.488692, 0.488692, 14.661, 36.0},
+  {"head_yaw_joint", 29, -0.488692, 0.488692, 3.3109, 3.13125},
+  {"head_pitch_joint", 30, -0.401425, 0.488692, 10.472, 2.0},
+  {"left_shoulder_pitch_joint", 15, -3.080506, 2.033309, 13.6136, 60.0},
+  {"left_shoulder_roll_joint", 16, -0.061087, 3.0456, 13.6136, 60.0},
+  {"left_shoulder_yaw_joint", 17, -2.556907, 2.556907, 14.660799999999998, 36.0},
+  {"left_elbow_joint", 18, -2.356194, 0.0, 14.660799999999998, 36.0},
+  {"left_wrist_yaw_joint", 19, -2.556907, 2.556907, 14.660799999999998, 36.0},
+  {"left_wrist_pitch_joint", 20, -0.523599, 0.523599, 15.707999999999998, 6.0},
+  {"left_wrist_roll_joint", 21, -1.50971, 0.724312, 15.707999999999998, 6.0},
+  {"right_shoulder_pitch_joint", 22, -3.080506, 2.033309, 13.6136, 60.0},
+  {"right_shoulder_roll_joint", 23, -3.0456, 0.061087, 13.6136, 60.0},
+  {"right_shoulder_yaw_joint", 24, -2.556907, 2.556907, 14.660799999999998, 36.0},
+  {"right_elbow_joint", 25, -2.356194, 0.0, 14.660799999999998, 36.0},
+  {"right_wrist_yaw_joint", 26, -2.556907, 2.556907, 14.660799999999998, 36.0},
+  {"right_wrist_pitch_joint", 27, -0.523599, 0.523599, 15.707999999999998, 6.0},
+  {"right_wrist_roll_joint", 28, -0.724312, 1.50971, 15.707999999999998, 6.0},
+}};
+static_assert(robot_hardware_interface::slotsAreValid(kJoints, X2_NUM_MOTOR), "joint table");
 
-namespace {
+// Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
+// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
+constexpr robot_hardware_interface::RobotSpec kRobot{"agibot/X2HardwareInterface",
+  "x2_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
+  {"lo", true, 2000, 1, 100}};
 
-// ========== Hardware parameters ==========
-// ros2_control hands <param> values over as text. They are parsed by hand: std::stoul throws on
-// garbage and silently turns "-1" into a huge number.
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) {
-    return {};
-  }
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
-
-bool parseUnsigned(std::string_view text, uint64_t& value) {
-  text = trimmed(text);
-  if (text.empty() || text.size() > 18) {  // 18 digits always fit in uint64_t
-    return false;
-  }
-  uint64_t result = 0;
-  for (const char c : text) {
-    if (c < '0' || c > '9') {
-      return false;
-    }
-    result = result * 10U + static_cast<uint64_t>(c - '0');
-  }
-  value = result;
-  return true;
-}
-
-bool parseBool(std::string_view text, bool& value) {
-  text = trimmed(text);
-  // xacro renders Python booleans as True/False.
-  if (text == "true" || text == "True" || text == "TRUE" || text == "1") {
-    value = true;
-    return true;
-  }
-  if (text == "false" || text == "False" || text == "FALSE" || text == "0") {
-    value = false;
-    return true;
-  }
-  return false;
-}
-
-// True when every value is finite: NaN and infinity never reach ros2_control or the motors.
-template <typename... Values>
-bool allFinite(Values... values) {
-  return (std::isfinite(values) && ...);
-}
-
-// Reads an optional unsigned parameter in [min, max]; a missing one keeps `value` (the default).
-template <typename Parameters>
-bool readUnsignedParameter(const rclcpp::Logger& logger, const Parameters& parameters,
-                           const char* name, uint64_t min, uint64_t max, uint64_t& value) {
-  const auto it = parameters.find(name);
-  if (it == parameters.end()) {
-    return true;
-  }
-  uint64_t parsed = 0;
-  if (!parseUnsigned(it->second, parsed) || parsed < min || parsed > max) {
-    RCLCPP_ERROR(logger, "hardware parameter '%s' is '%s': expected an integer from %llu to %llu",
-                 name, it->second.c_str(), static_cast<unsigned long long>(min),
-                 static_cast<unsigned long long>(max));
-    return false;
-  }
-  value = parsed;
-  return true;
-}
-
-template <typename Parameters>
-bool readBoolParameter(const rclcpp::Logger& logger, const Parameters& parameters,
-                       const char* name, bool& value) {
-  const auto it = parameters.find(name);
-  if (it == parameters.end()) {
-    return true;
-  }
-  if (!parseBool(it->second, value)) {
-    RCLCPP_ERROR(logger, "hardware parameter '%s' is '%s': expected true or false", name,
-                 it->second.c_str());
-    return false;
-  }
-  return true;
-}
-
-// ========== Command limits per SDK slot (URDF <limit>) ==========
-// write() clamps targets into them. Infinity where the URDF gives no limit or the slot drives no
-// joint. A NaN target passes the clamp unchanged and is caught by the command writer.
-struct SlotLimits {
-  double position_min;
-  double position_max;
-  double velocity;  // |velocity target| bound
-  double effort;    // |feed-forward effort| bound
-};
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::array<SlotLimits, X2_NUM_MOTOR> kSlotLimits = {{
-    {-2.70526, 2.556907, 11.93808, 120.0},  // 0: "left_hip_pitch_joint"
-    {-0.235619, 2.905973, 11.93808, 120.0},  // 1: "left_hip_roll_joint"
-    {-1.858775925, 3.604104925, 11.93808, 120.0},  // 2: "left_hip_yaw_joint"
-    {0.0, 2.408554, 11.93808, 120.0},  // 3: "left_knee_joint"
-    {-0.802851, 0.453786, 13.6136, 60.0},  // 4: "left_ankle_pitch_joint"
-    {-0.2967059728, 0.2967059728, 14.660799999999998, 36.0},  // 5: "left_ankle_roll_joint"
-    {-2.70526, 2.556907, 11.93808, 120.0},  // 6: "right_hip_pitch_joint"
-    {-2.905973, 0.235619, 11.93808, 120.0},  // 7: "right_hip_roll_joint"
-    {-3.604104925, 1.858775925, 11.93808, 120.0},  // 8: "right_hip_yaw_joint"
-    {0.0, 2.408554, 11.93808, 120.0},  // 9: "right_knee_joint"
-    {-0.802851, 0.453786, 13.6136, 60.0},  // 10: "right_ankle_pitch_joint"
-    {-0.2967059728, 0.2967059728, 14.660799999999998, 36.0},  // 11: "right_ankle_roll_joint"
-    {-3.429572, 2.120575, 11.93808, 120.0},  // 12: "waist_yaw_joint"
-    {-0.314159, 0.314159, 14.660799999999998, 36.0},  // 13: "waist_pitch_joint"
-    {-0.488692, 0.488692, 14.661, 36.0},  // 14: "waist_roll_joint"
-    {-3.080506, 2.033309, 13.6136, 60.0},  // 15: "left_shoulder_pitch_joint"
-    {-0.061087, 3.0456, 13.6136, 60.0},  // 16: "left_shoulder_roll_joint"
-    {-2.556907, 2.556907, 14.660799999999998, 36.0},  // 17: "left_shoulder_yaw_joint"
-    {-2.356194, 0.0, 14.660799999999998, 36.0},  // 18: "left_elbow_joint"
-    {-2.556907, 2.556907, 14.660799999999998, 36.0},  // 19: "left_wrist_yaw_joint"
-    {-0.523599, 0.523599, 15.707999999999998, 6.0},  // 20: "left_wrist_pitch_joint"
-    {-1.50971, 0.724312, 15.707999999999998, 6.0},  // 21: "left_wrist_roll_joint"
-    {-3.080506, 2.033309, 13.6136, 60.0},  // 22: "right_shoulder_pitch_joint"
-    {-3.0456, 0.061087, 13.6136, 60.0},  // 23: "right_shoulder_roll_joint"
-    {-2.556907, 2.556907, 14.660799999999998, 36.0},  // 24: "right_shoulder_yaw_joint"
-    {-2.356194, 0.0, 14.660799999999998, 36.0},  // 25: "right_elbow_joint"
-    {-2.556907, 2.556907, 14.660799999999998, 36.0},  // 26: "right_wrist_yaw_joint"
-    {-0.523599, 0.523599, 15.707999999999998, 6.0},  // 27: "right_wrist_pitch_joint"
-    {-0.724312, 1.50971, 15.707999999999998, 6.0},  // 28: "right_wrist_roll_joint"
-    {-0.488692, 0.488692, 3.3109, 3.13125},  // 29: "head_yaw_joint"
-    {-0.401425, 0.488692, 10.472, 2.0},  // 30: "head_pitch_joint"
+// AimDK joint groups: {name, first motor slot, size, command topic, state topic}
+constexpr std::array<robot_hardware_interface::AimdkJointGroup, 4> kGroups = {{
+  {"leg", 0, 12, "/aima/hal/joint/leg/command", "/aima/hal/joint/leg/state"},
+  {"waist", 12, 3, "/aima/hal/joint/waist/command", "/aima/hal/joint/waist/state"},
+  {"arm", 15, 14, "/aima/hal/joint/arm/command", "/aima/hal/joint/arm/state"},
+  {"head", 29, 2, "/aima/hal/joint/head/command", "/aima/hal/joint/head/state"},
 }};
 
-// One AimDK joint group: a contiguous range of SDK slots with its own command and state topic.
-struct JointGroup {
-  const char* name;
-  size_t offset;  // first SDK slot
-  size_t size;    // entries in the group's messages
-  size_t driven;  // slots of the group that drive a URDF joint
-  const char* command_topic;
-  const char* state_topic;
-};
-
-constexpr std::array<JointGroup, X2_NUM_JOINT_GROUPS> kJointGroups = {{
-    {"leg", 0, 12, 12, "/aima/hal/joint/leg/command", "/aima/hal/joint/leg/state"},
-    {"waist", 12, 3, 3, "/aima/hal/joint/waist/command", "/aima/hal/joint/waist/state"},
-    {"arm", 15, 14, 14, "/aima/hal/joint/arm/command", "/aima/hal/joint/arm/state"},
-    {"head", 29, 2, 2, "/aima/hal/joint/head/command", "/aima/hal/joint/head/state"},
-}};
-constexpr char kImuTopic[] = "/aima/hal/imu/torso/state";
-
-// URDF joint name of every SDK slot ("" where the slot drives no joint): AimDK messages name
-// their entries, so commands carry these names and states are checked against them.
-constexpr std::array<const char*, X2_NUM_MOTOR> kSlotJointNames = {
-    "left_hip_pitch_joint",  // 0
-    "left_hip_roll_joint",  // 1
-    "left_hip_yaw_joint",  // 2
-    "left_knee_joint",  // 3
-    "left_ankle_pitch_joint",  // 4
-    "left_ankle_roll_joint",  // 5
-    "right_hip_pitch_joint",  // 6
-    "right_hip_roll_joint",  // 7
-    "right_hip_yaw_joint",  // 8
-    "right_knee_joint",  // 9
-    "right_ankle_pitch_joint",  // 10
-    "right_ankle_roll_joint",  // 11
-    "waist_yaw_joint",  // 12
-    "waist_pitch_joint",  // 13
-    "waist_roll_joint",  // 14
-    "left_shoulder_pitch_joint",  // 15
-    "left_shoulder_roll_joint",  // 16
-    "left_shoulder_yaw_joint",  // 17
-    "left_elbow_joint",  // 18
-    "left_wrist_yaw_joint",  // 19
-    "left_wrist_pitch_joint",  // 20
-    "left_wrist_roll_joint",  // 21
-    "right_shoulder_pitch_joint",  // 22
-    "right_shoulder_roll_joint",  // 23
-    "right_shoulder_yaw_joint",  // 24
-    "right_elbow_joint",  // 25
-    "right_wrist_yaw_joint",  // 26
-    "right_wrist_pitch_joint",  // 27
-    "right_wrist_roll_joint",  // 28
-    "head_yaw_joint",  // 29
-    "head_pitch_joint",  // 30
-};
-
-constexpr size_t kNoSlot = std::numeric_limits<size_t>::max();
-
-// The SDK slot of entry `position` of a group's state message. Entries are matched by position
-// when the name agrees (or is empty: names are optional in AimDK), otherwise by name within the
-// group. kNoSlot for a joint this driver does not drive. Compares in place: no allocation.
-size_t resolveGroupSlot(const JointGroup& group, size_t position, const std::string& name) {
-  if (position < group.size) {
-    const size_t slot = group.offset + position;
-    if (kSlotJointNames[slot][0] != '\0' && (name.empty() || name == kSlotJointNames[slot])) {
-      return slot;
-    }
-  }
-  if (name.empty()) {
-    return kNoSlot;
-  }
-  for (size_t slot = group.offset; slot < group.offset + group.size; ++slot) {
-    if (kSlotJointNames[slot][0] != '\0' && name == kSlotJointNames[slot]) {
-      return slot;
-    }
-  }
-  return kNoSlot;
-}
-
-// QoS of every publisher and subscription (transport_options.qos):
-// best effort, volatile, keep last 1.
-rclcpp::QoS transportQos() {
-  rclcpp::QoS qos(rclcpp::KeepLast(1));
-  qos.best_effort();
-  qos.durability_volatile();
-  return qos;
-}
+// transport_options: joint groups, IMU topic, qos
+constexpr robot_hardware_interface::AgibotTopicsOptions kTransport{
+  kGroups.data(), kGroups.size(), "/aima/hal/imu/torso/state", {false, false, 1}};
 
 }  // namespace
 
-X2HardwareInterface::~X2HardwareInterface() {
-  // Callbacks must not run into a destroyed object.
-  try {
-    stopExecutor();
-  } catch (const std::exception& e) {
-    RCLCPP_ERROR(logger_, "stopping the executor thread failed: %s", e.what());
-  }
-}
+const std::map<std::string, size_t> X2HardwareInterface::jointIndexMap =
+  robot_hardware_interface::makeJointIndexMap(kJoints);
 
-int X2HardwareInterface::getJointIndex(const std::string& name) {
-  const auto it = jointIndexMap.find(name);
-  if (it != jointIndexMap.end()) {
-    return static_cast<int>(it->second);
-  }
-  return -1;
-}
-
-CallbackReturn X2HardwareInterface::on_init(const hardware_interface::HardwareInfo& info) {
-  if (hardware_interface::SystemInterface::on_init(info) != CallbackReturn::SUCCESS) {
-    return CallbackReturn::ERROR;
-  }
-  jointData_.fill(MotorData{});
-
-  // ========== Parameters ==========
-  const auto& parameters = info_.hardware_parameters;
-  uint64_t state_decimation = state_decimation_;
-  // The ranges rhi-gen accepts in the vendor YAML.
-  if (!readBoolParameter(logger_, parameters, "enable_monitor", monitor_enabled_) ||
-      !readUnsignedParameter(logger_, parameters, "command_writer_period_us", 100, 10000000,
-                             cmd_writer_period_us_) ||
-      !readUnsignedParameter(logger_, parameters, "state_decimation", 1, 10000, state_decimation) ||
-      !readUnsignedParameter(logger_, parameters, "state_timeout_ms", 1, 600000, state_timeout_ms_)) {
-    return CallbackReturn::ERROR;
-  }
-  state_decimation_ = static_cast<uint32_t>(state_decimation);
-  // network_interface is a unitree_sdk2 (DDS) setting: ROS topic transports use the RMW's own
-  // network configuration, so the parameter is accepted and ignored.
-  // rhi-gen:begin-user-region parameters
-  // rhi-gen:end-user-region parameters
-
-  // ========== Joints of the description ==========
-  // Every described joint must be driven here: a typo would otherwise only surface later, as a
-  // controller failing to claim an interface.
-  for (const auto& joint : info_.joints) {
-    if (getJointIndex(joint.name) < 0) {
-      RCLCPP_ERROR(logger_, "joint '%s' of the ros2_control description is not driven by %s",
-                   joint.name.c_str(), "agibot/X2HardwareInterface");
-      return CallbackReturn::ERROR;
-    }
-  }
-  // A driven joint missing from the description gets no interfaces and keeps zero gains (passive).
-  for (const auto& entry : jointIndexMap) {
-    const auto& joints = info_.joints;
-    const bool described = std::any_of(joints.begin(), joints.end(), [&entry](const auto& joint) {
-      return joint.name == entry.first;
-    });
-    if (!described) {
-      RCLCPP_WARN(logger_,
-                  "joint '%s' (motor slot %zu) is not in the ros2_control description: "
-                  "it gets no interfaces and stays passive",
-                  entry.first.c_str(), entry.second);
-    }
-  }
-
-  // ========== Node and transport ==========
-  // SDK and rclcpp calls may throw (bad topic name, network interface, ...): report, never propagate.
-  try {
-    node_ = std::make_shared<rclcpp::Node>("x2_hardware_interface");
-    // rhi-gen:begin-user-region sdk_init
-    // rhi-gen:end-user-region sdk_init
-    const rclcpp::QoS qos = transportQos();
-    for (size_t g = 0; g < X2_NUM_JOINT_GROUPS; ++g) {
-      const JointGroup& group = kJointGroups[g];
-      // Size the command message and name its entries once: the writer only fills in numbers.
-      auto& joints = command_msgs_[g].joints;
-      joints.resize(group.size);
-      for (size_t i = 0; i < group.size; ++i) {
-        joints[i].name = kSlotJointNames[group.offset + i];
-      }
-      command_publishers_[g] =
-          node_->create_publisher<aimdk_msgs::msg::JointCommandArray>(group.command_topic, qos);
-      state_subscriptions_[g] = node_->create_subscription<aimdk_msgs::msg::JointStateArray>(
-          group.state_topic, qos,
-          [this, g](const aimdk_msgs::msg::JointStateArray& msg) { groupStateCallback(g, msg); });
-    }
-    imu_subscription_ = node_->create_subscription<sensor_msgs::msg::Imu>(
-        kImuTopic, qos, [this](const sensor_msgs::msg::Imu& msg) { imuCallback(msg); });
-    executor_ = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
-    executor_->add_node(node_);
-  } catch (const std::exception& e) {
-    RCLCPP_ERROR(logger_, "setting up the transport failed: %s", e.what());
-    return CallbackReturn::ERROR;
-  }
-
-  RCLCPP_INFO(logger_,
-              "initialized: %zu joints, command period %llu us, state decimation %u, "
-              "state timeout %llu ms, monitor %s",
-              jointIndexMap.size(), static_cast<unsigned long long>(cmd_writer_period_us_),
-              state_decimation_, static_cast<unsigned long long>(state_timeout_ms_),
-              monitor_enabled_ ? "on" : "off");
-  return CallbackReturn::SUCCESS;
-}
-
-std::vector<hardware_interface::StateInterface> X2HardwareInterface::export_state_interfaces() {
-  std::vector<hardware_interface::StateInterface> state_interfaces;
-  state_interfaces.reserve(3 * info_.joints.size() + 10);
-
-  // IMU interfaces
-  const std::string imu = "base_imu";
-  state_interfaces.emplace_back(imu, "orientation.x", &imuData_.ori_[0]);
-  state_interfaces.emplace_back(imu, "orientation.y", &imuData_.ori_[1]);
-  state_interfaces.emplace_back(imu, "orientation.z", &imuData_.ori_[2]);
-  state_interfaces.emplace_back(imu, "orientation.w", &imuData_.ori_[3]);
-  state_interfaces.emplace_back(imu, "angular_velocity.x", &imuData_.angularVel_[0]);
-  state_interfaces.emplace_back(imu, "angular_velocity.y", &imuData_.angularVel_[1]);
-  state_interfaces.emplace_back(imu, "angular_velocity.z", &imuData_.angularVel_[2]);
-  state_interfaces.emplace_back(imu, "linear_acceleration.x", &imuData_.linearAcc_[0]);
-  state_interfaces.emplace_back(imu, "linear_acceleration.y", &imuData_.linearAcc_[1]);
-  state_interfaces.emplace_back(imu, "linear_acceleration.z", &imuData_.linearAcc_[2]);
-
-  // Joint interfaces
-  for (const auto& joint : info_.joints) {
-    const int index = getJointIndex(joint.name);
-    if (index < 0) {
-      continue;  // unreachable: on_init rejects unknown joints
-    }
-    MotorData& data = jointData_[static_cast<size_t>(index)];
-    state_interfaces.emplace_back(joint.name, HW_IF_POSITION, &data.pos_);
-    state_interfaces.emplace_back(joint.name, HW_IF_VELOCITY, &data.vel_);
-    state_interfaces.emplace_back(joint.name, HW_IF_EFFORT, &data.tau_);
-  }
-  return state_interfaces;
-}
-
-std::vector<hardware_interface::CommandInterface> X2HardwareInterface::export_command_interfaces() {
-  std::vector<hardware_interface::CommandInterface> command_interfaces;
-  command_interfaces.reserve(5 * info_.joints.size());
-  for (const auto& joint : info_.joints) {
-    const int index = getJointIndex(joint.name);
-    if (index < 0) {
-      continue;  // unreachable: on_init rejects unknown joints
-    }
-    MotorData& data = jointData_[static_cast<size_t>(index)];
-    command_interfaces.emplace_back(joint.name, HW_IF_POSITION, &data.posDes_);
-    command_interfaces.emplace_back(joint.name, HW_IF_VELOCITY, &data.velDes_);
-    command_interfaces.emplace_back(joint.name, HW_IF_STIFFNESS, &data.kp_);
-    command_interfaces.emplace_back(joint.name, HW_IF_DAMPING, &data.kd_);
-    command_interfaces.emplace_back(joint.name, HW_IF_EFFORT, &data.ff_);
-  }
-  return command_interfaces;
-}
-
-CallbackReturn X2HardwareInterface::on_activate(const rclcpp_lifecycle::State& /*previous_state*/) {
-  // Re-arm the safe start: after a deactivation the robot may have moved, so nothing from the
-  // previous activation may be sent. Writer-side state is reset while the writer is stopped.
-  first_state_received_.store(false);
-  command_initialized_.store(false);
-  state_copied_.store(false);
-  last_state_time_ns_.store(0);
-  cmd_writer_last_time_us_.store(0);
-  safe_cmd_ = X2MotorCommand{};
-  holding_ = false;
-
-  // Runs before the transport starts commanding; return CallbackReturn::ERROR to refuse activation.
-  // rhi-gen:begin-user-region on_activate
-  // rhi-gen:end-user-region on_activate
-
-  // Every group has to report again before the first state of this activation (executor stopped).
-  group_reported_.fill(false);
-  groups_reported_ = 0;
-  group_frame_counter_.fill(0);
-  group_state_time_ns_.fill(0);
-  try {
-    command_timer_ = node_->create_wall_timer(std::chrono::microseconds(cmd_writer_period_us_),
-                                              [this]() { commandWriter(); });
-    startExecutor();
-  } catch (const std::exception& e) {
-    RCLCPP_ERROR(logger_, "cannot start the executor thread: %s", e.what());
-    stopExecutor();
-    return CallbackReturn::ERROR;
-  }
-  RCLCPP_INFO(logger_, "activated: commands start after the first valid state");
-  return CallbackReturn::SUCCESS;
-}
-
-CallbackReturn X2HardwareInterface::on_deactivate(const rclcpp_lifecycle::State& /*previous_state*/) {
-  stopExecutor();
-
-  // Runs after the command writer has stopped.
-  // rhi-gen:begin-user-region on_deactivate
-  // rhi-gen:end-user-region on_deactivate
-
-  RCLCPP_INFO(logger_, "deactivated: command writer stopped");
-  return CallbackReturn::SUCCESS;
-}
-
-return_type X2HardwareInterface::read(const rclcpp::Time& /*time*/, const rclcpp::Duration& /*period*/) {
-  const auto start_time = std::chrono::steady_clock::now();
-
-  // Load the flag before fetching: the state callback sets it only after publishing the first
-  // state of this activation, so when it is set the frame fetched below is at least that new.
-  const bool state_is_current = first_state_received_.load(std::memory_order_acquire);
-  const X2MotorState* state = motor_state_buffer_.getData();
-  if (state != nullptr) {
-    for (size_t i = 0; i < X2_NUM_MOTOR; ++i) {
-      jointData_[i].pos_ = static_cast<double>(state->q[i]);
-      jointData_[i].vel_ = static_cast<double>(state->dq[i]);
-      jointData_[i].tau_ = static_cast<double>(state->tau[i]);
-    }
-    if (state_is_current) {
-      state_copied_.store(true, std::memory_order_relaxed);
-    }
-  }
-
-  const X2ImuState* imu = imu_state_buffer_.getData();
-  if (imu != nullptr) {
-    imuData_.ori_[0] = static_cast<double>(imu->quat[1]);  // x
-    imuData_.ori_[1] = static_cast<double>(imu->quat[2]);  // y
-    imuData_.ori_[2] = static_cast<double>(imu->quat[3]);  // z
-    imuData_.ori_[3] = static_cast<double>(imu->quat[0]);  // w
-    for (size_t i = 0; i < 3; ++i) {
-      imuData_.angularVel_[i] = static_cast<double>(imu->omega[i]);
-      imuData_.linearAcc_[i] = static_cast<double>(imu->acc[i]);
-    }
-  }
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::READ_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "read() took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::READ_WARN_US));
-    }
-  }
-  return return_type::OK;
-}
-
-return_type X2HardwareInterface::write(const rclcpp::Time& /*time*/, const rclcpp::Duration& /*period*/) {
-  const auto start_time = std::chrono::steady_clock::now();
-
-  // Layer 3: nothing is forwarded before read() has copied a state of this activation; stale
-  // zeros in jointData_ must never become a position target.
-  if (!state_copied_.load(std::memory_order_relaxed)) {
-    return return_type::OK;
-  }
-  if (!command_initialized_.load(std::memory_order_relaxed)) {
-    for (MotorData& joint : jointData_) {
-      joint.posDes_ = joint.pos_;  // target = measured position
-      joint.velDes_ = 0.0;
-      joint.kp_ = 0.0;  // zero gains: the robot stays passive until a controller commands it
-      joint.kd_ = 0.0;
-      joint.ff_ = 0.0;
-    }
-    command_initialized_.store(true, std::memory_order_relaxed);
-    RCLCPP_INFO(logger_, "command initialized to the measured position with zero gains");
-  }
-
-  for (size_t i = 0; i < X2_NUM_MOTOR; ++i) {
-    const MotorData& joint = jointData_[i];
-    const SlotLimits& limits = kSlotLimits[i];
-    const double position = std::clamp(joint.posDes_, limits.position_min, limits.position_max);
-    const double velocity = std::clamp(joint.velDes_, -limits.velocity, limits.velocity);
-    const double effort = std::clamp(joint.ff_, -limits.effort, limits.effort);
-    motor_cmd_cache_.q_target[i] = static_cast<double>(position);
-    motor_cmd_cache_.dq_target[i] = static_cast<double>(velocity);
-    motor_cmd_cache_.kp[i] = static_cast<double>(joint.kp_);
-    motor_cmd_cache_.kd[i] = static_cast<double>(joint.kd_);
-    motor_cmd_cache_.tau_ff[i] = static_cast<double>(effort);
-  }
-  motor_command_buffer_.setData(motor_cmd_cache_);
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::WRITE_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "write() took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::WRITE_WARN_US));
-    }
-  }
-  return return_type::OK;
-}
-
-// State callback context: hand a validated state (motor_state_cache_) over to read(), and on the
-// first one of an activation seed the command buffer (layer 2) before the writer may send.
-void X2HardwareInterface::publishState(int64_t state_time_ns) {
-  state_frames_valid_ = true;
-  motor_state_buffer_.setData(motor_state_cache_);
-  last_state_time_ns_.store(state_time_ns, std::memory_order_release);
-  if (first_state_received_.load(std::memory_order_acquire)) {
-    return;
-  }
-  // Layer 2: the first command is "stay where you are": measured position, all gains zero.
-  for (size_t i = 0; i < X2_NUM_MOTOR; ++i) {
-    initial_cmd_cache_.q_target[i] = motor_state_cache_.q[i];
-    initial_cmd_cache_.dq_target[i] = 0;
-    initial_cmd_cache_.kp[i] = 0;
-    initial_cmd_cache_.kd[i] = 0;
-    initial_cmd_cache_.tau_ff[i] = 0;
-  }
-  motor_command_buffer_.setData(initial_cmd_cache_);
-  first_state_received_.store(true, std::memory_order_release);
-  RCLCPP_INFO(logger_,
-              "first state received: command initialized to the measured position with zero gains");
-}
-
-bool X2HardwareInterface::stateIsStale() const {
-  const int64_t age_ns = steadyNowNs() - last_state_time_ns_.load(std::memory_order_acquire);
-  return age_ns > static_cast<int64_t>(state_timeout_ms_) * 1000000;
-}
-
-// Command writer context: turn the newest command into safe_cmd_, the frame actually sent.
-// Returns false while nothing may be sent.
-bool X2HardwareInterface::prepareCommand() {
-  // Layer 1: send nothing before the first valid state of this activation.
-  if (!first_state_received_.load(std::memory_order_acquire)) {
-    return false;
-  }
-  const X2MotorCommand* cmd = motor_command_buffer_.getData();
-  if (cmd == nullptr) {
-    return false;  // unreachable: layer 2 published a command before setting the flag
-  }
-
-  // Stale state: the controller is working blind, so every joint holds its last safe target
-  // with damping only (kp = 0, no velocity target, no feed-forward).
-  const bool stale = stateIsStale();
-  if (stale) {
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "no valid state for more than %llu ms: holding the last safe command "
-                         "with kp = 0",
-                         static_cast<unsigned long long>(state_timeout_ms_));
-  } else if (holding_) {
-    RCLCPP_INFO(logger_, "state is back: forwarding commands again");
-  }
-  holding_ = stale;
-
-  bool rejected = false;
-  for (size_t i = 0; i < X2_NUM_MOTOR; ++i) {
-    // Non-finite values or negative gains are never forwarded: that joint holds damping-only.
-    const bool valid = allFinite(cmd->q_target[i], cmd->dq_target[i], cmd->kp[i], cmd->kd[i],
-                                 cmd->tau_ff[i]) &&
-                       cmd->kp[i] >= 0 && cmd->kd[i] >= 0;
-    if (stale || !valid) {
-      // Keep the last safe position target and damping of this joint.
-      safe_cmd_.dq_target[i] = 0;
-      safe_cmd_.kp[i] = 0;
-      safe_cmd_.tau_ff[i] = 0;
-      rejected = rejected || !valid;
-      continue;
-    }
-    safe_cmd_.q_target[i] = cmd->q_target[i];
-    safe_cmd_.dq_target[i] = cmd->dq_target[i];
-    safe_cmd_.kp[i] = cmd->kp[i];
-    safe_cmd_.kd[i] = cmd->kd[i];
-    safe_cmd_.tau_ff[i] = cmd->tau_ff[i];
-  }
-  if (rejected) {
-    ++invalid_command_count_;
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "non-finite command or negative gain: joint(s) held with damping only "
-                         "(%llu cycles so far)",
-                         static_cast<unsigned long long>(invalid_command_count_));
-  }
-  return true;
-}
-
-// Command writer context: warn when the send interval deviates from the configured period.
-void X2HardwareInterface::checkWriterJitter() {
-  const uint64_t now_us = steadyNowUs();
-  const uint64_t last_us = cmd_writer_last_time_us_.exchange(now_us, std::memory_order_relaxed);
-  if (last_us == 0 || now_us < last_us) {
-    return;
-  }
-  const int64_t jitter_us =
-      static_cast<int64_t>(now_us - last_us) - static_cast<int64_t>(cmd_writer_period_us_);
-  if (static_cast<uint64_t>(std::llabs(jitter_us)) > MonitorThresholds::CMD_INTERVAL_JITTER_WARN_US) {
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "command interval jitter: %lld us (expected period: %llu us)",
-                         static_cast<long long>(jitter_us),
-                         static_cast<unsigned long long>(cmd_writer_period_us_));
-  }
-}
-
-void X2HardwareInterface::startExecutor() {
-  executor_stopped_.store(false, std::memory_order_release);
-  executor_thread_ = std::thread([this]() {
-    try {
-      executor_->spin();
-    } catch (const std::exception& e) {
-      RCLCPP_ERROR(logger_, "executor thread stopped: %s", e.what());
-    }
-    executor_stopped_.store(true, std::memory_order_release);
-  });
-}
-
-void X2HardwareInterface::stopExecutor() {
-  if (executor_thread_.joinable()) {
-    // A cancel() issued before spin() has started is lost (rclcpp behaviour) and join() would then
-    // wait forever: repeat it until the thread has really left spin().
-    while (!executor_stopped_.load(std::memory_order_acquire)) {
-      executor_->cancel();
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    executor_thread_.join();
-  }
-  if (command_timer_) {
-    command_timer_->cancel();
-    command_timer_.reset();
-  }
-}
-
-// Executor thread: the JointStateArray of one group.
-void X2HardwareInterface::groupStateCallback(
-    size_t group_index, const aimdk_msgs::msg::JointStateArray& msg) {
-  const auto start_time = std::chrono::steady_clock::now();
-  const JointGroup& group = kJointGroups[group_index];
-  if (msg.state.value != 0U) {  // DomainErrorState: 1 damping, 2 power down, 3 disable, 4 disconnect
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "AimDK HAL reports error state %u for joint group '%s'",
-                         static_cast<unsigned>(msg.state.value), group.name);
-  }
-
-  // Decimation per group: the first frame of a group in an activation is always processed.
-  const uint32_t frame_count = group_frame_counter_[group_index]++;
-  if (group_reported_[group_index] && (frame_count % state_decimation_) != 0U) {
-    // A skipped frame still proves that the group reports: it keeps the group fresh for the
-    // stale-state check, unless the group's last processed frame was rejected.
-    if (group_frames_valid_[group_index]) {
-      group_state_time_ns_[group_index] = steadyNowNs();
-      if (groups_reported_ == X2_NUM_JOINT_GROUPS) {
-        last_state_time_ns_.store(*std::min_element(group_state_time_ns_.begin(), group_state_time_ns_.end()),
-                                  std::memory_order_release);
-      }
-    }
-    return;
-  }
-
-  // Validate the whole frame before touching the cache: a rejected frame must leave no trace.
-  size_t matched = 0;
-  for (size_t i = 0; i < msg.joints.size(); ++i) {
-    const auto& joint = msg.joints[i];
-    if (resolveGroupSlot(group, i, joint.name) == kNoSlot) {
-      continue;
-    }
-    if (!allFinite(joint.position, joint.velocity, joint.effort)) {
-      group_frames_valid_[group_index] = false;
-      ++invalid_state_count_;
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "dropped state frame: "
-                           "non-finite value for joint %zu of group '%s' (%llu dropped so far)",
-                           i, group.name,
-                           static_cast<unsigned long long>(invalid_state_count_));
-      return;
-    }
-    ++matched;
-  }
-  if (matched < group.driven) {
-    group_frames_valid_[group_index] = false;
-    ++invalid_state_count_;
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "dropped state frame: "
-                         "group '%s' reported %zu of its %zu joints (%llu dropped so far)",
-                         group.name, matched, group.driven,
-                         static_cast<unsigned long long>(invalid_state_count_));
-    return;
-  }
-  for (size_t i = 0; i < msg.joints.size(); ++i) {
-    const auto& joint = msg.joints[i];
-    const size_t slot = resolveGroupSlot(group, i, joint.name);
-    if (slot == kNoSlot) {
-      continue;
-    }
-    motor_state_cache_.q[slot] = static_cast<double>(joint.position);
-    motor_state_cache_.dq[slot] = static_cast<double>(joint.velocity);
-    motor_state_cache_.tau[slot] = static_cast<double>(joint.effort);
-  }
-
-  group_state_time_ns_[group_index] = steadyNowNs();
-  group_frames_valid_[group_index] = true;
-  if (!group_reported_[group_index]) {
-    group_reported_[group_index] = true;
-    ++groups_reported_;
-  }
-  // First-state rule: only once every group has reported is the state complete. Its age is the
-  // age of the oldest group, so one silent group makes the whole state stale.
-  if (groups_reported_ == X2_NUM_JOINT_GROUPS) {
-    publishState(*std::min_element(group_state_time_ns_.begin(), group_state_time_ns_.end()));
-  }
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::STATE_HANDLER_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "state callback took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::STATE_HANDLER_WARN_US));
-    }
-  }
-}
-
-// Executor thread: sensor_msgs/Imu (orientation x, y, z, w).
-void X2HardwareInterface::imuCallback(const sensor_msgs::msg::Imu& msg) {
-  if (!allFinite(msg.orientation.x, msg.orientation.y, msg.orientation.z, msg.orientation.w) ||
-      !allFinite(msg.angular_velocity.x, msg.angular_velocity.y, msg.angular_velocity.z) ||
-      !allFinite(msg.linear_acceleration.x, msg.linear_acceleration.y, msg.linear_acceleration.z)) {
-    ++invalid_imu_count_;
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "dropped IMU sample with non-finite values (%llu dropped so far)",
-                         static_cast<unsigned long long>(invalid_imu_count_));
-    return;
-  }
-  imu_state_cache_.quat[0] = static_cast<double>(msg.orientation.w);  // ROS order is x, y, z, w
-  imu_state_cache_.quat[1] = static_cast<double>(msg.orientation.x);
-  imu_state_cache_.quat[2] = static_cast<double>(msg.orientation.y);
-  imu_state_cache_.quat[3] = static_cast<double>(msg.orientation.z);
-  imu_state_cache_.omega[0] = static_cast<double>(msg.angular_velocity.x);
-  imu_state_cache_.omega[1] = static_cast<double>(msg.angular_velocity.y);
-  imu_state_cache_.omega[2] = static_cast<double>(msg.angular_velocity.z);
-  imu_state_cache_.acc[0] = static_cast<double>(msg.linear_acceleration.x);
-  imu_state_cache_.acc[1] = static_cast<double>(msg.linear_acceleration.y);
-  imu_state_cache_.acc[2] = static_cast<double>(msg.linear_acceleration.z);
-  imu_state_buffer_.setData(imu_state_cache_);
-}
-
-// Executor thread (wall timer): one JointCommandArray per group every cmd_writer_period_us_.
-void X2HardwareInterface::commandWriter() {
-  const auto start_time = std::chrono::steady_clock::now();
-  if (monitor_enabled_) {
-    checkWriterJitter();
-  }
-  if (!prepareCommand()) {
-    return;
-  }
-
-  const rclcpp::Time now = node_->now();
-  ++command_sequence_;
-  for (size_t g = 0; g < X2_NUM_JOINT_GROUPS; ++g) {
-    const JointGroup& group = kJointGroups[g];
-    aimdk_msgs::msg::JointCommandArray& msg = command_msgs_[g];
-    msg.header.stamp = now;
-    msg.header.sequence = command_sequence_;
-    for (size_t i = 0; i < group.size; ++i) {
-      const size_t slot = group.offset + i;
-      aimdk_msgs::msg::JointCommand& joint = msg.joints[i];
-      joint.position = static_cast<double>(safe_cmd_.q_target[slot]);
-      joint.velocity = static_cast<double>(safe_cmd_.dq_target[slot]);
-      joint.effort = static_cast<double>(safe_cmd_.tau_ff[slot]);
-      joint.stiffness = static_cast<double>(safe_cmd_.kp[slot]);
-      joint.damping = static_cast<double>(safe_cmd_.kd[slot]);
-    }
-    command_publishers_[g]->publish(msg);
-  }
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::CMD_WRITER_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "command writer took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::CMD_WRITER_WARN_US));
-    }
-  }
+X2HardwareInterface::X2HardwareInterface()
+: SystemDriver(kRobot, std::make_unique<Transport>(kTransport))
+{
 }
 
 // rhi-gen:begin-user-region callbacks

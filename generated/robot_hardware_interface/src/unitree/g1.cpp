@@ -2,723 +2,82 @@
 // Do not edit outside rhi-gen user regions: run `rhi-gen generate` after changing the inputs.
 #include "robot_hardware_interface/unitree/g1.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdlib>
-#include <exception>
-#include <limits>
+#include <array>
+#include <map>
+#include <memory>
 #include <string>
-#include <string_view>
 
 #include <pluginlib/class_list_macros.hpp>
-#include <rclcpp/logging.hpp>
-#include <unitree/common/thread/recurrent_thread.hpp>
-#include <unitree/robot/channel/channel_factory.hpp>
 
-#include "robot_hardware_interface/transport/unitree_hg_crc.hpp"
+#include "robot_hardware_interface/transport/unitree_dds.hpp"
+#include "robot_hardware_interface/transport/unitree_hg.hpp"
 
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
-namespace unitree {
+namespace unitree
+{
+namespace
+{
 
-using robot_hardware_interface::elapsedUs;
-using robot_hardware_interface::steadyNowNs;
-using robot_hardware_interface::steadyNowUs;
+using Transport = robot_hardware_interface::UnitreeDdsTransport<
+  G1_NUM_MOTOR, float, robot_hardware_interface::unitree_hg::Family>;
 
-// Interface name constants
-constexpr char HW_IF_STIFFNESS[] = "stiffness";
-constexpr char HW_IF_DAMPING[] = "damping";
-constexpr char HW_IF_POSITION[] = "position";
-constexpr char HW_IF_VELOCITY[] = "velocity";
-constexpr char HW_IF_EFFORT[] = "effort";
-
-namespace {
-
-// ========== Hardware parameters ==========
-// ros2_control hands <param> values over as text. They are parsed by hand: std::stoul throws on
-// garbage and silently turns "-1" into a huge number.
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) {
-    return {};
-  }
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
-
-bool parseUnsigned(std::string_view text, uint64_t& value) {
-  text = trimmed(text);
-  if (text.empty() || text.size() > 18) {  // 18 digits always fit in uint64_t
-    return false;
-  }
-  uint64_t result = 0;
-  for (const char c : text) {
-    if (c < '0' || c > '9') {
-      return false;
-    }
-    result = result * 10U + static_cast<uint64_t>(c - '0');
-  }
-  value = result;
-  return true;
-}
-
-bool parseBool(std::string_view text, bool& value) {
-  text = trimmed(text);
-  // xacro renders Python booleans as True/False.
-  if (text == "true" || text == "True" || text == "TRUE" || text == "1") {
-    value = true;
-    return true;
-  }
-  if (text == "false" || text == "False" || text == "FALSE" || text == "0") {
-    value = false;
-    return true;
-  }
-  return false;
-}
-
-// True when every value is finite: NaN and infinity never reach ros2_control or the motors.
-template <typename... Values>
-bool allFinite(Values... values) {
-  return (std::isfinite(values) && ...);
-}
-
-// Reads an optional unsigned parameter in [min, max]; a missing one keeps `value` (the default).
-template <typename Parameters>
-bool readUnsignedParameter(const rclcpp::Logger& logger, const Parameters& parameters,
-                           const char* name, uint64_t min, uint64_t max, uint64_t& value) {
-  const auto it = parameters.find(name);
-  if (it == parameters.end()) {
-    return true;
-  }
-  uint64_t parsed = 0;
-  if (!parseUnsigned(it->second, parsed) || parsed < min || parsed > max) {
-    RCLCPP_ERROR(logger, "hardware parameter '%s' is '%s': expected an integer from %llu to %llu",
-                 name, it->second.c_str(), static_cast<unsigned long long>(min),
-                 static_cast<unsigned long long>(max));
-    return false;
-  }
-  value = parsed;
-  return true;
-}
-
-template <typename Parameters>
-bool readBoolParameter(const rclcpp::Logger& logger, const Parameters& parameters,
-                       const char* name, bool& value) {
-  const auto it = parameters.find(name);
-  if (it == parameters.end()) {
-    return true;
-  }
-  if (!parseBool(it->second, value)) {
-    RCLCPP_ERROR(logger, "hardware parameter '%s' is '%s': expected true or false", name,
-                 it->second.c_str());
-    return false;
-  }
-  return true;
-}
-
-// ========== Command limits per SDK slot (URDF <limit>) ==========
-// write() clamps targets into them. Infinity where the URDF gives no limit or the slot drives no
-// joint. A NaN target passes the clamp unchanged and is caught by the command writer.
-struct SlotLimits {
-  double position_min;
-  double position_max;
-  double velocity;  // |velocity target| bound
-  double effort;    // |feed-forward effort| bound
-};
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::array<SlotLimits, G1_NUM_MOTOR> kSlotLimits = {{
-    {-2.5307, 2.8798, 32.0, 88.0},  // 0: "left_hip_pitch_joint"
-    {-0.5236, 2.9671, 20.0, 139.0},  // 1: "left_hip_roll_joint"
-    {-2.7576, 2.7576, 32.0, 88.0},  // 2: "left_hip_yaw_joint"
-    {-0.087267, 2.8798, 20.0, 139.0},  // 3: "left_knee_joint"
-    {-0.87267, 0.5236, 30.0, 35.0},  // 4: "left_ankle_pitch_joint"
-    {-0.2618, 0.2618, 30.0, 35.0},  // 5: "left_ankle_roll_joint"
-    {-2.5307, 2.8798, 32.0, 88.0},  // 6: "right_hip_pitch_joint"
-    {-2.9671, 0.5236, 20.0, 139.0},  // 7: "right_hip_roll_joint"
-    {-2.7576, 2.7576, 32.0, 88.0},  // 8: "right_hip_yaw_joint"
-    {-0.087267, 2.8798, 20.0, 139.0},  // 9: "right_knee_joint"
-    {-0.87267, 0.5236, 30.0, 35.0},  // 10: "right_ankle_pitch_joint"
-    {-0.2618, 0.2618, 30.0, 35.0},  // 11: "right_ankle_roll_joint"
-    {-2.618, 2.618, 32.0, 88.0},  // 12: "waist_yaw_joint"
-    {-0.52, 0.52, 30.0, 35.0},  // 13: "waist_roll_joint"
-    {-0.52, 0.52, 30.0, 35.0},  // 14: "waist_pitch_joint"
-    {-3.0892, 2.6704, 37.0, 25.0},  // 15: "left_shoulder_pitch_joint"
-    {-1.5882, 2.2515, 37.0, 25.0},  // 16: "left_shoulder_roll_joint"
-    {-2.618, 2.618, 37.0, 25.0},  // 17: "left_shoulder_yaw_joint"
-    {-1.0472, 2.0944, 37.0, 25.0},  // 18: "left_elbow_joint"
-    {-1.972222054, 1.972222054, 37.0, 25.0},  // 19: "left_wrist_roll_joint"
-    {-1.614429558, 1.614429558, 22.0, 5.0},  // 20: "left_wrist_pitch_joint"
-    {-1.614429558, 1.614429558, 22.0, 5.0},  // 21: "left_wrist_yaw_joint"
-    {-3.0892, 2.6704, 37.0, 25.0},  // 22: "right_shoulder_pitch_joint"
-    {-2.2515, 1.5882, 37.0, 25.0},  // 23: "right_shoulder_roll_joint"
-    {-2.618, 2.618, 37.0, 25.0},  // 24: "right_shoulder_yaw_joint"
-    {-1.0472, 2.0944, 37.0, 25.0},  // 25: "right_elbow_joint"
-    {-1.972222054, 1.972222054, 37.0, 25.0},  // 26: "right_wrist_roll_joint"
-    {-1.614429558, 1.614429558, 22.0, 5.0},  // 27: "right_wrist_pitch_joint"
-    {-1.614429558, 1.614429558, 22.0, 5.0},  // 28: "right_wrist_yaw_joint"
+// URDF joint -> SDK motor slot, with the URDF limits write() clamps to:
+// {name, slot, position min, position max, |velocity| max, |effort| max}
+constexpr std::array<robot_hardware_interface::JointSpec, 29> kJoints = {{
+  {"left_hip_pitch_joint", 0, -2.5307, 2.8798, 32.0, 88.0},
+  {"left_hip_roll_joint", 1, -0.5236, 2.9671, 20.0, 139.0},
+  {"left_hip_yaw_joint", 2, -2.7576, 2.7576, 32.0, 88.0},
+  {"left_knee_joint", 3, -0.087267, 2.8798, 20.0, 139.0},
+  {"left_ankle_pitch_joint", 4, -0.87267, 0.5236, 30.0, 35.0},
+  {"left_ankle_roll_joint", 5, -0.2618, 0.2618, 30.0, 35.0},
+  {"right_hip_pitch_joint", 6, -2.5307, 2.8798, 32.0, 88.0},
+  {"right_hip_roll_joint", 7, -2.9671, 0.5236, 20.0, 139.0},
+  {"right_hip_yaw_joint", 8, -2.7576, 2.7576, 32.0, 88.0},
+  {"right_knee_joint", 9, -0.087267, 2.8798, 20.0, 139.0},
+  {"right_ankle_pitch_joint", 10, -0.87267, 0.5236, 30.0, 35.0},
+  {"right_ankle_roll_joint", 11, -0.2618, 0.2618, 30.0, 35.0},
+  {"waist_yaw_joint", 12, -2.618, 2.618, 32.0, 88.0},
+  {"waist_roll_joint", 13, -0.52, 0.52, 30.0, 35.0},
+  {"waist_pitch_joint", 14, -0.52, 0.52, 30.0, 35.0},
+  {"left_shoulder_pitch_joint", 15, -3.0892, 2.6704, 37.0, 25.0},
+  {"left_shoulder_roll_joint", 16, -1.5882, 2.2515, 37.0, 25.0},
+  {"left_shoulder_yaw_joint", 17, -2.618, 2.618, 37.0, 25.0},
+  {"left_elbow_joint", 18, -1.0472, 2.0944, 37.0, 25.0},
+  {"left_wrist_roll_joint", 19, -1.972222054, 1.972222054, 37.0, 25.0},
+  {"left_wrist_pitch_joint", 20, -1.614429558, 1.614429558, 22.0, 5.0},
+  {"left_wrist_yaw_joint", 21, -1.614429558, 1.614429558, 22.0, 5.0},
+  {"right_shoulder_pitch_joint", 22, -3.0892, 2.6704, 37.0, 25.0},
+  {"right_shoulder_roll_joint", 23, -2.2515, 1.5882, 37.0, 25.0},
+  {"right_shoulder_yaw_joint", 24, -2.618, 2.618, 37.0, 25.0},
+  {"right_elbow_joint", 25, -1.0472, 2.0944, 37.0, 25.0},
+  {"right_wrist_roll_joint", 26, -1.972222054, 1.972222054, 37.0, 25.0},
+  {"right_wrist_pitch_joint", 27, -1.614429558, 1.614429558, 22.0, 5.0},
+  {"right_wrist_yaw_joint", 28, -1.614429558, 1.614429558, 22.0, 5.0},
 }};
+static_assert(robot_hardware_interface::slotsAreValid(kJoints, G1_NUM_MOTOR), "joint table");
 
-// SDK slots that drive a URDF joint, in slot order.
-constexpr std::array<size_t, 29> kMappedSlots = {
-    0,  // "left_hip_pitch_joint"
-    1,  // "left_hip_roll_joint"
-    2,  // "left_hip_yaw_joint"
-    3,  // "left_knee_joint"
-    4,  // "left_ankle_pitch_joint"
-    5,  // "left_ankle_roll_joint"
-    6,  // "right_hip_pitch_joint"
-    7,  // "right_hip_roll_joint"
-    8,  // "right_hip_yaw_joint"
-    9,  // "right_knee_joint"
-    10,  // "right_ankle_pitch_joint"
-    11,  // "right_ankle_roll_joint"
-    12,  // "waist_yaw_joint"
-    13,  // "waist_roll_joint"
-    14,  // "waist_pitch_joint"
-    15,  // "left_shoulder_pitch_joint"
-    16,  // "left_shoulder_roll_joint"
-    17,  // "left_shoulder_yaw_joint"
-    18,  // "left_elbow_joint"
-    19,  // "left_wrist_roll_joint"
-    20,  // "left_wrist_pitch_joint"
-    21,  // "left_wrist_yaw_joint"
-    22,  // "right_shoulder_pitch_joint"
-    23,  // "right_shoulder_roll_joint"
-    24,  // "right_shoulder_yaw_joint"
-    25,  // "right_elbow_joint"
-    26,  // "right_wrist_roll_joint"
-    27,  // "right_wrist_pitch_joint"
-    28,  // "right_wrist_yaw_joint"
-};
+// Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
+// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
+constexpr robot_hardware_interface::RobotSpec kRobot{"unitree/G1HardwareInterface",
+  "g1_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
+  {"eth0", true, 2000, 1, 100}};
 
-using LowCmd = ::unitree_hg::msg::dds_::LowCmd_;
-using LowState = ::unitree_hg::msg::dds_::LowState_;
-namespace hg_crc = robot_hardware_interface::unitree_hg_crc;
-
-// transport_options of the vendor YAML
-constexpr int32_t kDomainId = 0;
-constexpr char kLowCmdTopic[] = "rt/lowcmd";
-constexpr char kLowStateTopic[] = "rt/lowstate";
-constexpr uint8_t kModePr = 0;  // 0 = PR (series pitch/roll), 1 = AB (parallel A/B)
-constexpr uint8_t kMotorEnable = 1;   // MotorCmd_.mode: 1 enable, 0 disable
-constexpr int64_t kStateQueueLength = 1;  // only the newest LowState_ matters
-
-static_assert(G1_NUM_MOTOR <= hg_crc::MOTOR_SLOTS, "more motors than LowCmd_ slots");
+// transport_options: domain_id, lowcmd_topic, lowstate_topic, mode_pr (hg: 0 PR, 1 AB),
+// motor modes (go), release_motion_control, verify_state_crc
+constexpr robot_hardware_interface::UnitreeDdsOptions kTransport{
+  0, "rt/lowcmd", "rt/lowstate", 0,
+  nullptr, false, true};
 
 }  // namespace
 
-G1HardwareInterface::~G1HardwareInterface() {
-  // The SDK's threads would otherwise keep calling into a destroyed object.
-  try {
-    stopCommandWriter();
-    if (lowstate_subscriber_) {
-      lowstate_subscriber_->CloseChannel();
-    }
-    if (lowcmd_publisher_) {
-      lowcmd_publisher_->CloseChannel();
-    }
-  } catch (const std::exception& e) {
-    RCLCPP_ERROR(logger_, "shutting down unitree_sdk2 channels failed: %s", e.what());
-  }
-}
+const std::map<std::string, size_t> G1HardwareInterface::jointIndexMap =
+  robot_hardware_interface::makeJointIndexMap(kJoints);
 
-int G1HardwareInterface::getJointIndex(const std::string& name) {
-  const auto it = jointIndexMap.find(name);
-  if (it != jointIndexMap.end()) {
-    return static_cast<int>(it->second);
-  }
-  return -1;
-}
-
-CallbackReturn G1HardwareInterface::on_init(const hardware_interface::HardwareInfo& info) {
-  if (hardware_interface::SystemInterface::on_init(info) != CallbackReturn::SUCCESS) {
-    return CallbackReturn::ERROR;
-  }
-  jointData_.fill(MotorData{});
-
-  // ========== Parameters ==========
-  const auto& parameters = info_.hardware_parameters;
-  uint64_t state_decimation = state_decimation_;
-  // The ranges rhi-gen accepts in the vendor YAML.
-  if (!readBoolParameter(logger_, parameters, "enable_monitor", monitor_enabled_) ||
-      !readUnsignedParameter(logger_, parameters, "command_writer_period_us", 100, 10000000,
-                             cmd_writer_period_us_) ||
-      !readUnsignedParameter(logger_, parameters, "state_decimation", 1, 10000, state_decimation) ||
-      !readUnsignedParameter(logger_, parameters, "state_timeout_ms", 1, 600000, state_timeout_ms_)) {
-    return CallbackReturn::ERROR;
-  }
-  state_decimation_ = static_cast<uint32_t>(state_decimation);
-  const auto network_interface = parameters.find("network_interface");
-  if (network_interface != parameters.end()) {
-    network_interface_ = std::string(trimmed(network_interface->second));
-  }
-  // rhi-gen:begin-user-region parameters
-  // rhi-gen:end-user-region parameters
-
-  // ========== Joints of the description ==========
-  // Every described joint must be driven here: a typo would otherwise only surface later, as a
-  // controller failing to claim an interface.
-  for (const auto& joint : info_.joints) {
-    if (getJointIndex(joint.name) < 0) {
-      RCLCPP_ERROR(logger_, "joint '%s' of the ros2_control description is not driven by %s",
-                   joint.name.c_str(), "unitree/G1HardwareInterface");
-      return CallbackReturn::ERROR;
-    }
-  }
-  // A driven joint missing from the description gets no interfaces and keeps zero gains (passive).
-  for (const auto& entry : jointIndexMap) {
-    const auto& joints = info_.joints;
-    const bool described = std::any_of(joints.begin(), joints.end(), [&entry](const auto& joint) {
-      return joint.name == entry.first;
-    });
-    if (!described) {
-      RCLCPP_WARN(logger_,
-                  "joint '%s' (motor slot %zu) is not in the ros2_control description: "
-                  "it gets no interfaces and stays passive",
-                  entry.first.c_str(), entry.second);
-    }
-  }
-
-  // ========== Node and transport ==========
-  // SDK and rclcpp calls may throw (bad topic name, network interface, ...): report, never propagate.
-  try {
-    node_ = std::make_shared<rclcpp::Node>("g1_hardware_interface");
-    // rhi-gen:begin-user-region sdk_init
-    // rhi-gen:end-user-region sdk_init
-    // One DDS participant per process, bound to the robot's network interface.
-    ::unitree::robot::ChannelFactory::Instance()->Init(kDomainId, network_interface_);
-
-    // The command message is reused for every send: fill the constant parts once. Slots that
-    // drive no URDF joint keep mode 0 (disabled) and all-zero targets.
-    low_cmd_ = LowCmd{};
-    low_cmd_.mode_pr() = kModePr;
-    for (const size_t slot : kMappedSlots) {
-      low_cmd_.motor_cmd()[slot].mode() = kMotorEnable;
-    }
-    lowcmd_publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowCmd>>(kLowCmdTopic);
-    lowcmd_publisher_->InitChannel();
-
-    // State flows from now on, also while inactive, so read() reports the real robot early.
-    lowstate_subscriber_ =
-        std::make_shared<::unitree::robot::ChannelSubscriber<LowState>>(kLowStateTopic);
-    lowstate_subscriber_->InitChannel([this](const void* message) { lowStateHandler(message); },
-                                      kStateQueueLength);
-    RCLCPP_INFO(logger_, "unitree_sdk2 DDS on '%s' (domain %d): publishing %s, subscribed to %s",
-                network_interface_.c_str(), static_cast<int>(kDomainId), kLowCmdTopic, kLowStateTopic);
-  } catch (const std::exception& e) {
-    RCLCPP_ERROR(logger_, "setting up the transport failed: %s", e.what());
-    return CallbackReturn::ERROR;
-  }
-
-  RCLCPP_INFO(logger_,
-              "initialized: %zu joints, command period %llu us, state decimation %u, "
-              "state timeout %llu ms, monitor %s",
-              jointIndexMap.size(), static_cast<unsigned long long>(cmd_writer_period_us_),
-              state_decimation_, static_cast<unsigned long long>(state_timeout_ms_),
-              monitor_enabled_ ? "on" : "off");
-  return CallbackReturn::SUCCESS;
-}
-
-std::vector<hardware_interface::StateInterface> G1HardwareInterface::export_state_interfaces() {
-  std::vector<hardware_interface::StateInterface> state_interfaces;
-  state_interfaces.reserve(3 * info_.joints.size() + 10);
-
-  // IMU interfaces
-  const std::string imu = "base_imu";
-  state_interfaces.emplace_back(imu, "orientation.x", &imuData_.ori_[0]);
-  state_interfaces.emplace_back(imu, "orientation.y", &imuData_.ori_[1]);
-  state_interfaces.emplace_back(imu, "orientation.z", &imuData_.ori_[2]);
-  state_interfaces.emplace_back(imu, "orientation.w", &imuData_.ori_[3]);
-  state_interfaces.emplace_back(imu, "angular_velocity.x", &imuData_.angularVel_[0]);
-  state_interfaces.emplace_back(imu, "angular_velocity.y", &imuData_.angularVel_[1]);
-  state_interfaces.emplace_back(imu, "angular_velocity.z", &imuData_.angularVel_[2]);
-  state_interfaces.emplace_back(imu, "linear_acceleration.x", &imuData_.linearAcc_[0]);
-  state_interfaces.emplace_back(imu, "linear_acceleration.y", &imuData_.linearAcc_[1]);
-  state_interfaces.emplace_back(imu, "linear_acceleration.z", &imuData_.linearAcc_[2]);
-
-  // Joint interfaces
-  for (const auto& joint : info_.joints) {
-    const int index = getJointIndex(joint.name);
-    if (index < 0) {
-      continue;  // unreachable: on_init rejects unknown joints
-    }
-    MotorData& data = jointData_[static_cast<size_t>(index)];
-    state_interfaces.emplace_back(joint.name, HW_IF_POSITION, &data.pos_);
-    state_interfaces.emplace_back(joint.name, HW_IF_VELOCITY, &data.vel_);
-    state_interfaces.emplace_back(joint.name, HW_IF_EFFORT, &data.tau_);
-  }
-  return state_interfaces;
-}
-
-std::vector<hardware_interface::CommandInterface> G1HardwareInterface::export_command_interfaces() {
-  std::vector<hardware_interface::CommandInterface> command_interfaces;
-  command_interfaces.reserve(5 * info_.joints.size());
-  for (const auto& joint : info_.joints) {
-    const int index = getJointIndex(joint.name);
-    if (index < 0) {
-      continue;  // unreachable: on_init rejects unknown joints
-    }
-    MotorData& data = jointData_[static_cast<size_t>(index)];
-    command_interfaces.emplace_back(joint.name, HW_IF_POSITION, &data.posDes_);
-    command_interfaces.emplace_back(joint.name, HW_IF_VELOCITY, &data.velDes_);
-    command_interfaces.emplace_back(joint.name, HW_IF_STIFFNESS, &data.kp_);
-    command_interfaces.emplace_back(joint.name, HW_IF_DAMPING, &data.kd_);
-    command_interfaces.emplace_back(joint.name, HW_IF_EFFORT, &data.ff_);
-  }
-  return command_interfaces;
-}
-
-CallbackReturn G1HardwareInterface::on_activate(const rclcpp_lifecycle::State& /*previous_state*/) {
-  // Re-arm the safe start: after a deactivation the robot may have moved, so nothing from the
-  // previous activation may be sent. Writer-side state is reset while the writer is stopped.
-  first_state_received_.store(false);
-  command_initialized_.store(false);
-  state_copied_.store(false);
-  last_state_time_ns_.store(0);
-  cmd_writer_last_time_us_.store(0);
-  state_frame_counter_.store(0);
-  safe_cmd_ = G1MotorCommand{};
-  holding_ = false;
-
-  // Runs before the transport starts commanding; return CallbackReturn::ERROR to refuse activation.
-  // rhi-gen:begin-user-region on_activate
-  // rhi-gen:end-user-region on_activate
-
-  try {
-    command_writer_thread_ = ::unitree::common::CreateRecurrentThreadEx(
-        "command_writer", UT_CPU_ID_NONE, cmd_writer_period_us_, &G1HardwareInterface::commandWriter, this);
-  } catch (const std::exception& e) {
-    RCLCPP_ERROR(logger_, "cannot start the command writer thread: %s", e.what());
-    return CallbackReturn::ERROR;
-  }
-  RCLCPP_INFO(logger_, "activated: commands start after the first valid state");
-  return CallbackReturn::SUCCESS;
-}
-
-CallbackReturn G1HardwareInterface::on_deactivate(const rclcpp_lifecycle::State& /*previous_state*/) {
-  stopCommandWriter();
-
-  // Runs after the command writer has stopped.
-  // rhi-gen:begin-user-region on_deactivate
-  // rhi-gen:end-user-region on_deactivate
-
-  RCLCPP_INFO(logger_, "deactivated: command writer stopped");
-  return CallbackReturn::SUCCESS;
-}
-
-return_type G1HardwareInterface::read(const rclcpp::Time& /*time*/, const rclcpp::Duration& /*period*/) {
-  const auto start_time = std::chrono::steady_clock::now();
-
-  // Load the flag before fetching: the state callback sets it only after publishing the first
-  // state of this activation, so when it is set the frame fetched below is at least that new.
-  const bool state_is_current = first_state_received_.load(std::memory_order_acquire);
-  const G1MotorState* state = motor_state_buffer_.getData();
-  if (state != nullptr) {
-    for (size_t i = 0; i < G1_NUM_MOTOR; ++i) {
-      jointData_[i].pos_ = static_cast<double>(state->q[i]);
-      jointData_[i].vel_ = static_cast<double>(state->dq[i]);
-      jointData_[i].tau_ = static_cast<double>(state->tau[i]);
-    }
-    if (state_is_current) {
-      state_copied_.store(true, std::memory_order_relaxed);
-    }
-  }
-
-  const G1ImuState* imu = imu_state_buffer_.getData();
-  if (imu != nullptr) {
-    imuData_.ori_[0] = static_cast<double>(imu->quat[1]);  // x
-    imuData_.ori_[1] = static_cast<double>(imu->quat[2]);  // y
-    imuData_.ori_[2] = static_cast<double>(imu->quat[3]);  // z
-    imuData_.ori_[3] = static_cast<double>(imu->quat[0]);  // w
-    for (size_t i = 0; i < 3; ++i) {
-      imuData_.angularVel_[i] = static_cast<double>(imu->omega[i]);
-      imuData_.linearAcc_[i] = static_cast<double>(imu->acc[i]);
-    }
-  }
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::READ_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "read() took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::READ_WARN_US));
-    }
-  }
-  return return_type::OK;
-}
-
-return_type G1HardwareInterface::write(const rclcpp::Time& /*time*/, const rclcpp::Duration& /*period*/) {
-  const auto start_time = std::chrono::steady_clock::now();
-
-  // Layer 3: nothing is forwarded before read() has copied a state of this activation; stale
-  // zeros in jointData_ must never become a position target.
-  if (!state_copied_.load(std::memory_order_relaxed)) {
-    return return_type::OK;
-  }
-  if (!command_initialized_.load(std::memory_order_relaxed)) {
-    for (MotorData& joint : jointData_) {
-      joint.posDes_ = joint.pos_;  // target = measured position
-      joint.velDes_ = 0.0;
-      joint.kp_ = 0.0;  // zero gains: the robot stays passive until a controller commands it
-      joint.kd_ = 0.0;
-      joint.ff_ = 0.0;
-    }
-    command_initialized_.store(true, std::memory_order_relaxed);
-    RCLCPP_INFO(logger_, "command initialized to the measured position with zero gains");
-  }
-
-  for (size_t i = 0; i < G1_NUM_MOTOR; ++i) {
-    const MotorData& joint = jointData_[i];
-    const SlotLimits& limits = kSlotLimits[i];
-    const double position = std::clamp(joint.posDes_, limits.position_min, limits.position_max);
-    const double velocity = std::clamp(joint.velDes_, -limits.velocity, limits.velocity);
-    const double effort = std::clamp(joint.ff_, -limits.effort, limits.effort);
-    motor_cmd_cache_.q_target[i] = static_cast<float>(position);
-    motor_cmd_cache_.dq_target[i] = static_cast<float>(velocity);
-    motor_cmd_cache_.kp[i] = static_cast<float>(joint.kp_);
-    motor_cmd_cache_.kd[i] = static_cast<float>(joint.kd_);
-    motor_cmd_cache_.tau_ff[i] = static_cast<float>(effort);
-  }
-  motor_command_buffer_.setData(motor_cmd_cache_);
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::WRITE_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "write() took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::WRITE_WARN_US));
-    }
-  }
-  return return_type::OK;
-}
-
-// State callback context: hand a validated state (motor_state_cache_) over to read(), and on the
-// first one of an activation seed the command buffer (layer 2) before the writer may send.
-void G1HardwareInterface::publishState(int64_t state_time_ns) {
-  state_frames_valid_ = true;
-  motor_state_buffer_.setData(motor_state_cache_);
-  last_state_time_ns_.store(state_time_ns, std::memory_order_release);
-  if (first_state_received_.load(std::memory_order_acquire)) {
-    return;
-  }
-  // Layer 2: the first command is "stay where you are": measured position, all gains zero.
-  for (size_t i = 0; i < G1_NUM_MOTOR; ++i) {
-    initial_cmd_cache_.q_target[i] = motor_state_cache_.q[i];
-    initial_cmd_cache_.dq_target[i] = 0;
-    initial_cmd_cache_.kp[i] = 0;
-    initial_cmd_cache_.kd[i] = 0;
-    initial_cmd_cache_.tau_ff[i] = 0;
-  }
-  motor_command_buffer_.setData(initial_cmd_cache_);
-  first_state_received_.store(true, std::memory_order_release);
-  RCLCPP_INFO(logger_,
-              "first state received: command initialized to the measured position with zero gains");
-}
-
-bool G1HardwareInterface::stateIsStale() const {
-  const int64_t age_ns = steadyNowNs() - last_state_time_ns_.load(std::memory_order_acquire);
-  return age_ns > static_cast<int64_t>(state_timeout_ms_) * 1000000;
-}
-
-// Command writer context: turn the newest command into safe_cmd_, the frame actually sent.
-// Returns false while nothing may be sent.
-bool G1HardwareInterface::prepareCommand() {
-  // Layer 1: send nothing before the first valid state of this activation.
-  if (!first_state_received_.load(std::memory_order_acquire)) {
-    return false;
-  }
-  const G1MotorCommand* cmd = motor_command_buffer_.getData();
-  if (cmd == nullptr) {
-    return false;  // unreachable: layer 2 published a command before setting the flag
-  }
-
-  // Stale state: the controller is working blind, so every joint holds its last safe target
-  // with damping only (kp = 0, no velocity target, no feed-forward).
-  const bool stale = stateIsStale();
-  if (stale) {
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "no valid state for more than %llu ms: holding the last safe command "
-                         "with kp = 0",
-                         static_cast<unsigned long long>(state_timeout_ms_));
-  } else if (holding_) {
-    RCLCPP_INFO(logger_, "state is back: forwarding commands again");
-  }
-  holding_ = stale;
-
-  bool rejected = false;
-  for (size_t i = 0; i < G1_NUM_MOTOR; ++i) {
-    // Non-finite values or negative gains are never forwarded: that joint holds damping-only.
-    const bool valid = allFinite(cmd->q_target[i], cmd->dq_target[i], cmd->kp[i], cmd->kd[i],
-                                 cmd->tau_ff[i]) &&
-                       cmd->kp[i] >= 0 && cmd->kd[i] >= 0;
-    if (stale || !valid) {
-      // Keep the last safe position target and damping of this joint.
-      safe_cmd_.dq_target[i] = 0;
-      safe_cmd_.kp[i] = 0;
-      safe_cmd_.tau_ff[i] = 0;
-      rejected = rejected || !valid;
-      continue;
-    }
-    safe_cmd_.q_target[i] = cmd->q_target[i];
-    safe_cmd_.dq_target[i] = cmd->dq_target[i];
-    safe_cmd_.kp[i] = cmd->kp[i];
-    safe_cmd_.kd[i] = cmd->kd[i];
-    safe_cmd_.tau_ff[i] = cmd->tau_ff[i];
-  }
-  if (rejected) {
-    ++invalid_command_count_;
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "non-finite command or negative gain: joint(s) held with damping only "
-                         "(%llu cycles so far)",
-                         static_cast<unsigned long long>(invalid_command_count_));
-  }
-  return true;
-}
-
-// Command writer context: warn when the send interval deviates from the configured period.
-void G1HardwareInterface::checkWriterJitter() {
-  const uint64_t now_us = steadyNowUs();
-  const uint64_t last_us = cmd_writer_last_time_us_.exchange(now_us, std::memory_order_relaxed);
-  if (last_us == 0 || now_us < last_us) {
-    return;
-  }
-  const int64_t jitter_us =
-      static_cast<int64_t>(now_us - last_us) - static_cast<int64_t>(cmd_writer_period_us_);
-  if (static_cast<uint64_t>(std::llabs(jitter_us)) > MonitorThresholds::CMD_INTERVAL_JITTER_WARN_US) {
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "command interval jitter: %lld us (expected period: %llu us)",
-                         static_cast<long long>(jitter_us),
-                         static_cast<unsigned long long>(cmd_writer_period_us_));
-  }
-}
-
-// DDS listener thread: every LowState_ frame (500 Hz - 1 kHz).
-void G1HardwareInterface::lowStateHandler(const void* message) {
-  const auto start_time = std::chrono::steady_clock::now();
-  const LowState& low_state = *static_cast<const LowState*>(message);
-
-  // ========== Every frame: integrity and safety-critical fields (lightweight) ==========
-  if (low_state.crc() != hg_crc::lowStateCrc(low_state)) {
-    ++crc_error_count_;
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "dropped LowState_ with a bad CRC (%llu so far)",
-                         static_cast<unsigned long long>(crc_error_count_));
-    return;
-  }
-  mode_machine_.store(low_state.mode_machine(), std::memory_order_relaxed);
-
-  // ========== Decimation: full processing of every state_decimation-th frame only ==========
-  const bool is_first_state = !first_state_received_.load(std::memory_order_acquire);
-  const uint32_t frame_count = state_frame_counter_.fetch_add(1, std::memory_order_relaxed);
-  if (!is_first_state && (frame_count % state_decimation_) != 0U) {
-    // A skipped frame still proves that state arrives: it keeps the state fresh for the stale-state
-    // check, unless the last processed frame was rejected.
-    if (state_frames_valid_) {
-      last_state_time_ns_.store(steadyNowNs(), std::memory_order_release);
-    }
-    return;
-  }
-
-  // ========== Full processing ==========
-  const auto& motors = low_state.motor_state();
-  for (const size_t slot : kMappedSlots) {
-    const auto& motor = motors[slot];
-    if (!allFinite(motor.q(), motor.dq(), motor.tau_est())) {
-      state_frames_valid_ = false;
-      ++invalid_state_count_;
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "dropped state frame: "
-                           "non-finite value in motor slot %zu (%llu dropped so far)",
-                           slot,
-                           static_cast<unsigned long long>(invalid_state_count_));
-      return;
-    }
-    motor_state_cache_.q[slot] = static_cast<float>(motor.q());
-    motor_state_cache_.dq[slot] = static_cast<float>(motor.dq());
-    motor_state_cache_.tau[slot] = static_cast<float>(motor.tau_est());
-  }
-
-  const auto& imu = low_state.imu_state();
-  const auto& quat = imu.quaternion();
-  const auto& gyro = imu.gyroscope();
-  const auto& acc = imu.accelerometer();
-  if (allFinite(quat[0], quat[1], quat[2], quat[3]) && allFinite(gyro[0], gyro[1], gyro[2]) &&
-      allFinite(acc[0], acc[1], acc[2])) {
-    for (size_t i = 0; i < 4; ++i) {
-      imu_state_cache_.quat[i] = static_cast<float>(quat[i]);  // w, x, y, z
-    }
-    for (size_t i = 0; i < 3; ++i) {
-      imu_state_cache_.omega[i] = static_cast<float>(gyro[i]);
-      imu_state_cache_.acc[i] = static_cast<float>(acc[i]);
-    }
-    imu_state_buffer_.setData(imu_state_cache_);
-  } else {
-    ++invalid_imu_count_;
-    RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                         "dropped IMU sample with non-finite values (%llu dropped so far)",
-                         static_cast<unsigned long long>(invalid_imu_count_));
-  }
-
-  publishState(steadyNowNs());
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::STATE_HANDLER_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "state handler took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::STATE_HANDLER_WARN_US));
-    }
-  }
-}
-
-// SDK recurrent thread: one LowCmd_ every cmd_writer_period_us_.
-void G1HardwareInterface::commandWriter() {
-  const auto start_time = std::chrono::steady_clock::now();
-  if (monitor_enabled_) {
-    checkWriterJitter();
-  }
-  if (!prepareCommand()) {
-    return;
-  }
-
-  low_cmd_.mode_machine() = mode_machine_.load(std::memory_order_relaxed);
-  for (const size_t slot : kMappedSlots) {
-    auto& motor = low_cmd_.motor_cmd()[slot];
-    motor.q() = static_cast<float>(safe_cmd_.q_target[slot]);
-    motor.dq() = static_cast<float>(safe_cmd_.dq_target[slot]);
-    motor.tau() = static_cast<float>(safe_cmd_.tau_ff[slot]);
-    motor.kp() = static_cast<float>(safe_cmd_.kp[slot]);
-    motor.kd() = static_cast<float>(safe_cmd_.kd[slot]);
-  }
-  low_cmd_.crc() = hg_crc::lowCmdCrc(low_cmd_);
-  lowcmd_publisher_->Write(low_cmd_);
-
-  if (monitor_enabled_) {
-    const uint64_t duration_us = elapsedUs(start_time);
-    if (duration_us > MonitorThresholds::CMD_WRITER_WARN_US) {
-      RCLCPP_WARN_THROTTLE(logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
-                           "command writer took %llu us (threshold: %llu us)",
-                           static_cast<unsigned long long>(duration_us),
-                           static_cast<unsigned long long>(MonitorThresholds::CMD_WRITER_WARN_US));
-    }
-  }
-}
-
-void G1HardwareInterface::stopCommandWriter() {
-  if (!command_writer_thread_) {
-    return;
-  }
-  // The SDK creates its threads detached and does not join them on destruction: Wait() (virtual;
-  // RecurrentThread's override sets the loop's quit flag, then waits for the loop to end) is what
-  // guarantees commandWriter() has returned for good.
-  command_writer_thread_->Wait();
-  command_writer_thread_.reset();
+G1HardwareInterface::G1HardwareInterface()
+: SystemDriver(kRobot, std::make_unique<Transport>(kTransport))
+{
 }
 
 // rhi-gen:begin-user-region callbacks

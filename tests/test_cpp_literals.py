@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from lxml import etree
 
-from rhi_gen.cpp_literals import cpp_double, cpp_string, header_guard, xml_escape, yaml_string
+from rhi_gen.render.literals import cpp_double, cpp_string, xml_escape, yaml_string
 from tests.cpp_build import require_compiler
 
 HOSTILE = ['plain', 'quote"inside', "back\\slash", "new\nline", "tab\tcr\r", "trigraph??=", "é中文",
@@ -61,7 +61,3 @@ def test_cpp_double_round_trips():
         assert float(text) == value
     assert cpp_double(float("inf")) == "std::numeric_limits<double>::infinity()"
     assert cpp_double(3) == "3.0"
-
-
-def test_header_guard():
-    assert header_guard("robot_hardware_interface/unitree/g1.hpp") == "ROBOT_HARDWARE_INTERFACE_UNITREE_G1_HPP_"

@@ -26,8 +26,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from lxml import etree
 
-from rhi_gen.naming import identifier_problem, pascal_case, vendor_problem
-from rhi_gen.xacro_expand import expand_xacro
+from rhi_gen.model.naming import identifier_problem, pascal_case, vendor_problem
+from rhi_gen.inputs.xacro_expand import expand_xacro
 from tests.cpp_build import syntax_check_driver
 from tests.test_hostile_inputs import ANY_LINE, assert_rejected, run_cli, snapshot
 

@@ -31,7 +31,7 @@ from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
-from .errors import UrdfError
+from ..errors import UrdfError
 
 __all__ = ["expand_xacro"]
 

@@ -3,7 +3,7 @@
 - The XML is parsed with lxml without recovery, entity expansion or network access, so a broken
   file is one ``file:line: malformed XML: ...`` line, never a silently repaired robot.
 - ``*.xacro`` files (and any file whose root declares the xacro namespace) are expanded first by
-  :func:`rhi_gen.xacro_expand.expand_xacro`.
+  :func:`rhi_gen.inputs.xacro_expand.expand_xacro`.
 - The kinematic structure is checked the way ROS' urdfdom does (every joint names a type, a parent
   and a child; revolute/prismatic joints have a <limit> with effort and velocity; the links form
   exactly one tree) plus what rhi-gen relies on (no duplicate names, mimic targets exist).
@@ -23,8 +23,8 @@ from pathlib import Path
 
 from lxml import etree
 
-from .errors import UrdfError
-from .model import (
+from ..errors import UrdfError
+from ..model import (
     JointLimits,
     Mimic,
     Ros2ControlBlock,

@@ -127,6 +127,10 @@ def _print_file_diffs(changes: Sequence[FileChange], colour: bool) -> None:
     sys.stdout.flush()
 
 
+FORCE_HELP = ("Overwrite generated files edited outside their user regions (or holding code in regions the "
+              "templates dropped); each is first copied to generated/.rhi-gen-backup/<path>.N.")
+
+
 def _version_line(old: str, new: str) -> str:
     return (f"generated/ was made by rhi-gen {old}, not by this rhi-gen {new}: `rhi-gen generate` records "
             "the new version and rewrites only files whose content changes")
@@ -136,9 +140,7 @@ def _version_line(old: str, new: str) -> str:
 def generate(robots: RobotsArg = None,
              dry_run: Annotated[bool, typer.Option("--dry-run", help="Show what would change, write nothing.")] = False,
              verbose: Annotated[bool, typer.Option("--verbose", "-v", help="Also list unchanged files.")] = False,
-             force: Annotated[bool, typer.Option(
-                 "--force", help="Overwrite generated files edited outside their user regions (or holding code in "
-                 "regions the templates dropped); each is first copied to generated/.rhi-gen-backup/<path>.N.")] = False,
+             force: Annotated[bool, typer.Option("--force", help=FORCE_HELP)] = False,
              project: ProjectOpt = None) -> None:
     """(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.
 
@@ -203,9 +205,11 @@ def diff(robots: RobotsArg = None, project: ProjectOpt = None) -> None:
 
 @app.command()
 def check(project: ProjectOpt = None) -> None:
-    """CI gate: exit 1 when inputs changed since the last generate (stale fingerprints in the manifest),
-    generated/ differs from what `generate` would write, or another rhi-gen version wrote it; prints
-    why, then the unified diff."""
+    """CI gate: exit 1 when generated/ is not what `generate` would write now.
+
+    That is: a robot's inputs changed since the last generate (stale fingerprints in the manifest), a
+    file differs, or another rhi-gen version wrote generated/. Prints why, then the unified diff.
+    """
     from .pipeline.generate import plan_generation
     from .pipeline.load import load_robots
 
@@ -291,7 +295,7 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         _err("interrupted; nothing half-written was left behind")
         return 130
-    except Exception as exc:  # noqa: BLE001 (click usage errors and real bugs: both must end in an exit code)
+    except Exception as exc:  # click usage errors and real bugs: both must end in an exit code
         # Typer ships click either as a dependency or vendored (typer._click): match by class name.
         names = {cls.__name__ for cls in type(exc).__mro__}
         if "Abort" in names:

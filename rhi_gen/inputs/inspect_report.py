@@ -12,10 +12,11 @@ def _fmt(value: float | None) -> str:
 def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | None = None) -> str:
     """The report: every joint with type, limits and mimic, then the suggested joint_map."""
     actuated = urdf.actuated_joints
-    out = [f"robot {urdf.name!r} from {urdf.source}: {len(urdf.joints)} joints, {len(urdf.links)} links, "
-           f"{len(actuated)} actuated, {len(urdf.mimic_joints)} mimic"]
+    out = [(f"robot {urdf.name!r} from {urdf.source}: {len(urdf.joints)} joints, {len(urdf.links)} links, "
+            f"{len(actuated)} actuated, {len(urdf.mimic_joints)} mimic")]
     width = max([len(j.name) for j in urdf.joints] + [5])
-    out.append(f"  {'#':>3}  {'joint':<{width}}  {'type':<10}  {'lower':>9} {'upper':>9} {'effort':>8} {'velocity':>8}  note")
+    out.append(f"  {'#':>3}  {'joint':<{width}}  {'type':<10}  {'lower':>9} {'upper':>9} {'effort':>8} "
+               f"{'velocity':>8}  note")
     for i, j in enumerate(urdf.joints):
         lim = j.limits
         note = []

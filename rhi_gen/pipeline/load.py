@@ -66,8 +66,8 @@ def check_unique(project: Project, robots: Sequence[LoadedRobot]) -> None:
         classes[key] = r
 
 
-def load_selected(project: Project, names: Sequence[str] | None,
-                  progress: Callable[[str], None] = lambda _: None) -> tuple[list[LoadedRobot], list[LoadedRobot] | None]:
+def load_selected(project: Project, names: Sequence[str] | None, progress: Callable[[str], None] = lambda _: None,
+                  ) -> tuple[list[LoadedRobot], list[LoadedRobot] | None]:
     """Every robot (shared files need them all) and, when ``names`` are given, the chosen ones."""
     every = robot_yamls(project)
     if not every:

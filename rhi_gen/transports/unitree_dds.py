@@ -36,7 +36,9 @@ class UnitreeDds(Transport):
     option_keys = ("lowcmd_topic", "lowstate_topic", "sdk_slots", "domain_id", "mode_pr", "release_motion_control")
     default_float_type = "float"
     dependencies = (Dependency("unitree_sdk2", PLAIN_CMAKE),)
-    shared_files = (("transport/unitree_hg_crc.hpp.j2", "include/robot_hardware_interface/transport/unitree_hg_crc.hpp"),)
+    shared_files = (
+        ("transport/unitree_hg_crc.hpp.j2", "include/robot_hardware_interface/transport/unitree_hg_crc.hpp"),
+    )
     vendors = ("unitree",)
     known_robots = (
         KnownRobot("unitree", "g1", NAME, G1_ORDER, "G1 29-DoF motor order from unitree_sdk2 enum G1JointIndex"),

@@ -48,8 +48,8 @@ class RobotDiff:
         if self.status == "new":
             r = self.new_record
             assert r is not None
-            return [f"{self.key}: new robot ({len(r.joints)} joints, {r.motor_count} motors, {r.float_type}; "
-                    f"{r.yaml_path}, {r.urdf_path})"]
+            return [(f"{self.key}: new robot ({len(r.joints)} joints, {r.motor_count} motors, {r.float_type}; "
+                     f"{r.yaml_path}, {r.urdf_path})")]
         if self.status == "removed":
             r = self.old_record
             assert r is not None
@@ -154,7 +154,8 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None, *, yaml_compara
     for o, n in pairs:
         if o.type != n.type:
             types.append((n.name, n.index, o.type, n.type))
-        fields = tuple((k, a, b) for (k, a), (_, b) in zip(o.limit_items(), n.limit_items()) if not _same(a, b))
+        fields = tuple((k, a, b) for (k, a), (_, b) in zip(o.limit_items(), n.limit_items(), strict=True)
+                       if not _same(a, b))
         if fields:
             limits.append((n.name, n.index, fields))
 

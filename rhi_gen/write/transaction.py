@@ -6,6 +6,7 @@ failure at any point leaves every file as it was.
 """
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
 from pathlib import Path
@@ -84,20 +85,16 @@ def apply(out_root: Path, changes: list[FileChange]) -> None:
 def _restore(swapped: list[tuple[Path, Path | None]]) -> None:
     """Undo the swaps, newest first: old files back in place, new files gone."""
     for target, aside in reversed(swapped):
-        try:
+        with contextlib.suppress(OSError):  # best effort: restore every other file too
             if aside is not None:
                 os.replace(aside, target)
             elif target.exists():
                 target.unlink()
-        except OSError:
-            pass
 
 
 def _quiet_unlink(path: Path) -> None:
-    try:
+    with contextlib.suppress(OSError):
         path.unlink(missing_ok=True)
-    except OSError:
-        pass
 
 
 def _discard(staged: list[tuple[FileChange, Path | None]], made_dirs: list[Path]) -> None:
@@ -105,10 +102,8 @@ def _discard(staged: list[tuple[FileChange, Path | None]], made_dirs: list[Path]
         if tmp is not None:
             _quiet_unlink(tmp)
     for folder in reversed(made_dirs):
-        try:
+        with contextlib.suppress(OSError):
             folder.rmdir()
-        except OSError:
-            pass
 
 
 def _remove_empty_dirs(root: Path, removed: list[Path]) -> None:

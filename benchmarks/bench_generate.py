@@ -15,9 +15,10 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from rhi_gen.pipeline import load_robots, plan_changes  # noqa: E402
+from rhi_gen.inputs.urdf_loader import parse_urdf_bytes  # noqa: E402
+from rhi_gen.pipeline.generate import plan_generation  # noqa: E402
+from rhi_gen.pipeline.load import load_robots  # noqa: E402
 from rhi_gen.project import Project  # noqa: E402
-from rhi_gen.urdf_loader import parse_urdf_bytes  # noqa: E402
 
 
 def timed(fn, repeat: int = 5) -> tuple[float, float]:
@@ -41,11 +42,11 @@ def big_urdf(joints: int) -> bytes:
 
 def main() -> None:
     project = Project(REPO)
-    med, best = timed(lambda: plan_changes(project, load_robots(project)))
+    med, best = timed(lambda: plan_generation(project, load_robots(project)))
     print(f"load + render + compare, 3 reference robots: median {med*1000:.0f} ms (best {best*1000:.0f} ms)")
 
     tracemalloc.start()
-    plan_changes(project, load_robots(project))
+    plan_generation(project, load_robots(project))
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     print(f"peak Python memory for that: {peak/1e6:.1f} MB")
@@ -57,7 +58,7 @@ def main() -> None:
 
     for n in (1000, 5000):
         xml = big_urdf(n)
-        med, _ = timed(lambda: parse_urdf_bytes(xml, source="big.urdf"), repeat=3)
+        med, _ = timed(lambda xml=xml: parse_urdf_bytes(xml, source="big.urdf"), repeat=3)
         print(f"parse a {n}-joint URDF ({len(xml)/1e6:.2f} MB): median {med*1000:.0f} ms")
 
     with tempfile.TemporaryDirectory() as tmp:

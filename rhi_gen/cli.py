@@ -2,31 +2,47 @@
 
 Exit codes: 0 ok, 1 differences found (check/diff), 2 bad input (one line on stderr, nothing written),
 3 internal error (a bug in rhi-gen; set RHI_GEN_DEBUG=1 for the traceback).
+
+The pipeline is imported inside each command, so `--help` and `--version` stay fast.
 """
 from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Sequence
 from pathlib import Path
-from typing import List, Optional
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from . import __version__
-from .errors import RhiGenError
+from .errors import ProjectError, RhiGenError
+from .transports import DEFAULT as DEFAULT_TRANSPORT
+from .transports import NAMES as TRANSPORT_NAMES
+
+if TYPE_CHECKING:
+    from .project import Project
+    from .write.changes import FileChange
+    from .write.semantic_diff import RobotDiff
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="Generate complete ros2_control hardware interfaces from a URDF and a vendor YAML.")
 
-ProjectOpt = typer.Option(None, "--project", "-C", help="Project folder holding robots/ and generated/ "
-                          "(default: the current folder or its nearest parent with robots/).")
+ProjectOpt = Annotated[Path | None, typer.Option(
+    "--project", "-C", help="Project folder holding robots/ and generated/ "
+    "(default: the current folder or its nearest parent with robots/).")]
+XacroArgOpt = Annotated[list[str] | None, typer.Option("--xacro-arg", help="NAME=VALUE, repeatable.")]
+PackagePathOpt = Annotated[list[str] | None, typer.Option(
+    "--package-path", help="PKG=DIR for $(find PKG), repeatable.")]
+RobotsArg = Annotated[list[str] | None, typer.Argument(
+    help="Robots (name or vendor/name); default: all.", show_default=False)]
 
 
 def _err(text: str) -> None:
     typer.echo(text, err=True)
 
 
-def _parse_pairs(values: List[str] | None, option: str) -> dict[str, str]:
+def _parse_pairs(values: Sequence[str] | None, option: str) -> dict[str, str]:
     out: dict[str, str] = {}
     for value in values or []:
         if "=" not in value or not value.split("=", 1)[0]:
@@ -37,13 +53,13 @@ def _parse_pairs(values: List[str] | None, option: str) -> dict[str, str]:
     return out
 
 
-def _project(project: Optional[Path]):
+def _project(project: Path | None) -> Project:
     from .project import find_project
 
     return find_project(project)
 
 
-def _print_changes(changes, *, verbose: bool) -> dict[str, int]:
+def _print_changes(changes: Sequence[FileChange], *, verbose: bool) -> dict[str, int]:
     counts = {"created": 0, "changed": 0, "unchanged": 0, "removed": 0}
     for c in changes:
         counts[c.status] += 1
@@ -53,25 +69,23 @@ def _print_changes(changes, *, verbose: bool) -> dict[str, int]:
 
 
 def _summary(counts: dict[str, int], *, dry_run: bool = False) -> str:
-    verb = "would be" if dry_run else ""
     parts = ", ".join(f"{n} {k}" for k, n in counts.items())
-    return f"summary: {parts}" + (f" ({verb} written: dry run)" if dry_run else "")
+    return f"summary: {parts}" + (" (would be written: dry run)" if dry_run else "")
 
 
 @app.command()
-def new(vendor: str = typer.Option(..., help="Vendor name: C++ namespace and folder (e.g. unitree)."),
-        robot: str = typer.Option(..., help="Robot name: file stem (e.g. g1)."),
-        urdf: Path = typer.Option(..., help="The robot's URDF or .xacro file."),
-        transport: Optional[str] = typer.Option(None, help="unitree_dds | agibot_topics | engineai_topics | "
-                                                "generic_topics (default: the vendor's, else generic_topics)."),
-        xacro_arg: Optional[List[str]] = typer.Option(None, "--xacro-arg", help="NAME=VALUE, repeatable."),
-        package_path: Optional[List[str]] = typer.Option(None, "--package-path",
-                                                         help="PKG=DIR for $(find PKG), repeatable."),
-        force: bool = typer.Option(False, "--force", help="Overwrite an existing robot YAML."),
-        project: Optional[Path] = ProjectOpt) -> None:
+def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and folder (e.g. unitree).")],
+        robot: Annotated[str, typer.Option(help="Robot name: file stem (e.g. g1).")],
+        urdf: Annotated[Path, typer.Option(help="The robot's URDF or .xacro file.")],
+        transport: Annotated[str | None, typer.Option(
+            help=f"{' | '.join(TRANSPORT_NAMES)} (default: the vendor's, else {DEFAULT_TRANSPORT}).")] = None,
+        xacro_arg: XacroArgOpt = None,
+        package_path: PackagePathOpt = None,
+        force: Annotated[bool, typer.Option("--force", help="Overwrite an existing robot YAML.")] = False,
+        project: ProjectOpt = None) -> None:
     """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
-    from .pipeline import plan_new_robot
-    from .writer import apply
+    from .pipeline.new_robot import plan_new_robot
+    from .write.transaction import apply
 
     proj = _project(project)
     plan = plan_new_robot(proj, vendor=vendor, robot=robot, urdf_path=urdf, transport=transport,
@@ -95,26 +109,7 @@ def _bold(text: str, colour: bool) -> str:
     return f"\x1b[1m{text}\x1b[0m" if colour else text
 
 
-def _load_selected(proj, names: Optional[List[str]]):
-    """Every robot (shared files need them all) and, when names are given, the chosen ones."""
-    from .pipeline import check_unique, load_robot
-    from .project import robot_yamls, select_yamls
-
-    every = robot_yamls(proj)
-    if not every:
-        raise RhiGenError("no robots found", file=proj.relative(proj.robots_dir),
-                          fix="add one with `rhi-gen new --vendor V --robot R --urdf FILE`")
-    chosen = set(select_yamls(proj, names))
-    loaded = []
-    for path in every:
-        _err(f"loading {proj.relative(path)}")
-        loaded.append(load_robot(proj, path))
-    check_unique(proj, loaded)
-    only = [r for r in loaded if r.yaml_path in chosen] if names else None
-    return loaded, only
-
-
-def _print_robot_diffs(diffs, colour: bool, prefix: str = "") -> None:
+def _print_robot_diffs(diffs: Sequence[RobotDiff], colour: bool, prefix: str = "") -> None:
     for d in diffs:
         first, *rest = d.lines()
         typer.echo(_bold(prefix + first, colour))
@@ -122,39 +117,43 @@ def _print_robot_diffs(diffs, colour: bool, prefix: str = "") -> None:
             typer.echo(line)
 
 
-def _print_file_diffs(changes, colour: bool) -> int:
-    from .writer import colour_diff, unified_diff
+def _print_file_diffs(changes: Sequence[FileChange], colour: bool) -> None:
+    from .write.diff_text import colour_diff, unified_diff
 
-    n = 0
     for c in changes:
-        if c.status == "unchanged":
-            continue
-        n += 1
-        text = unified_diff(c, prefix="generated/")
-        sys.stdout.write(colour_diff(text) if colour else text)
+        if c.status != "unchanged":
+            text = unified_diff(c, prefix="generated/")
+            sys.stdout.write(colour_diff(text) if colour else text)
     sys.stdout.flush()
-    return n
+
+
+FORCE_HELP = ("Overwrite generated files edited outside their user regions (or holding code in regions the "
+              "templates dropped); each is first copied to generated/.rhi-gen-backup/<path>.N.")
+
+
+def _version_line(old: str, new: str) -> str:
+    return (f"generated/ was made by rhi-gen {old}, not by this rhi-gen {new}: `rhi-gen generate` records "
+            "the new version and rewrites only files whose content changes")
 
 
 @app.command()
-def generate(robots: Optional[List[str]] = typer.Argument(None, help="Robots to regenerate (name or vendor/name); "
-                                                           "default: all."),
-             dry_run: bool = typer.Option(False, "--dry-run", help="Show what would change, write nothing."),
-             verbose: bool = typer.Option(False, "--verbose", "-v", help="Also list unchanged files."),
-             force: bool = typer.Option(False, "--force", help="Overwrite generated files edited outside their user "
-                                        "regions (or holding code in regions the templates dropped); each is first "
-                                        "copied to generated/.rhi-gen-backup/<path>.N."),
-             project: Optional[Path] = ProjectOpt) -> None:
+def generate(robots: RobotsArg = None,
+             dry_run: Annotated[bool, typer.Option("--dry-run", help="Show what would change, write nothing.")] = False,
+             verbose: Annotated[bool, typer.Option("--verbose", "-v", help="Also list unchanged files.")] = False,
+             force: Annotated[bool, typer.Option("--force", help=FORCE_HELP)] = False,
+             project: ProjectOpt = None) -> None:
     """(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.
 
     User-region contents are carried over byte for byte; a file edited outside its regions blocks
     the whole run (exit 2, nothing written) unless --force.
     """
-    from .pipeline import plan_generation
-    from .writer import BACKUP_DIR, BACKUP_MARKERS, apply
+    from .pipeline.generate import plan_generation
+    from .pipeline.load import load_selected
+    from .write.backups import BACKUP_DIR, BACKUP_MARKERS
+    from .write.transaction import apply
 
     proj = _project(project)
-    loaded, only = _load_selected(proj, robots)
+    loaded, only = load_selected(proj, robots, progress=_err)
     plan = plan_generation(proj, loaded, only, force=force)
     if plan.blocked and not force:
         if len(plan.blocked) > 1:
@@ -174,19 +173,20 @@ def generate(robots: Optional[List[str]] = typer.Argument(None, help="Robots to 
 
 
 @app.command()
-def diff(robots: Optional[List[str]] = typer.Argument(None, help="Robots to explain (name or vendor/name); "
-                                                       "default: all."),
-         project: Optional[Path] = ProjectOpt) -> None:
+def diff(robots: RobotsArg = None, project: ProjectOpt = None) -> None:
     """Explain what `generate` would change: in robot terms first, then the unified file diff.
 
     Exit 0 when nothing would change, 1 when something would. Coloured on a terminal (unless NO_COLOR).
     """
-    from .pipeline import plan_generation
+    from .pipeline.generate import plan_generation
+    from .pipeline.load import load_selected
 
     proj = _project(project)
-    loaded, only = _load_selected(proj, robots)
+    loaded, only = load_selected(proj, robots, progress=_err)
     plan = plan_generation(proj, loaded, only)
     colour = _use_colour()
+    if plan.other_version:
+        typer.echo(_version_line(plan.other_version, plan.generator_version))
     _print_robot_diffs(plan.robot_diffs, colour)
     files = [c for c in plan.files if c.status != "unchanged"]
     if files:
@@ -204,15 +204,19 @@ def diff(robots: Optional[List[str]] = typer.Argument(None, help="Robots to expl
 
 
 @app.command()
-def check(project: Optional[Path] = ProjectOpt) -> None:
-    """CI gate: exit 1 when inputs changed since the last generate (stale hashes in the manifest) or
-    generated/ differs from what `generate` would write; prints why, then the unified diff."""
-    from .pipeline import load_robots, plan_generation
+def check(project: ProjectOpt = None) -> None:
+    """CI gate: exit 1 when generated/ is not what `generate` would write now.
+
+    That is: a robot's inputs changed since the last generate (stale fingerprints in the manifest), a
+    file differs, or another rhi-gen version wrote generated/. Prints why, then the unified diff.
+    """
+    from .pipeline.generate import plan_generation
+    from .pipeline.load import load_robots
 
     proj = _project(project)
     loaded = load_robots(proj)
     if not loaded:
-        raise RhiGenError("no robots found", file=proj.relative(proj.robots_dir), fix="add one with `rhi-gen new`")
+        raise ProjectError("no robots found", file=proj.relative(proj.robots_dir), fix="add one with `rhi-gen new`")
     plan = plan_generation(proj, loaded)
     colour = _use_colour()
     stale = plan.stale
@@ -220,10 +224,13 @@ def check(project: Optional[Path] = ProjectOpt) -> None:
         typer.echo(_bold("stale: generated/.rhi-gen-manifest is missing (never generated, or generated by an "
                          "older rhi-gen)", colour))
     else:
+        if plan.other_version:
+            typer.echo(_bold(_version_line(plan.other_version, plan.generator_version), colour))
         _print_robot_diffs(stale, colour, prefix="stale: ")
     files = [c for c in plan.files if c.status != "unchanged"]
     _print_file_diffs(files, colour)
-    if plan.manifest_change.status != "unchanged" and not stale and plan.old_manifest is not None:
+    if plan.manifest_change.status != "unchanged" and not stale and plan.old_manifest is not None \
+            and not plan.other_version:
         typer.echo("generated/.rhi-gen-manifest differs from what `rhi-gen generate` would write")
     for b in plan.blocked:
         typer.echo(f"hand edit: {b.note()}")
@@ -236,15 +243,15 @@ def check(project: Optional[Path] = ProjectOpt) -> None:
 
 
 @app.command()
-def inspect(urdf: Path = typer.Option(..., help="URDF or .xacro file."),
-            vendor: Optional[str] = typer.Option(None, help="Suggest the map in this vendor's motor order."),
-            robot: Optional[str] = typer.Option(None, help="Robot name for the vendor profile."),
-            xacro_arg: Optional[List[str]] = typer.Option(None, "--xacro-arg", help="NAME=VALUE, repeatable."),
-            package_path: Optional[List[str]] = typer.Option(None, "--package-path", help="PKG=DIR, repeatable.")
-            ) -> None:
+def inspect(urdf: Annotated[Path, typer.Option(help="URDF or .xacro file.")],
+            vendor: Annotated[str | None, typer.Option(
+                help="Suggest the map in this vendor's motor order.")] = None,
+            robot: Annotated[str | None, typer.Option(help="Robot name for the vendor profile.")] = None,
+            xacro_arg: XacroArgOpt = None,
+            package_path: PackagePathOpt = None) -> None:
     """Show actuated joints, types, limits, mimic joints and the suggested joint map."""
-    from .inspect_report import inspect_text
-    from .urdf_loader import load_urdf
+    from .inputs.inspect_report import inspect_text
+    from .inputs.urdf_loader import load_urdf
 
     robot_model = load_urdf(urdf, xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
                             package_paths={k: Path(v) for k, v in _parse_pairs(package_path, "--package-path").items()},
@@ -253,7 +260,7 @@ def inspect(urdf: Path = typer.Option(..., help="URDF or .xacro file."),
 
 
 @app.command("list")
-def list_robots(project: Optional[Path] = ProjectOpt) -> None:
+def list_robots(project: ProjectOpt = None) -> None:
     """List the robots of the project."""
     from .project import robot_yamls
 
@@ -269,8 +276,8 @@ def _version(value: bool) -> None:
 
 
 @app.callback()
-def _root(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
-                                       help="Print the version and exit.")) -> None:
+def _root(version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
+                                                help="Print the version and exit.")] = False) -> None:
     """rhi-gen"""
 
 
@@ -288,7 +295,7 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         _err("interrupted; nothing half-written was left behind")
         return 130
-    except Exception as exc:  # click usage errors and real bugs
+    except Exception as exc:  # click usage errors and real bugs: both must end in an exit code
         # Typer ships click either as a dependency or vendored (typer._click): match by class name.
         names = {cls.__name__ for cls in type(exc).__mro__}
         if "Abort" in names:

@@ -53,9 +53,21 @@ class ProjectError(InputError):
     """The project layout (robots/, generated/) is not what the command needs."""
 
 
+class ManifestError(RhiGenError):
+    """generated/.rhi-gen-manifest cannot be read."""
+
+
+class RegionError(RhiGenError):
+    """User-region markers of a file are broken (unbalanced, nested, duplicated or malformed)."""
+
+
 class GenerationError(RhiGenError):
     """Rendering failed (a template bug); nothing was written."""
 
 
 class WriteBlockedError(RhiGenError):
     """Writing would destroy a hand edit; nothing was written."""
+
+
+class WriteError(RhiGenError):
+    """The disk refused a write; every file was restored."""

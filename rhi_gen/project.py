@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import ProjectError
-from .naming import identifier_problem, vendor_problem
+from .model.naming import identifier_problem, vendor_problem
 
 PACKAGE_NAME = "robot_hardware_interface"
 

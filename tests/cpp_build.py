@@ -115,7 +115,7 @@ def make_test_project(dest: Path, *, extra_robots: bool = True, only: Sequence[s
 
 def load_models(project_root: Path):
     """RobotModels of every robot of the project (the same loading `rhi-gen generate` does)."""
-    from rhi_gen.pipeline import load_robots
+    from rhi_gen.pipeline.load import load_robots
     from rhi_gen.project import Project
 
     return load_robots(Project(project_root.resolve()))
@@ -124,7 +124,7 @@ def load_models(project_root: Path):
 def template_env_factory(template_dir: Path):
     """An env_factory for render_package: make_environment()'s settings, templates from a folder."""
     import jinja2
-    from rhi_gen.render import make_environment
+    from rhi_gen.render.environment import make_environment
 
     def factory():
         env = make_environment()
@@ -136,7 +136,7 @@ def template_env_factory(template_dir: Path):
 
 def render_package_to(loaded_robots, package_dir: Path, env_factory=None) -> dict[str, str]:
     """Render the package for ``loaded_robots`` into ``package_dir``; returns the plan."""
-    from rhi_gen.render import render_package
+    from rhi_gen.render.package import render_package
 
     models = [r.model for r in loaded_robots]
     plan = render_package(models) if env_factory is None else render_package(models, env_factory=env_factory)
@@ -186,7 +186,7 @@ def expand_description(package_dir: Path, robot: str, work_dir: Path) -> Descrip
     """Expand description/<robot>.ros2_control.xacro the way a user does: include it from a robot
     through $(find robot_hardware_interface) and call its macro with the defaults."""
     from lxml import etree
-    from rhi_gen.xacro_expand import expand_xacro
+    from rhi_gen.inputs.xacro_expand import expand_xacro
 
     xacro_file = package_dir / "description" / f"{robot}.ros2_control.xacro"
     ns = {"xacro": "http://www.ros.org/wiki/xacro"}

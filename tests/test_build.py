@@ -6,10 +6,11 @@ from pathlib import Path
 
 import pytest
 
-from rhi_gen.build import build_model, joint_name_problem
+from rhi_gen.model.build import build_model
+from rhi_gen.model.naming import joint_name_problem
 from rhi_gen.errors import ConfigError
-from rhi_gen.urdf_loader import load_urdf, parse_urdf_bytes
-from rhi_gen.vendor_config import load_config
+from rhi_gen.inputs.urdf_loader import load_urdf, parse_urdf_bytes
+from rhi_gen.inputs.vendor_config import load_config
 
 FIXTURES = Path(__file__).parent / "fixtures" / "urdf"
 
@@ -26,7 +27,7 @@ def model_for(tmp_path: Path, urdf: Path, body: str, **head):
         motor_count: {head.get('motor_count', 3)}
         """) + textwrap.dedent(body), encoding="utf-8")
     cfg = load_config(yml)
-    return build_model(cfg, load_urdf(cfg.urdf), yaml_path=yml, yaml_bytes=yml.read_bytes(), project_root=tmp_path)
+    return build_model(cfg, load_urdf(cfg.urdf), yaml_path=yml, project_root=tmp_path)
 
 
 ARM_MAP = """\

@@ -9,7 +9,7 @@ import pytest
 import yaml
 
 from rhi_gen.cli import main
-from rhi_gen.profiles import G1_ORDER
+from rhi_gen.transports.unitree_dds import G1_ORDER
 from tests.cpp_build import syntax_check_driver
 
 REPO = Path(__file__).resolve().parents[1]

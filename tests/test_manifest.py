@@ -10,9 +10,10 @@ import pytest
 
 from rhi_gen import __version__
 from rhi_gen.cli import main
-from rhi_gen.manifest import (JointRecord, Manifest, ManifestError, RobotRecord, dumps, generated_hash, loads,
+from rhi_gen.errors import ManifestError
+from rhi_gen.write.manifest import (JointRecord, Manifest, RobotRecord, dumps, generated_hash, loads,
                               parse)
-from rhi_gen.render import REGION_BEGIN, REGION_END
+from rhi_gen.render.markers import REGION_BEGIN, REGION_END
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -21,7 +22,7 @@ def _record(key="unitree/g1", joints=None) -> RobotRecord:
     joints = joints or (JointRecord(0, "hip", "revolute", -1.5, 2.25, 32.0, 88.0),
                         JointRecord(1, "wheel", "continuous", None, None, 10.0, 5.0),
                         JointRecord(2, "odd", "prismatic", float("-inf"), float("inf"), 0.1, 1e-9))
-    return RobotRecord(key, "robots/unitree/g1.yaml", "a" * 64, "robots/unitree/g1.urdf", "b" * 64, "0.1.0",
+    return RobotRecord(key, "robots/unitree/g1.yaml", "a" * 64, "robots/unitree/g1.urdf", "b" * 64,
                        35, "float", tuple(joints))
 
 

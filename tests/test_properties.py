@@ -26,8 +26,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from lxml import etree
 
-from rhi_gen.naming import identifier_problem, pascal_case, vendor_problem
-from rhi_gen.xacro_expand import expand_xacro
+from rhi_gen.model.naming import identifier_problem, pascal_case, vendor_problem
+from rhi_gen.inputs.xacro_expand import expand_xacro
 from tests.cpp_build import syntax_check_driver
 from tests.test_hostile_inputs import ANY_LINE, assert_rejected, run_cli, snapshot
 
@@ -35,7 +35,7 @@ PACKAGE = "robot_hardware_interface"
 HOSTILE = Path(__file__).resolve().parent / "fixtures" / "hostile"
 TRANSPORTS = ("generic_topics", "engineai_topics", "agibot_topics", "unitree_dds")
 UNITREE_SLOTS = 35
-# Every character rhi-gen accepts in a joint name (build.py's policy, restated independently).
+# Every character rhi-gen accepts in a joint name (model/naming.py's policy, restated independently).
 JOINT_ALPHABET = string.ascii_letters + string.digits + "_./-:+[]()#@"
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
@@ -324,7 +324,7 @@ def test_vendor_named_like_a_c_library_global_compiles_or_is_rejected(tmp_path, 
     """Found by the property above: the vendor becomes a namespace at global scope (the spec's layout),
     where the C library (through <cstdlib>, <ctime>, <cstring>, ...) already declares system(), time(),
     index(), y0(), struct tm, errno, ... (about 2300 names with glibc). Such a name must be rejected
-    with one clear line (rhi_gen/c_library_names.py), or the driver must compile."""
+    with one clear line (rhi_gen/model/c_library_names.py), or the driver must compile."""
     root = tmp_path / "proj"
     root.mkdir()
     result = run_cli("new", "--vendor", vendor, "--robot", "arm", "--urdf", HOSTILE / "arm.urdf", "--project", root)

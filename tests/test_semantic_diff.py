@@ -3,16 +3,16 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from rhi_gen.manifest import JointRecord, Manifest, RobotRecord
-from rhi_gen.semantic_diff import diff_manifest, diff_robot
+from rhi_gen.write.manifest import JointRecord, Manifest, RobotRecord
+from rhi_gen.write.semantic_diff import diff_manifest, diff_robot
 
 
 def J(index, name, lower=-1.0, upper=1.0, velocity=10.0, effort=20.0, type="revolute"):
     return JointRecord(index, name, type, lower, upper, velocity, effort)
 
 
-def R(*joints, motor_count=4, float_type="float", urdf="u" * 64, yaml="y" * 64, version="0.1.0", key="acme/arm"):
-    return RobotRecord(key, "robots/acme/arm.yaml", yaml, "robots/acme/arm.urdf", urdf, version, motor_count,
+def R(*joints, motor_count=4, float_type="float", urdf="u" * 64, yaml="y" * 64, key="acme/arm"):
+    return RobotRecord(key, "robots/acme/arm.yaml", yaml, "robots/acme/arm.urdf", urdf, motor_count,
                        float_type, tuple(joints))
 
 
@@ -78,10 +78,19 @@ def test_rename_with_limit_change_reports_both_under_the_new_name():
 
 
 def test_inputs_changed_without_robot_change_says_so():
-    d = diff_robot(BASE, replace(BASE, yaml_sha256="z" * 64, generator_version="0.2.0"))
+    # The generator version is not a robot input: `check` reports it in its own line (test_reviewable_diffs).
+    d = diff_robot(BASE, replace(BASE, yaml_sha256="z" * 64))
     assert d.stale and not d.robot_changed
-    assert d.lines() == ["acme/arm: robots/acme/arm.yaml changed, rhi-gen 0.1.0 -> 0.2.0",
+    assert d.lines() == ["acme/arm: robots/acme/arm.yaml changed",
                          "  no joint, limit, motor count or float type change (see the file diff)"]
+
+
+def test_format_1_yaml_fingerprints_are_not_compared():
+    """Format 1 hashed the YAML bytes: the robot is stale once, and says why, instead of "changed"."""
+    old = Manifest("0.1.0", {"acme/arm": BASE}, {}, format=1)
+    [d] = diff_manifest(old, [replace(BASE, yaml_sha256="z" * 64)])
+    assert d.stale and d.lines()[0] == ("acme/arm: robots/acme/arm.yaml was fingerprinted by an older rhi-gen "
+                                        "(its bytes, not its content)")
 
 
 def test_new_and_removed_robots():

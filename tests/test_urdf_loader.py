@@ -23,8 +23,8 @@ from hypothesis import strategies as st
 
 from rhi_gen.errors import RhiGenError, UrdfError
 from rhi_gen.model import JointLimits, Mimic
-from rhi_gen.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes
-from rhi_gen.xacro_expand import expand_xacro
+from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes
+from rhi_gen.inputs.xacro_expand import expand_xacro
 
 REPO = Path(__file__).resolve().parents[1]
 FIX = REPO / "tests" / "fixtures" / "urdf"
@@ -246,7 +246,7 @@ def test_xacro_reads_utf8_whatever_the_locale(tmp_path):
         '</robot>\n'.encode("utf-8"))
     assert load_urdf(path).joints[0].name == "gel\u00e9nk\u2713"
     env = dict(os.environ, LC_ALL="C", LANG="C", PYTHONUTF8="0", PYTHONCOERCECLOCALE="0")
-    code = ("import sys; from rhi_gen.urdf_loader import load_urdf; "
+    code = ("import sys; from rhi_gen.inputs.urdf_loader import load_urdf; "
             f"sys.stdout.write(ascii(load_urdf({str(path)!r}).joints[0].name))")
     done = subprocess.run([sys.executable, "-c", code], env=env, cwd=REPO, capture_output=True,
                           text=True, timeout=60)

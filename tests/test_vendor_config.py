@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from rhi_gen.errors import ConfigError
-from rhi_gen.vendor_config import load_config
+from rhi_gen.inputs.vendor_config import load_config
 
 REPO = Path(__file__).resolve().parents[1]
 

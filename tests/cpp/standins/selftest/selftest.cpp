@@ -50,6 +50,13 @@
 #include <unitree/idl/hg/LowState_.hpp>
 #include <unitree/idl/hg/MotorCmd_.hpp>
 #include <unitree/idl/hg/MotorState_.hpp>
+#include <unitree/idl/go2/BmsCmd_.hpp>
+#include <unitree/idl/go2/BmsState_.hpp>
+#include <unitree/idl/go2/IMUState_.hpp>
+#include <unitree/idl/go2/LowCmd_.hpp>
+#include <unitree/idl/go2/LowState_.hpp>
+#include <unitree/idl/go2/MotorCmd_.hpp>
+#include <unitree/idl/go2/MotorState_.hpp>
 #include <unitree/robot/b2/motion_switcher/motion_switcher_client.hpp>
 #include <unitree/robot/channel/channel_factory.hpp>
 #include <unitree/robot/channel/channel_publisher.hpp>

@@ -3,7 +3,7 @@
 - The XML is parsed with lxml without recovery, entity expansion or network access, so a broken
   file is one ``file:line: malformed XML: ...`` line, never a silently repaired robot.
 - ``*.xacro`` files (and any file whose root declares the xacro namespace) are expanded first by
-  :func:`rhi_gen.xacro_expand.expand_xacro`.
+  :func:`rhi_gen.inputs.xacro_expand.expand_xacro`.
 - The kinematic structure is checked the way ROS' urdfdom does (every joint names a type, a parent
   and a child; revolute/prismatic joints have a <limit> with effort and velocity; the links form
   exactly one tree) plus what rhi-gen relies on (no duplicate names, mimic targets exist).
@@ -18,13 +18,13 @@ import bisect
 import difflib
 import re
 import stat
-from collections.abc import Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 
 from lxml import etree
 
-from .errors import UrdfError
-from .model import (
+from ..errors import UrdfError
+from ..model import (
     JointLimits,
     Mimic,
     Ros2ControlBlock,
@@ -33,7 +33,7 @@ from .model import (
     UrdfRobot,
 )
 
-__all__ = ["load_urdf", "parse_urdf_bytes", "canonical_urdf_bytes", "JOINT_TYPES"]
+__all__ = ["JOINT_TYPES", "canonical_urdf_bytes", "load_urdf", "parse_urdf_bytes"]
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 _LIMITED_TYPES = ("revolute", "prismatic")  # urdfdom rejects these without <limit>
@@ -136,7 +136,7 @@ class _Lines:
             data = data.replace(b"\r\n", b"\n").replace(b"\r", b"\n")
             offsets = [m.start() for m in _SCAN.finditer(data) if m.end() - m.start() == 1]
         newlines = [m.start() for m in re.finditer(b"\n", data)]
-        return {el: bisect.bisect_left(newlines, off) + 1 for el, off in zip(elements, offsets)}
+        return {el: bisect.bisect_left(newlines, off) + 1 for el, off in zip(elements, offsets, strict=True)}
 
 
 # ---------------------------------------------------------------- errors
@@ -160,7 +160,7 @@ class _Ctx:
         return UrdfError(message, file=self.source, line=line, fix=fix)
 
 
-def _did_you_mean(name: str, choices) -> str:
+def _did_you_mean(name: str, choices: Iterable[str]) -> str:
     close = difflib.get_close_matches(name, list(choices), n=1, cutoff=0.75)
     return f" (did you mean '{close[0]}'?)" if close else ""
 
@@ -212,10 +212,6 @@ def _parse(data: bytes, ctx: _Ctx) -> etree._Element:
     return root
 
 
-def _namespace(tag: str) -> str | None:
-    return tag[1:].split("}", 1)[0] if tag.startswith("{") else None
-
-
 def _first_xacro_element(root: etree._Element) -> etree._Element | None:
     for el in root.iter():
         tag = el.tag
@@ -248,8 +244,12 @@ def _bad_number_fix(value: str) -> str:
 
 
 # ---------------------------------------------------------------- URDF structure
+_Tag = Callable[[str], str]  # a local tag name -> the tag in the document's namespace
+# per joint: (parent element, child element, mimic element)
+_JointRefs = tuple[etree._Element, etree._Element, etree._Element | None]
+
 def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
-    ns = _namespace(root.tag)  # URDF has no namespace; a default xmlns on <robot> is tolerated
+    ns = etree.QName(root).namespace  # URDF has no namespace; a default xmlns on <robot> is tolerated
 
     def q(local: str) -> str:
         return f"{{{ns}}}{local}" if ns else local
@@ -279,8 +279,7 @@ def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
     link_el: dict[str, etree._Element] = {}
     joints: list[UrdfJoint] = []
     joint_el: dict[str, etree._Element] = {}
-    # per joint: (parent element, child element, mimic element)
-    refs: list[tuple[etree._Element, etree._Element, etree._Element | None]] = []
+    refs: list[_JointRefs] = []
 
     for el in root:
         tag = el.tag
@@ -300,7 +299,7 @@ def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
     if not links:
         raise ctx.err("the robot has no <link>", root, fix="a URDF needs at least one <link>")
 
-    _check_mimic(joints, refs, joint_el, ctx)
+    _check_mimic(joints, refs, ctx)
     _check_tree(joints, refs, links, link_el, ctx)
 
     return UrdfRobot(
@@ -313,8 +312,8 @@ def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
     )
 
 
-def _joint(el: etree._Element, ctx: _Ctx, q, joint_el: dict[str, etree._Element],
-           refs: list) -> UrdfJoint:
+def _joint(el: etree._Element, ctx: _Ctx, q: _Tag, joint_el: dict[str, etree._Element],
+           refs: list[_JointRefs]) -> UrdfJoint:
     """One <joint>; records it in ``joint_el`` and its (parent, child, mimic) elements in ``refs``."""
     name = el.get("name")
     if not name:
@@ -334,11 +333,13 @@ def _joint(el: etree._Element, ctx: _Ctx, q, joint_el: dict[str, etree._Element]
         if isinstance(tag, str) and tag not in first:
             first[tag] = sub
     parent = first.get(q("parent"))
-    if parent is None or not parent.get("link"):
+    parent_link = parent.get("link") if parent is not None else None
+    if parent is None or not parent_link:
         raise ctx.err(f"joint {_q(name)} has no <parent link=\"...\"/>", el if parent is None
                       else parent, fix="add <parent link=\"...\"/> inside the joint")
     child = first.get(q("child"))
-    if child is None or not child.get("link"):
+    child_link = child.get("link") if child is not None else None
+    if child is None or not child_link:
         raise ctx.err(f"joint {_q(name)} has no <child link=\"...\"/>", el if child is None
                       else child, fix="add <child link=\"...\"/> inside the joint")
     if name in joint_el:
@@ -348,8 +349,8 @@ def _joint(el: etree._Element, ctx: _Ctx, q, joint_el: dict[str, etree._Element]
 
     axis = (1.0, 0.0, 0.0)
     axis_el = first.get(q("axis"))
-    if axis_el is not None and axis_el.get("xyz") is not None:
-        xyz = axis_el.get("xyz")
+    xyz = axis_el.get("xyz") if axis_el is not None else None
+    if xyz is not None:
         parts = xyz.split()
         try:
             if len(parts) != 3:
@@ -407,7 +408,7 @@ def _joint(el: etree._Element, ctx: _Ctx, q, joint_el: dict[str, etree._Element]
         mimic = Mimic(joint=target, multiplier=nums["multiplier"], offset=nums["offset"])
 
     refs.append((parent, child, mimic_el))
-    return UrdfJoint(name=name, type=jtype, parent=parent.get("link"), child=child.get("link"),
+    return UrdfJoint(name=name, type=jtype, parent=parent_link, child=child_link,
                      axis=axis, limits=limits, mimic=mimic, line=ctx.line(el))
 
 
@@ -415,9 +416,9 @@ def _raw(el: etree._Element, attr: str) -> str:
     return (el.get(attr) or "").strip()
 
 
-def _check_mimic(joints: list[UrdfJoint], refs, joint_el, ctx: _Ctx) -> None:
+def _check_mimic(joints: list[UrdfJoint], refs: list[_JointRefs], ctx: _Ctx) -> None:
     by_name = {j.name: j for j in joints}
-    for j, (_, _, mimic_el) in zip(joints, refs):
+    for j, (_, _, mimic_el) in zip(joints, refs, strict=True):
         if j.mimic is None:
             continue
         target = j.mimic.joint
@@ -430,14 +431,14 @@ def _check_mimic(joints: list[UrdfJoint], refs, joint_el, ctx: _Ctx) -> None:
                 + _did_you_mean(target, by_name), mimic_el,
                 fix="set <mimic joint=...> to an existing joint name")
     # mimic chains must end at a joint that is not a mimic
-    for j, (_, _, mimic_el) in zip(joints, refs):
+    for j, (_, _, mimic_el) in zip(joints, refs, strict=True):
         if j.mimic is None:
             continue
         seen = [j.name]
         cur = by_name[j.mimic.joint]
         while cur.mimic is not None:
             if cur.name in seen:
-                loop = seen[seen.index(cur.name):] + [cur.name]
+                loop = [*seen[seen.index(cur.name):], cur.name]
                 raise ctx.err("mimic joints follow each other in a loop: " + " -> ".join(
                     _q(n) for n in loop), mimic_el,
                     fix="one joint of the loop must be a real (non-mimic) joint")
@@ -445,10 +446,11 @@ def _check_mimic(joints: list[UrdfJoint], refs, joint_el, ctx: _Ctx) -> None:
             cur = by_name[cur.mimic.joint]
 
 
-def _check_tree(joints: list[UrdfJoint], refs, links: list[str], link_el, ctx: _Ctx) -> None:
+def _check_tree(joints: list[UrdfJoint], refs: list[_JointRefs], links: list[str],
+                link_el: dict[str, etree._Element], ctx: _Ctx) -> None:
     parent_joint: dict[str, int] = {}  # child link -> index of its joint
     children: dict[str, list[str]] = {}
-    for i, (j, (parent_el, child_el, _)) in enumerate(zip(joints, refs)):
+    for i, (j, (parent_el, child_el, _)) in enumerate(zip(joints, refs, strict=True)):
         for role, link, ref_el in (("parent", j.parent, parent_el), ("child", j.child, child_el)):
             if link not in link_el:
                 raise ctx.err(
@@ -506,7 +508,7 @@ def _check_tree(joints: list[UrdfJoint], refs, links: list[str], link_el, ctx: _
             fix=f"connect {_q(stray)} to the robot with a joint (e.g. type=\"fixed\") or remove it")
 
 
-def _ros2_control(root: etree._Element, q, ctx: _Ctx) -> tuple[Ros2ControlBlock, ...]:
+def _ros2_control(root: etree._Element, q: _Tag, ctx: _Ctx) -> tuple[Ros2ControlBlock, ...]:
     blocks = []
     tag_hw, tag_plugin, tag_joint = q("hardware"), q("plugin"), q("joint")
     tag_cmd, tag_state = q("command_interface"), q("state_interface")

@@ -12,6 +12,7 @@ the last `generate` (manifest.RobotRecord). Definitions:
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from .manifest import JointRecord, Manifest, RobotRecord
@@ -47,8 +48,8 @@ class RobotDiff:
         if self.status == "new":
             r = self.new_record
             assert r is not None
-            return [f"{self.key}: new robot ({len(r.joints)} joints, {r.motor_count} motors, {r.float_type}; "
-                    f"{r.yaml_path}, {r.urdf_path})"]
+            return [(f"{self.key}: new robot ({len(r.joints)} joints, {r.motor_count} motors, {r.float_type}; "
+                     f"{r.yaml_path}, {r.urdf_path})")]
         if self.status == "removed":
             r = self.old_record
             assert r is not None
@@ -94,25 +95,30 @@ def _limits_text(j: JointRecord) -> str:
 def _same(a: float | None, b: float | None) -> bool:
     if a is None or b is None:
         return a is b
-    return a == b or (a != a and b != b)
+    return a == b or (math.isnan(a) and math.isnan(b))
 
 
-def _inputs(old: RobotRecord, new: RobotRecord) -> tuple[str, ...]:
+def _inputs(old: RobotRecord, new: RobotRecord, yaml_comparable: bool) -> tuple[str, ...]:
     what = []
     if old.yaml_path != new.yaml_path:
         what.append(f"vendor YAML moved {old.yaml_path} -> {new.yaml_path}")
+    elif not yaml_comparable:
+        what.append(f"{new.yaml_path} was fingerprinted by an older rhi-gen (its bytes, not its content)")
     elif old.yaml_sha256 != new.yaml_sha256:
         what.append(f"{new.yaml_path} changed")
     if old.urdf_path != new.urdf_path:
         what.append(f"URDF moved {old.urdf_path} -> {new.urdf_path}")
     elif old.urdf_sha256 != new.urdf_sha256:
         what.append(f"{new.urdf_path} changed")
-    if old.generator_version != new.generator_version:
-        what.append(f"rhi-gen {old.generator_version} -> {new.generator_version}")
     return tuple(what)
 
 
-def diff_robot(old: RobotRecord | None, new: RobotRecord | None) -> RobotDiff:
+def diff_robot(old: RobotRecord | None, new: RobotRecord | None, *, yaml_comparable: bool = True) -> RobotDiff:
+    """``old`` (from the manifest) against ``new`` (from the current inputs); one of them may be None.
+
+    ``yaml_comparable`` is False when ``old`` comes from a manifest whose YAML fingerprints mean
+    something else (format 1).
+    """
     if old is None and new is None:
         raise ValueError("nothing to compare")
     if old is None:
@@ -148,11 +154,12 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None) -> RobotDiff:
     for o, n in pairs:
         if o.type != n.type:
             types.append((n.name, n.index, o.type, n.type))
-        fields = tuple((k, a, b) for (k, a), (_, b) in zip(o.limit_items(), n.limit_items()) if not _same(a, b))
+        fields = tuple((k, a, b) for (k, a), (_, b) in zip(o.limit_items(), n.limit_items(), strict=True)
+                       if not _same(a, b))
         if fields:
             limits.append((n.name, n.index, fields))
 
-    inputs = _inputs(old, new)
+    inputs = _inputs(old, new, yaml_comparable)
     diff = RobotDiff(
         new.key, "changed" if inputs else "unchanged", inputs,
         renamed=tuple(renamed), remapped=tuple(remapped), added=added, removed=removed,
@@ -165,10 +172,12 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None) -> RobotDiff:
     return diff
 
 
-def diff_manifest(old: Manifest | None, new_records: list[RobotRecord], *,
-                  removed_keys: list[str] = ()) -> list[RobotDiff]:
+def diff_manifest(old: Manifest | None, new_records: Sequence[RobotRecord], *,
+                  removed_keys: Sequence[str] = ()) -> list[RobotDiff]:
     """One RobotDiff per robot in ``new_records`` (sorted), then one per ``removed_keys`` robot."""
     old_robots = old.robots if old is not None else {}
-    out = [diff_robot(old_robots.get(r.key), r) for r in sorted(new_records, key=lambda r: r.key)]
+    comparable = old is None or old.yaml_fingerprints_comparable
+    out = [diff_robot(old_robots.get(r.key), r, yaml_comparable=comparable)
+           for r in sorted(new_records, key=lambda r: r.key)]
     out += [diff_robot(old_robots[k], None) for k in sorted(removed_keys) if k in old_robots]
     return out

@@ -1,6 +1,6 @@
 """User regions: hand-written code that survives regeneration byte for byte.
 
-A region is a pair of marker lines (render.REGION_BEGIN / REGION_END) with the same name::
+A region is a pair of marker lines (render/markers.py REGION_BEGIN / REGION_END) with the same name::
 
       // rhi-gen:begin-user-region sdk_init
       ...kept byte for byte...
@@ -25,8 +25,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from .errors import RhiGenError
-from .render import REGION_BEGIN, REGION_END
+from ..errors import RegionError
+from ..render.markers import REGION_BEGIN, REGION_END
 
 _NAME = r"[A-Za-z_][A-Za-z0-9_.\-]*"
 _MARKER = re.compile(
@@ -38,10 +38,6 @@ _LOOSE = re.compile(re.escape(REGION_BEGIN) + "|" + re.escape(REGION_END))
 
 FIX_MARKERS = ("restore the marker lines as generated (`rhi-gen diff` shows them), "
                "or rerun `rhi-gen generate --force` (keeps a backup)")
-
-
-class RegionError(RhiGenError):
-    """User-region markers of a file are broken (unbalanced, nested, duplicated or malformed)."""
 
 
 @dataclass(frozen=True)

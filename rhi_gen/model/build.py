@@ -7,44 +7,14 @@ from __future__ import annotations
 
 import hashlib
 import os
-import re
 from dataclasses import replace
 from pathlib import Path
 
-from . import __version__
-from .errors import ConfigError
-from .model import InputProvenance, MotorJoint, RobotModel, UrdfRobot, VendorConfig
-from .naming import pascal_case, suggest, upper_snake
-
-# Joint names become C++ string literals, XML attribute values, YAML list items and ROS 2
-# interface names ("<joint>/position"). We accept what every one of those handles without
-# surprises and reject the rest with a clear message rather than emitting fragile code.
-SAFE_JOINT_NAME_RE = re.compile(r"^[A-Za-z0-9_./\-:+\[\]()#@]+$")
-MAX_JOINT_NAME = 128
-
-
-def joint_name_problem(name: str) -> str | None:
-    if not name:
-        return "joint name is empty"
-    if len(name) > MAX_JOINT_NAME:
-        return f"joint name is {len(name)} characters long (at most {MAX_JOINT_NAME})"
-    if SAFE_JOINT_NAME_RE.match(name):
-        return None
-    bad = next(ch for ch in name if not SAFE_JOINT_NAME_RE.match(ch))
-    if ch_is_control(bad):
-        what = f"a control character (U+{ord(bad):04X})"
-    elif bad.isspace():
-        what = "whitespace"
-    elif ord(bad) > 127:
-        what = f"the non-ASCII character {bad!r}"
-    else:
-        what = f"the character {bad!r}"
-    return (f"joint name {name!r} contains {what}; joint names become C++ string literals, XML "
-            "attributes and ROS 2 interface names")
-
-
-def ch_is_control(ch: str) -> bool:
-    return ord(ch) < 0x20 or 0x7F <= ord(ch) < 0xA0
+from ..errors import ConfigError, UrdfError
+from .config import VendorConfig
+from .naming import joint_name_problem, pascal_case, suggest, upper_snake
+from .robot import InputProvenance, MotorJoint, RobotModel
+from .urdf import UrdfJoint, UrdfRobot
 
 
 def sha256_hex(data: bytes) -> str:
@@ -57,8 +27,7 @@ def project_relative(path: str | Path, root: Path) -> str:
     return Path(rel).as_posix()
 
 
-def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_bytes: bytes,
-                project_root: Path) -> RobotModel:
+def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, project_root: Path) -> RobotModel:
     """Check ``config`` against ``urdf`` and decide every name the templates print."""
     lines = config.key_lines
     src = config.source
@@ -141,9 +110,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_
     provenance = InputProvenance(
         yaml_path=project_relative(yaml_path, project_root),
         urdf_path=project_relative(config.urdf, project_root),
-        yaml_sha256=sha256_hex(yaml_bytes),
+        yaml_sha256=config.content_sha256,
         urdf_sha256=sha256_hex(urdf.canonical_xml),
-        generator_version=__version__,
     )
     return RobotModel(
         vendor=config.vendor, robot=config.robot, robot_pascal=pascal,
@@ -158,14 +126,12 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, yaml_
     )
 
 
-def _check_existing_ros2_control(urdf: UrdfRobot, by_name: dict, urdf_shown: str) -> None:
+def _check_existing_ros2_control(urdf: UrdfRobot, by_name: dict[str, UrdfJoint], urdf_shown: str) -> None:
     """Apply ros2_control's own rules to a <ros2_control> tag already in the URDF.
 
     The controller manager loads the whole robot_description, so a broken tag there breaks the
     generated driver too: every joint must exist, and a mimic joint takes no command interface.
     """
-    from .errors import UrdfError
-
     for block in urdf.ros2_control:
         for rc_joint in block.joints:
             joint = by_name.get(rc_joint.name)

@@ -31,7 +31,7 @@ from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
-from .errors import UrdfError
+from ..errors import UrdfError
 
 __all__ = ["expand_xacro"]
 
@@ -114,7 +114,7 @@ def _safe_loader_guard() -> Iterator[None]:
         if had_own:
             table = cls.__dict__["yaml_constructors"]
             table.clear()
-            table.update(saved)  # type: ignore[arg-type]
+            table.update(saved)
         elif "yaml_constructors" in cls.__dict__:
             delattr(cls, "yaml_constructors")
 
@@ -221,7 +221,7 @@ def _convert(exc: Exception, xacro: Any, show: _Displayer, path_shown: str) -> U
     if macrostack:
         try:
             macro_note = f" (in macro '{macrostack[-1].body.getAttribute('name')}')"
-        except Exception:  # pragma: no cover - defensive: the DOM is xacro's
+        except Exception:  # noqa: BLE001 (defensive: the DOM is xacro's, any failure just drops the note)
             macro_note = ""
 
     for cause in _causes(exc):
@@ -319,11 +319,11 @@ def expand_xacro(path: str | Path, args: Mapping[str, str] | None,
         _reset_xacro_state(xacro)
         try:
             doc = xacro.process_file(top_abs, mappings=mappings, verbosity=1)
-            text = doc.toprettyxml(indent="  ")
+            text: str = doc.toprettyxml(indent="  ")
             doc.unlink()
         except UrdfError:
             raise
-        except Exception as e:  # every xacro failure becomes one clear line
+        except Exception as e:  # noqa: BLE001 (xacro raises anything; every failure becomes one clear line)
             raise _convert(e, xacro, show, shown) from None
         finally:
             _reset_xacro_state(xacro)

@@ -2,10 +2,12 @@
 
 Vendor and robot names become a C++ namespace, a class name prefix and path components, so they
 are checked strictly here rather than escaped: a name that is not a plain identifier is an error
-the user fixes once, not something to mangle silently.
+the user fixes once, not something to mangle silently. URDF joint names are untrusted text that is
+escaped, not mangled, but only characters every output format carries safely are accepted.
 """
 from __future__ import annotations
 
+import difflib
 import re
 
 from .c_library_names import C_LIBRARY_NAMES
@@ -75,7 +77,37 @@ def upper_snake(name: str) -> str:
 
 def suggest(word: str, choices: list[str] | tuple[str, ...]) -> str | None:
     """The closest known word, for 'did you mean' hints."""
-    import difflib
-
     match = difflib.get_close_matches(word, list(choices), n=1, cutoff=0.6)
     return match[0] if match else None
+
+
+# Joint names become C++ string literals, XML attribute values, YAML list items and ROS 2
+# interface names ("<joint>/position"). We accept what every one of those handles without
+# surprises and reject the rest with a clear message rather than emitting fragile code.
+SAFE_JOINT_NAME_RE = re.compile(r"^[A-Za-z0-9_./\-:+\[\]()#@]+$")
+MAX_JOINT_NAME = 128
+
+
+def joint_name_problem(name: str) -> str | None:
+    """Why a URDF joint name cannot travel safely through C++, XML and ROS names, or None."""
+    if not name:
+        return "joint name is empty"
+    if len(name) > MAX_JOINT_NAME:
+        return f"joint name is {len(name)} characters long (at most {MAX_JOINT_NAME})"
+    if SAFE_JOINT_NAME_RE.match(name):
+        return None
+    bad = next(ch for ch in name if not SAFE_JOINT_NAME_RE.match(ch))
+    if ch_is_control(bad):
+        what = f"a control character (U+{ord(bad):04X})"
+    elif bad.isspace():
+        what = "whitespace"
+    elif ord(bad) > 127:
+        what = f"the non-ASCII character {bad!r}"
+    else:
+        what = f"the character {bad!r}"
+    return (f"joint name {name!r} contains {what}; joint names become C++ string literals, XML "
+            "attributes and ROS 2 interface names")
+
+
+def ch_is_control(ch: str) -> bool:
+    return ord(ch) < 0x20 or 0x7F <= ord(ch) < 0xA0

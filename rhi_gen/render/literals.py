@@ -31,7 +31,7 @@ def cpp_string(text: str) -> str:
     return "".join(out)
 
 
-def cpp_double(value: float | int) -> str:
+def cpp_double(value: float) -> str:
     """A C++ double literal that round-trips exactly (repr gives the shortest such form)."""
     value = float(value)
     if math.isnan(value):
@@ -42,16 +42,6 @@ def cpp_double(value: float | int) -> str:
     if "e" not in text and "." not in text:
         text += ".0"
     return text
-
-
-def cpp_float(value: float | int) -> str:
-    """A C++ float literal (``1.5f``)."""
-    value = float(value)
-    if math.isnan(value):
-        return "std::numeric_limits<float>::quiet_NaN()"
-    if math.isinf(value):
-        return ("-" if value < 0 else "") + "std::numeric_limits<float>::infinity()"
-    return cpp_double(value) + "f"
 
 
 def header_guard(relpath: str) -> str:
@@ -85,11 +75,10 @@ def xml_escape(text: str) -> str:
             .replace('"', "&quot;").replace("'", "&apos;"))
 
 
-FILTERS = {
+FILTERS = {  # the Jinja filters: {{ joint.name | cpp_string }}
+    "header_guard": header_guard,
     "cpp_string": cpp_string,
     "cpp_double": cpp_double,
-    "cpp_float": cpp_float,
-    "header_guard": header_guard,
     "yaml_string": yaml_string,
     "xml": xml_escape,
 }

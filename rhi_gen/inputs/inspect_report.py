@@ -1,8 +1,8 @@
 """`rhi-gen inspect`: what rhi-gen sees in a URDF, as text a person reads before writing a YAML."""
 from __future__ import annotations
 
-from .model import UrdfRobot
-from .profiles import find_profile, suggest_order
+from .. import transports
+from ..model import UrdfRobot
 
 
 def _fmt(value: float | None) -> str:
@@ -10,11 +10,13 @@ def _fmt(value: float | None) -> str:
 
 
 def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | None = None) -> str:
+    """The report: every joint with type, limits and mimic, then the suggested joint_map."""
     actuated = urdf.actuated_joints
-    out = [f"robot {urdf.name!r} from {urdf.source}: {len(urdf.joints)} joints, {len(urdf.links)} links, "
-           f"{len(actuated)} actuated, {len(urdf.mimic_joints)} mimic"]
+    out = [(f"robot {urdf.name!r} from {urdf.source}: {len(urdf.joints)} joints, {len(urdf.links)} links, "
+            f"{len(actuated)} actuated, {len(urdf.mimic_joints)} mimic")]
     width = max([len(j.name) for j in urdf.joints] + [5])
-    out.append(f"  {'#':>3}  {'joint':<{width}}  {'type':<10}  {'lower':>9} {'upper':>9} {'effort':>8} {'velocity':>8}  note")
+    out.append(f"  {'#':>3}  {'joint':<{width}}  {'type':<10}  {'lower':>9} {'upper':>9} {'effort':>8} "
+               f"{'velocity':>8}  note")
     for i, j in enumerate(urdf.joints):
         lim = j.limits
         note = []
@@ -28,9 +30,9 @@ def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | Non
     for block in urdf.ros2_control:
         out.append(f"existing <ros2_control name={block.name!r}> plugin {block.plugin or '-'}: "
                    f"{len(block.joints)} joints")
-    profile = find_profile(vendor, robot) if vendor and robot else None
-    order = suggest_order([j.name for j in actuated], profile)
-    source = f"the {profile.vendor} profile ({profile.note})" if profile and profile.note else "URDF order"
+    known = transports.known_robot(vendor, robot) if vendor and robot else None
+    order = transports.suggest_order([j.name for j in actuated], known)
+    source = f"the {known.vendor} profile ({known.note})" if known else "URDF order"
     out.append(f"suggested joint_map ({source}):")
     out += [f"  {name}: {index}" for index, name in enumerate(order)]
     return "\n".join(out) + "\n"

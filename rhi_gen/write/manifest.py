@@ -1,14 +1,23 @@
-"""generated/.rhi-gen-manifest: what the last `generate` read and wrote.
+"""generated/.rhi-gen-manifest: what the last `generate` read and wrote, and which rhi-gen wrote it.
 
-Per robot: the vendor YAML and the URDF (project-relative path + sha256; the URDF hashed after xacro
-expansion without xacro's volatile header), the generator version, and the robot as the model saw
-it (motor_count, float_type, one row per joint: index, name, type, limits) so `rhi-gen diff` can
-explain the next regeneration in robot terms. Per generated file: the sha256 of its text with every
-user-region body removed, so a hand edit *outside* the regions is detected and an edit inside one
-is not.
+The generated files name only their inputs; every hash and the generator version live here.
+
+- ``generator_version``: the rhi-gen that last wrote generated/. `check` reports in one line when it
+  is another version; a new version changes this line only, never a package file whose content
+  stays the same.
+- Per robot: the vendor YAML and the URDF, each a project-relative path and a sha256 fingerprint of
+  what rhi-gen reads from it: the YAML's parsed content (inputs/yaml_source.content_sha256: comments,
+  layout, quoting and key order do not count, so a comment-only edit changes nothing here), the
+  URDF after xacro expansion without xacro's volatile header. `check` calls a robot stale when a
+  fingerprint differs. Then the robot as the model saw it (motor_count, float_type, one row per
+  joint: index, name, type, limits) so `rhi-gen diff` can explain the next regeneration in robot terms.
+- Per generated file: the sha256 of its text with every user-region body removed, so a hand edit
+  *outside* the regions is detected and an edit inside one is not.
 
 The file is JSON with sorted keys, one joint or file per line, no timestamps and no absolute paths:
 the same inputs always give the same bytes, and a reviewer reads its diff like any other.
+Format 1 (rhi-gen 0.1.0 before this layout) is still read: its file hashes mean the same, its YAML
+fingerprints were of the bytes, so its robots show as fingerprinted by an older rhi-gen once.
 """
 from __future__ import annotations
 
@@ -19,21 +28,19 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import RhiGenError
-from .model import RobotModel
+from ..errors import ManifestError
+from ..model import RobotModel
 from .regions import strip_bodies
 
 MANIFEST_NAME = ".rhi-gen-manifest"
-FORMAT = 1
-NOTE = ("Written by `rhi-gen generate`; do not edit. Inputs and generated files of the last generation; "
-        "file hashes are sha256 of the text with user-region bodies removed.")
+FORMAT = 2
+READABLE_FORMATS = (1, 2)
+NOTE = ("Written by `rhi-gen generate`; do not edit. Inputs and generated files of the last generation: "
+        "yaml sha256 is of the parsed vendor YAML (comments and layout do not count), urdf sha256 of the "
+        "expanded URDF, file sha256 of the text with user-region bodies removed.")
 JOINT_COLUMNS = ("index", "name", "type", "lower", "upper", "velocity", "effort")
 FIX_CORRUPT = ("restore it from version control, or rerun `rhi-gen generate --force` to rebuild it "
                "(files that would change are backed up)")
-
-
-class ManifestError(RhiGenError):
-    """generated/.rhi-gen-manifest cannot be read."""
 
 
 @dataclass(frozen=True)
@@ -58,7 +65,6 @@ class RobotRecord:
     yaml_sha256: str
     urdf_path: str
     urdf_sha256: str
-    generator_version: str
     motor_count: int
     float_type: str
     joints: tuple[JointRecord, ...]   # sorted by index
@@ -69,6 +75,12 @@ class Manifest:
     generator_version: str
     robots: dict[str, RobotRecord] = field(default_factory=dict)
     files: dict[str, str] = field(default_factory=dict)   # path relative to generated/ -> sha256
+    format: int = FORMAT                                   # as read; dumps() always writes FORMAT
+
+    @property
+    def yaml_fingerprints_comparable(self) -> bool:
+        """Format 1 fingerprinted the YAML bytes; only format 2 fingerprints its parsed content."""
+        return self.format >= 2
 
 
 def sha256_hex(data: bytes) -> str:
@@ -93,7 +105,7 @@ def robot_record(model: RobotModel) -> RobotRecord:
                                   lim.lower if lim else None, lim.upper if lim else None,
                                   lim.velocity if lim else None, lim.effort if lim else None))
     return RobotRecord(robot_key(model), p.yaml_path, p.yaml_sha256, p.urdf_path, p.urdf_sha256,
-                       p.generator_version, model.motor_count, model.float_type, tuple(joints))
+                       model.motor_count, model.float_type, tuple(joints))
 
 
 # ---------------------------------------------------------------- text form
@@ -124,7 +136,6 @@ def _to_data(manifest: Manifest) -> dict[str, Any]:
         robots[key] = {
             "yaml": {"path": r.yaml_path, "sha256": r.yaml_sha256},
             "urdf": {"path": r.urdf_path, "sha256": r.urdf_sha256},
-            "generator_version": r.generator_version,
             "motor_count": r.motor_count,
             "float_type": r.float_type,
             "joint_columns": list(JOINT_COLUMNS),
@@ -192,8 +203,9 @@ def _str(value: Any, where: str) -> str:
 def _from_data(data: Any) -> Manifest:
     if not isinstance(data, dict):
         raise ValueError("top level: expected an object")
-    if data.get("format") != FORMAT:
-        raise ValueError(f"format {data.get('format')!r} (this rhi-gen reads format {FORMAT})")
+    fmt = data.get("format")
+    if fmt not in READABLE_FORMATS or isinstance(fmt, bool):
+        raise ValueError(f"format {fmt!r} (this rhi-gen reads formats {', '.join(map(str, READABLE_FORMATS))})")
     robots: dict[str, RobotRecord] = {}
     for key, r in data["robots"].items():
         joints = []
@@ -211,14 +223,14 @@ def _from_data(data: Any) -> Manifest:
             raise ValueError(f"robots.{key}.motor_count: expected an integer")
         robots[_str(key, "robot")] = RobotRecord(
             key, _str(r["yaml"]["path"], "yaml.path"), _str(r["yaml"]["sha256"], "yaml.sha256"),
-            _str(r["urdf"]["path"], "urdf.path"), _str(r["urdf"]["sha256"], "urdf.sha256"),
-            _str(r["generator_version"], "generator_version"), motor_count,
+            _str(r["urdf"]["path"], "urdf.path"), _str(r["urdf"]["sha256"], "urdf.sha256"), motor_count,
             _str(r["float_type"], "float_type"), tuple(sorted(joints, key=lambda j: j.index)))
     files = {_str(k, "files"): _str(v, f"files.{k}") for k, v in data["files"].items()}
-    return Manifest(_str(data["generator_version"], "generator_version"), robots, files)
+    return Manifest(_str(data["generator_version"], "generator_version"), robots, files, fmt)
 
 
 def path(generated_dir: Path) -> Path:
+    """Where the manifest of ``generated_dir`` lives."""
     return generated_dir / MANIFEST_NAME
 
 

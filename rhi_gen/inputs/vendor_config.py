@@ -1,0 +1,168 @@
+"""Load and validate a vendor YAML into a VendorConfig: the top-level schema.
+
+Every problem is a ConfigError naming the file, the line, the key and the fix. ``transport_options``
+belong to the robot's transport (transports/<name>.py); checks that need the URDF (joint names
+exist, every actuated joint mapped) live in model/build.py.
+"""
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+from typing import Any
+
+from .. import transports
+from ..errors import ConfigError
+from ..model import FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
+from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, vendor_problem
+from .validator import Validator
+from .yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
+
+TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
+            "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
+            "unmapped_joints")
+REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
+PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
+                  "state_decimation", "state_timeout_ms")
+IMU_KEYS = ("enabled", "name", "frame_id")
+
+FRAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_/.\-]*$")
+NETIF_RE = re.compile(r"^[A-Za-z0-9_.:\-]{1,64}$")
+SENSOR_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,63}$")
+
+
+def load_config(path: str | Path, *, display_path: str | None = None) -> VendorConfig:
+    """Read and validate one vendor YAML (URDF cross-checks happen in model/build.py)."""
+    path = Path(path)
+    shown = display_path or str(path)
+    text = read_text(path, shown)
+    data, lines = parse_yaml_text(text, shown)
+    return config_from_data(data, lines, shown, path.parent)
+
+
+def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, base_dir: Path) -> VendorConfig:
+    """Validate a parsed YAML tree (``base_dir``: the YAML's folder, for relative paths)."""
+    v = Validator(shown, lines)
+    v.mapping(data, "", TOP_KEYS)
+    for key in REQUIRED_KEYS:
+        if key not in data:
+            raise ConfigError(f"required key {key!r} is missing", file=shown, key=key,
+                              fix="see the YAML reference in README.md")
+
+    vendor = v.string(data["vendor"], "vendor")
+    if (problem := vendor_problem(vendor)):
+        raise v.error("vendor", problem, fix="use e.g. 'unitree' or 'my_company'")
+    robot = v.string(data["robot"], "robot")
+    if (problem := identifier_problem(robot, "robot")):
+        raise v.error("robot", problem, fix="use e.g. 'g1' or 'my_arm'")
+    transport = transports.get(v.choice(data["transport"], "transport", transports.NAMES))
+    motor_count = v.integer(data["motor_count"], "motor_count", 1, MAX_MOTORS)
+    float_type = (v.choice(data["float_type"], "float_type", FLOAT_TYPES) if "float_type" in data
+                  else transport.default_float_type)
+
+    urdf_rel = v.string(data["urdf"], "urdf")
+    if "\x00" in urdf_rel:
+        raise v.error("urdf", "path contains a NUL character", fix="write the plain path of the URDF or xacro file")
+    urdf_path = (base_dir / urdf_rel) if not os.path.isabs(urdf_rel) else Path(urdf_rel)
+
+    class_prefix = None
+    if "class_prefix" in data:
+        class_prefix = v.string(data["class_prefix"], "class_prefix")
+        if not CLASS_PREFIX_RE.match(class_prefix) or class_prefix.lower() in CPP_KEYWORDS:
+            raise v.error("class_prefix", f"{class_prefix!r} must be a C++ identifier starting with an "
+                          "uppercase letter (letters and digits only)", fix="e.g. G1 or MyArm")
+
+    xacro_args = v.string_map(data.get("xacro_args"), "xacro_args") if "xacro_args" in data else ()
+    package_paths: tuple[tuple[str, str], ...] = ()
+    if "package_paths" in data:
+        package_paths = tuple((name, str((base_dir / p) if not os.path.isabs(p) else Path(p)))
+                              for name, p in v.string_map(data["package_paths"], "package_paths"))
+
+    imu = ImuConfig()
+    if "imu" in data:
+        m = v.mapping(data["imu"], "imu", IMU_KEYS)
+        imu = ImuConfig(
+            enabled=v.boolean(m["enabled"], "imu.enabled") if "enabled" in m else True,
+            name=v.string(m["name"], "imu.name", SENSOR_NAME_RE, "sensor name") if "name" in m else "base_imu",
+            frame_id=v.string(m["frame_id"], "imu.frame_id", FRAME_RE, "frame id") if "frame_id" in m
+            else "imu_link",
+        )
+
+    params = Parameters()
+    if "parameters" in data:
+        m = v.mapping(data["parameters"], "parameters", PARAMETER_KEYS)
+        params = Parameters(
+            network_interface=v.string(m["network_interface"], "parameters.network_interface", NETIF_RE,
+                                       "network interface name") if "network_interface" in m
+            else params.network_interface,
+            enable_monitor=v.boolean(m["enable_monitor"], "parameters.enable_monitor")
+            if "enable_monitor" in m else params.enable_monitor,
+            command_writer_period_us=v.integer(m["command_writer_period_us"],
+                                               "parameters.command_writer_period_us", 100, 10_000_000)
+            if "command_writer_period_us" in m else params.command_writer_period_us,
+            state_decimation=v.integer(m["state_decimation"], "parameters.state_decimation", 1, 10_000)
+            if "state_decimation" in m else params.state_decimation,
+            state_timeout_ms=v.integer(m["state_timeout_ms"], "parameters.state_timeout_ms", 1, 600_000)
+            if "state_timeout_ms" in m else params.state_timeout_ms,
+        )
+
+    raw_options = data.get("transport_options")
+    options = transport.read_options(
+        v, v.mapping(raw_options, "transport_options", transport.option_keys) if raw_options is not None else {},
+        motor_count)
+
+    joint_map = _joint_map(v, data["joint_map"], motor_count)
+    unmapped: tuple[str, ...] = ()
+    if "unmapped_joints" in data:
+        raw = data["unmapped_joints"]
+        if isinstance(raw, Scalar) and raw.value is None:
+            raw = []
+        if not isinstance(raw, list):
+            raise v.error("unmapped_joints", "must be a list of URDF joint names", fix="e.g. [left_wheel, right_wheel]")
+        names = []
+        for i, item in enumerate(raw):
+            name = v.string(item, f"unmapped_joints[{i}]")
+            if name in names:
+                raise v.error(f"unmapped_joints[{i}]", f"{name!r} is listed twice", fix="remove the duplicate")
+            if name in dict(joint_map):
+                raise v.error(f"unmapped_joints[{i}]", f"{name!r} is also in joint_map",
+                              fix="a joint is either mapped to a motor or intentionally unmapped")
+            names.append(name)
+        unmapped = tuple(names)
+
+    return VendorConfig(
+        source=shown, vendor=vendor, robot=robot, urdf=str(urdf_path), urdf_relative=urdf_rel,
+        transport=transport.name, motor_count=motor_count, float_type=float_type, joint_map=joint_map,
+        unmapped_joints=unmapped, imu=imu, transport_options=options, parameters=params,
+        xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
+        content_sha256=content_sha256(data), key_lines=dict(lines),
+    )
+
+
+def _joint_map(v: Validator, raw: Any, motor_count: int) -> tuple[tuple[str, int], ...]:
+    if not isinstance(raw, dict) or not raw:
+        raise v.error("joint_map", "must be a non-empty mapping of URDF joint name: motor index",
+                      fix="run `rhi-gen inspect --urdf <file>` for a suggested map")
+    seen: dict[int, str] = {}
+    out = []
+    for name, item in raw.items():
+        path = f"joint_map.{name}"
+        if not name:
+            raise v.error(path, "joint name is empty", fix="write the URDF joint name before the colon")
+        if not isinstance(item, Scalar):
+            raise v.error(path, "must be a motor index (a whole number)",
+                          fix=f"write a whole number from 0 to {motor_count - 1}")
+        value = item.value
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise v.error(path, f"motor index must be a whole number, got {item.raw!r}",
+                          fix=f"write a whole number from 0 to {motor_count - 1}, without quotes")
+        if not 0 <= value < motor_count:
+            raise v.error(path, f"motor index {value} is out of range 0..{motor_count - 1} "
+                          f"(motor_count is {motor_count})",
+                          fix=f"use an index below {motor_count} or raise motor_count")
+        if value in seen:
+            raise v.error(path, f"motor index {value} is already used by {seen[value]!r}",
+                          fix="every motor index may appear once")
+        seen[value] = name
+        out.append((name, value))
+    return tuple(out)

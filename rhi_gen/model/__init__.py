@@ -1,0 +1,48 @@
+"""The model: what a robot is, as plain frozen data (no I/O), in three layers.
+
+- ``UrdfRobot``    what the URDF says (model/urdf.py, read by inputs/urdf_loader.py)
+- ``VendorConfig`` what the vendor YAML says (model/config.py, read by inputs/vendor_config.py)
+- ``RobotModel``   both cross-checked, every C++ name decided (model/robot.py, made by model/build.py);
+  the templates read only this.
+"""
+from .config import (
+    FLOAT_TYPES,
+    MAX_MOTORS,
+    ImuConfig,
+    JointGroup,
+    Parameters,
+    QosConfig,
+    TransportOptions,
+    VendorConfig,
+)
+from .robot import InputProvenance, MotorJoint, RobotModel
+from .urdf import (
+    ACTUATED_TYPES,
+    JointLimits,
+    Mimic,
+    Ros2ControlBlock,
+    Ros2ControlJoint,
+    UrdfJoint,
+    UrdfRobot,
+)
+
+__all__ = [
+    "ACTUATED_TYPES",
+    "FLOAT_TYPES",
+    "MAX_MOTORS",
+    "ImuConfig",
+    "InputProvenance",
+    "JointGroup",
+    "JointLimits",
+    "Mimic",
+    "MotorJoint",
+    "Parameters",
+    "QosConfig",
+    "RobotModel",
+    "Ros2ControlBlock",
+    "Ros2ControlJoint",
+    "TransportOptions",
+    "UrdfJoint",
+    "UrdfRobot",
+    "VendorConfig",
+]

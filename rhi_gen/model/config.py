@@ -1,0 +1,90 @@
+"""What the vendor YAML says, validated: plain frozen data, no I/O.
+
+Built by inputs/vendor_config.py (the transport_options by the robot's transport module in
+transports/); cross-checked against the URDF by model/build.py.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+FLOAT_TYPES = ("float", "double")
+MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the generated tables sane
+
+
+@dataclass(frozen=True)
+class Parameters:
+    """hardware_parameters written into the ros2_control description (spec defaults)."""
+    network_interface: str = "lo"
+    enable_monitor: bool = True
+    command_writer_period_us: int = 2000
+    state_decimation: int = 1
+    state_timeout_ms: int = 100
+
+
+@dataclass(frozen=True)
+class ImuConfig:
+    enabled: bool = True
+    name: str = "base_imu"
+    frame_id: str = "imu_link"
+
+
+@dataclass(frozen=True)
+class QosConfig:
+    reliability: str = "best_effort"  # best_effort | reliable
+    durability: str = "volatile"      # volatile | transient_local
+    depth: int = 1
+
+
+@dataclass(frozen=True)
+class JointGroup:
+    """A contiguous slice of SDK slots published/subscribed on its own topics (AgiBot)."""
+    name: str
+    size: int
+    command_topic: str
+    state_topic: str
+    offset: int = 0  # first global slot index of this group (decided by the transport)
+
+
+@dataclass(frozen=True)
+class TransportOptions:
+    """Union of every transport's options; the robot's transport module fills the ones it uses.
+
+    One flat type (rather than one per transport) because the templates read these fields by name.
+    """
+    # unitree_dds
+    lowcmd_topic: str = "rt/lowcmd"
+    lowstate_topic: str = "rt/lowstate"
+    sdk_slots: int = 35
+    domain_id: int = 0
+    mode_pr: int = 0
+    release_motion_control: bool = False
+    # ROS 2 topic transports
+    command_topic: str = ""
+    state_topic: str = ""
+    imu_topic: str = ""
+    groups: tuple[JointGroup, ...] = ()
+    qos: QosConfig = field(default_factory=QosConfig)
+    parallel_parser_type: int = 0  # engineai: 0 CLASSIC_PARSER, 1 RL_PARSER
+
+
+@dataclass(frozen=True)
+class VendorConfig:
+    source: str            # YAML path as given (for messages)
+    vendor: str
+    robot: str
+    urdf: str              # resolved path of the URDF/xacro
+    urdf_relative: str     # as written in the YAML (relative to the YAML)
+    transport: str
+    motor_count: int
+    float_type: str
+    joint_map: tuple[tuple[str, int], ...]      # YAML order
+    unmapped_joints: tuple[str, ...] = ()
+    imu: ImuConfig = field(default_factory=ImuConfig)
+    transport_options: TransportOptions = field(default_factory=TransportOptions)
+    parameters: Parameters = field(default_factory=Parameters)
+    xacro_args: tuple[tuple[str, str], ...] = ()
+    package_paths: tuple[tuple[str, str], ...] = ()  # ROS package name -> directory (for $(find))
+    class_prefix: str | None = None
+    # sha256 of the parsed YAML content (inputs/yaml_source.content_sha256): comments and layout do not count
+    content_sha256: str = ""
+    key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

@@ -1,0 +1,68 @@
+"""The decided robot: URDF and vendor YAML cross-checked, every C++ name chosen.
+
+Built by model/build.py; the templates read only this (see docs/ARCHITECTURE.md "Template context").
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .config import ImuConfig, Parameters, TransportOptions
+from .urdf import JointLimits
+
+
+@dataclass(frozen=True)
+class MotorJoint:
+    """A URDF joint driven by SDK slot ``index``."""
+    name: str              # URDF joint name, raw text (escape with |cpp_string / |xml in templates)
+    index: int             # SDK motor slot
+    type: str              # revolute | continuous | prismatic
+    limits: JointLimits | None
+    group: str | None = None           # AgiBot group name
+    group_position: int | None = None  # position inside the group
+
+
+@dataclass(frozen=True)
+class InputProvenance:
+    """Where the robot came from: named in banners, fingerprinted in generated/.rhi-gen-manifest."""
+    yaml_path: str          # project-relative, POSIX
+    urdf_path: str          # project-relative, POSIX
+    yaml_sha256: str        # of the parsed YAML content: comments and layout do not count
+    urdf_sha256: str        # of the expanded URDF without the volatile xacro header
+
+
+@dataclass(frozen=True)
+class RobotModel:
+    vendor: str               # C++ namespace and folder, e.g. "unitree"
+    robot: str                # file stem, e.g. "g1"
+    robot_pascal: str         # "G1", "PM01", "MyArm"
+    robot_upper: str          # "G1", "PM01", "MY_ARM"
+    class_name: str           # "G1HardwareInterface"
+    plugin_name: str          # "unitree/G1HardwareInterface"
+    node_name: str            # "g1_hardware_interface"
+    transport: str            # a name registered in rhi_gen/transports/
+    motor_count: int          # N of MotorCommand<N, T>
+    float_type: str           # "float" | "double"
+    joints: tuple[MotorJoint, ...]        # mapped joints, URDF order
+    unmapped_joints: tuple[str, ...]      # actuated joints intentionally left out
+    mimic_joints: tuple[str, ...]         # follow another joint, no interfaces
+    imu: ImuConfig
+    parameters: Parameters
+    transport_options: TransportOptions
+    provenance: InputProvenance
+    urdf_name: str = ""
+
+    @property
+    def joints_by_index(self) -> tuple[MotorJoint, ...]:
+        return tuple(sorted(self.joints, key=lambda j: j.index))
+
+    @property
+    def slot_names(self) -> tuple[str | None, ...]:
+        """Joint name per SDK slot 0..motor_count-1, None where the slot is not mapped."""
+        names: list[str | None] = [None] * self.motor_count
+        for j in self.joints:
+            names[j.index] = j.name
+        return tuple(names)
+
+    @property
+    def vendor_pascal(self) -> str:
+        return "".join(p[:1].upper() + p[1:] for p in self.vendor.split("_"))

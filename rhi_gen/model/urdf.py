@@ -1,0 +1,83 @@
+"""What the URDF says: joints, limits, mimic joints, links and any existing <ros2_control> tag.
+
+Built by inputs/urdf_loader.py; plain frozen data, no I/O.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
+
+
+@dataclass(frozen=True)
+class JointLimits:
+    lower: float | None = None
+    upper: float | None = None
+    velocity: float | None = None
+    effort: float | None = None
+
+
+@dataclass(frozen=True)
+class Mimic:
+    joint: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class UrdfJoint:
+    name: str
+    type: str  # revolute | continuous | prismatic | fixed | floating | planar
+    parent: str
+    child: str
+    axis: tuple[float, float, float] = (1.0, 0.0, 0.0)
+    limits: JointLimits | None = None
+    mimic: Mimic | None = None
+    line: int | None = None  # line in the (expanded) URDF, for error messages
+
+    @property
+    def actuated(self) -> bool:
+        """A joint a motor drives: movable and not a mimic of another joint (ros2_control's view)."""
+        return self.type in ACTUATED_TYPES and self.mimic is None
+
+
+@dataclass(frozen=True)
+class Ros2ControlJoint:
+    """A <joint> inside an existing <ros2_control> tag of the URDF."""
+    name: str
+    command_interfaces: tuple[str, ...]
+    state_interfaces: tuple[str, ...]
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class Ros2ControlBlock:
+    name: str
+    type: str
+    plugin: str | None
+    joints: tuple[Ros2ControlJoint, ...]
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class UrdfRobot:
+    name: str
+    source: str  # path as given (for messages)
+    joints: tuple[UrdfJoint, ...]  # document order
+    links: tuple[str, ...]
+    ros2_control: tuple[Ros2ControlBlock, ...] = ()
+    canonical_xml: bytes = b""  # expanded XML without the volatile xacro header, for hashing
+
+    @property
+    def actuated_joints(self) -> tuple[UrdfJoint, ...]:
+        return tuple(j for j in self.joints if j.actuated)
+
+    @property
+    def mimic_joints(self) -> tuple[UrdfJoint, ...]:
+        return tuple(j for j in self.joints if j.mimic is not None and j.type in ACTUATED_TYPES)
+
+    def joint(self, name: str) -> UrdfJoint | None:
+        for j in self.joints:
+            if j.name == name:
+                return j
+        return None

@@ -1,0 +1,65 @@
+"""`rhi-gen new`: the suggested vendor YAML and the files it generates, planned before anything is written."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import ProjectError, WriteBlockedError
+from ..inputs.scaffold import relative_urdf_path, suggest_yaml
+from ..inputs.urdf_loader import load_urdf
+from ..inputs.vendor_config import config_from_data
+from ..inputs.yaml_source import parse_yaml_text
+from ..model.build import build_model
+from ..project import Project, robot_yamls, validate_names
+from ..write.changes import FileChange, compare
+from .generate import plan_generation
+from .load import LoadedRobot, load_robots
+
+
+@dataclass(frozen=True)
+class NewRobotPlan:
+    yaml_relpath: str
+    yaml_text: str
+    robot: LoadedRobot
+    changes: list[FileChange]  # relative to the project root: the YAML and generated/ files
+
+
+def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path, transport: str | None,
+                   xacro_args: dict[str, str], package_paths: dict[str, str], force: bool) -> NewRobotPlan:
+    """Everything `rhi-gen new` will write, computed before anything is written."""
+    validate_names(vendor, robot)
+    yaml_path = project.yaml_path(vendor, robot)
+    yaml_rel = project.relative(yaml_path)
+    if yaml_path.exists() and not force:
+        raise ProjectError("already exists", file=yaml_rel,
+                           fix="run `rhi-gen generate` to regenerate it, or `rhi-gen new --force` to start over")
+    if not urdf_path.is_file():
+        raise ProjectError("URDF not found" if not urdf_path.exists() else "is not a file", file=str(urdf_path),
+                           key="--urdf", fix="give the path of a .urdf or .xacro file")
+    urdf = load_urdf(urdf_path, xacro_args=xacro_args,
+                     package_paths={k: Path(v) for k, v in package_paths.items()},
+                     display_path=str(urdf_path))
+    rel_pkg = {k: relative_urdf_path(Path(v), yaml_path.parent) for k, v in package_paths.items()}
+    text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
+                        urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,
+                        xacro_args=xacro_args, package_paths=rel_pkg)
+    # The model is built from the in-memory YAML, through the normal validator: nothing is on disk yet.
+    data, lines = parse_yaml_text(text, yaml_rel)
+    config = config_from_data(data, lines, yaml_rel, yaml_path.parent)
+    model = build_model(config, urdf, yaml_path=yaml_path, project_root=project.root)
+    new = LoadedRobot(yaml_path, config, urdf, model)
+    others = load_robots(project, [p for p in robot_yamls(project) if p.resolve() != yaml_path.resolve()])
+    clash = next((r for r in others if r.model.robot == robot), None)
+    if clash is not None:
+        raise ProjectError(f"robot name {robot!r} is already used by {project.relative(clash.yaml_path)}",
+                           key="--robot", fix="choose another robot name")
+    # Only the new robot's files and the shared ones: other drivers stay as they are, user regions of
+    # the shared files (CMakeLists.txt) are carried over and hand edits block as in `generate`.
+    generation = plan_generation(project, [*others, new], only=[new])
+    if generation.blocked:
+        err = generation.blocked_error()
+        raise WriteBlockedError(err.message, file=err.file, line=err.line,
+                                fix="move the edits into user regions, or run `rhi-gen generate --force` first "
+                                    "(keeps a backup), then rerun `rhi-gen new`")
+    prefixed = [FileChange(f"generated/{c.path}", c.status, c.old, c.new) for c in generation.changes]
+    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, {yaml_rel: text.encode("utf-8")}), *prefixed])

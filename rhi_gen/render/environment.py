@@ -1,0 +1,40 @@
+"""The one Jinja environment every template renders in, and what it offers templates.
+
+Settings (docs/ARCHITECTURE.md "Template context"): StrictUndefined, trim/lstrip blocks, keep the
+trailing newline, autoescape only for XML templates, and a finalize that refuses to print None.
+Escaping is decided in Python (render/literals.py filters), never in templates.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+import jinja2
+
+from .. import transports
+from ..errors import GenerationError
+from .literals import FILTERS
+from .markers import user_region
+
+
+def _finalize(value: Any) -> Any:
+    if value is None:
+        raise GenerationError("a template printed None (a model field is missing)")
+    return value
+
+
+def make_environment() -> jinja2.Environment:
+    env = jinja2.Environment(
+        loader=jinja2.PackageLoader("rhi_gen", "templates"),
+        undefined=jinja2.StrictUndefined,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        keep_trailing_newline=True,
+        autoescape=jinja2.select_autoescape(enabled_extensions=("xml.j2", "xacro.j2"),
+                                            default_for_string=False, default=False),
+        finalize=_finalize,
+    )
+    env.filters.update(FILTERS)
+    env.globals["user_region"] = user_region
+    # The package's dependency lists, from each transport's module (same names as package/_deps.j2).
+    env.globals["deps"] = transports.dependency_tables()
+    return env

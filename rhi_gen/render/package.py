@@ -1,0 +1,95 @@
+"""Rendering: RobotModel(s) -> {package path: text}, entirely in memory.
+
+Nothing here touches the output folder: a template error halfway through leaves the disk as it was
+because the writer only starts once the whole plan exists.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from pathlib import PurePosixPath
+from typing import Any
+
+import jinja2
+
+from .. import transports
+from ..errors import GenerationError
+from ..model import RobotModel
+from .banner import SHARED_INPUTS, banner_for, package_inputs, robot_inputs
+from .environment import make_environment
+
+# (template, output path) — output paths are relative to generated/robot_hardware_interface/
+COMMON_FILES = tuple(
+    (f"common/{name}.j2", f"include/robot_hardware_interface/common/{name}")
+    for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
+                 "hardware_parameters.hpp", "ros2_control_compat.hpp", "driver_core.hpp",
+                 "system_driver.hpp"))
+TEST_FILES = (("test/hardware_interface_test.hpp.j2", "test/hardware_interface_test.hpp"),)
+PACKAGE_FILES = (
+    ("package/CMakeLists.txt.j2", "CMakeLists.txt"),
+    ("package/package.xml.j2", "package.xml"),
+    ("package/robot_hardware_interface.xml.j2", "robot_hardware_interface.xml"),
+)
+ROBOT_FILES = (
+    ("robot/driver.hpp.j2", "include/robot_hardware_interface/{vendor}/{robot}.hpp"),
+    ("robot/driver.cpp.j2", "src/{vendor}/{robot}.cpp"),
+    ("robot/ros2_control.xacro.j2", "description/{robot}.ros2_control.xacro"),
+    ("robot/controllers.yaml.j2", "config/{robot}_controllers.yaml"),
+    ("robot/test.cpp.j2", "test/test_{robot}_hardware_interface.cpp"),
+)
+
+
+def robot_paths(vendor: str, robot: str) -> tuple[str, ...]:
+    """The package paths of one robot's own files (everything else is shared)."""
+    return tuple(pattern.format(vendor=vendor, robot=robot) for _, pattern in ROBOT_FILES)
+
+
+def _render_one(env: jinja2.Environment, template: str, context: dict[str, Any], out: str) -> str:
+    try:
+        return env.get_template(template).render(**context)
+    except GenerationError:
+        raise
+    except jinja2.TemplateNotFound as exc:
+        raise GenerationError(f"template {exc.name} is missing from the rhi-gen installation",
+                              file=out) from exc
+    except jinja2.TemplateError as exc:
+        line = getattr(exc, "lineno", None)
+        raise GenerationError(f"template {template} failed: {exc}", file=out, line=line,
+                              fix="this is a bug in rhi-gen's templates; please report it") from exc
+    except (TypeError, ValueError, AttributeError) as exc:
+        raise GenerationError(f"template {template} failed: {exc}", file=out,
+                              fix="this is a bug in rhi-gen's templates; please report it") from exc
+
+
+def render_package(models: Sequence[RobotModel],
+                   env_factory: Callable[[], jinja2.Environment] = make_environment) -> dict[str, str]:
+    """Render the whole robot_hardware_interface package for ``models``.
+
+    Returns paths relative to the package folder (POSIX), in a deterministic order.
+    """
+    env = env_factory()
+    robots = sorted(models, key=lambda m: (m.vendor, m.robot))
+    plan: dict[str, str] = {}
+
+    shared_banner = banner_for(SHARED_INPUTS)
+    for template, out in (*COMMON_FILES, *(TEST_FILES if robots else ())):
+        plan[out] = _render_one(env, template, {"banner": shared_banner}, out)
+    for name in sorted({r.transport for r in robots}):
+        for template, out in transports.TRANSPORTS[name].shared_files:
+            plan[out] = _render_one(env, template, {"banner": shared_banner}, out)
+
+    package_banner = banner_for(package_inputs(robots))
+    for template, out in PACKAGE_FILES:
+        plan[out] = _render_one(env, template, {"banner": package_banner, "robots": robots}, out)
+
+    for robot in robots:
+        banner = banner_for(robot_inputs(robot))
+        for template, pattern in ROBOT_FILES:
+            out = pattern.format(vendor=robot.vendor, robot=robot.robot)
+            if out in plan:  # e.g. vendor "common" + robot "types": never overwrite silently
+                raise GenerationError(f"{robot.vendor}/{robot.robot} would overwrite {out}, which another part "
+                                      "of the package already generates", fix="rename the robot or vendor")
+            plan[out] = _render_one(env, template, {"banner": banner, "robot": robot, "robots": robots}, out)
+
+    for path in plan:
+        assert not PurePosixPath(path).is_absolute() and ".." not in PurePosixPath(path).parts
+    return dict(sorted(plan.items()))

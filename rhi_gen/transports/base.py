@@ -1,0 +1,89 @@
+"""What a transport is: the interface every module in transports/ implements.
+
+A transport is how a generated driver talks to its robot (a vendor SDK over DDS, or ROS 2 topics).
+Everything rhi-gen knows about one transport lives in its own module: the YAML options it accepts
+(with validation and defaults), its default float type, the packages its driver needs, the files it
+adds to the package once, the ``transport_options`` lines `rhi-gen new` writes, and the vendor robots
+whose real SDK motor order is known. Its C++ logic lives in ``templates/transport/<name>.hpp.j2`` (a
+shared header, generated once per package) and its per-robot glue (the options a robot's source
+passes to it) in ``templates/robot/glue/<name>.j2``, found by name.
+"""
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+from ..inputs.validator import Validator
+from ..model import TransportOptions
+
+# Packages every driver needs, whatever its transport.
+COMMON_DEPENDENCIES = ("hardware_interface", "pluginlib", "rclcpp", "rclcpp_lifecycle")
+
+# Where a dependency comes from decides how package.xml and CMakeLists.txt declare it.
+ROSDISTRO = "rosdistro"          # a released ROS package: <depend>, rosdep key, ament variables
+VENDOR_SOURCE = "vendor_source"  # a ROS package built from the vendor's sources: no rosdep key
+PLAIN_CMAKE = "plain_cmake"      # a plain CMake package: no package.xml, no rosdep key; linked by target
+
+
+@dataclass(frozen=True)
+class Dependency:
+    name: str
+    source: str  # ROSDISTRO | VENDOR_SOURCE | PLAIN_CMAKE
+
+
+@dataclass(frozen=True)
+class KnownRobot:
+    """A vendor robot whose SDK motor order rhi-gen knows (`rhi-gen new` and `inspect` suggest it)."""
+    vendor: str
+    robot: str
+    transport: str
+    joint_order: tuple[str, ...]                       # SDK motor index order
+    note: str                                          # where the order comes from, for the YAML comment
+    groups: tuple[tuple[str, tuple[str, ...]], ...] = ()  # per joint group, for grouped transports
+
+
+def suggest_order(actuated: Sequence[str], known: KnownRobot | None) -> list[str]:
+    """Actuated joints in SDK order: the known robot's order where names match, the rest in URDF order."""
+    if known is None or not known.joint_order:
+        return list(actuated)
+    first = [n for n in known.joint_order if n in actuated]
+    return first + [n for n in actuated if n not in first]
+
+
+class Transport(ABC):
+    """One transport. Subclasses set the class attributes and implement the two abstract methods."""
+
+    name: ClassVar[str]                        # the YAML's `transport:` value
+    summary: ClassVar[str]                     # one line: what the driver talks to
+    option_keys: ClassVar[tuple[str, ...]]     # keys allowed under `transport_options:`
+    default_float_type: ClassVar[str]          # MotorCommand<N, T>'s T when the YAML gives none
+    dependencies: ClassVar[tuple[Dependency, ...]]  # packages the driver needs besides COMMON_DEPENDENCIES
+    shared_files: ClassVar[tuple[tuple[str, str], ...]] = ()  # (template, package path), once per package
+    vendors: ClassVar[tuple[str, ...]] = ()    # vendors whose robots `rhi-gen new` gives this transport
+    known_robots: ClassVar[tuple[KnownRobot, ...]] = ()
+    motor_slots: ClassVar[int | None] = None   # fixed motor slot count of the SDK message, if any
+    slots_holder: ClassVar[str] = ""           # what has those slots, for messages ("a unitree hg LowCmd_")
+
+    @abstractmethod
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+        """Validate ``transport_options`` (keys already checked against ``option_keys``), fill defaults."""
+
+    @abstractmethod
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
+        """The YAML lines under ``transport_options:`` that `rhi-gen new` writes (indented two spaces)."""
+
+    def joint_labels(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
+        """Per motor slot, a label for the joint_map comment `rhi-gen new` writes (none by default)."""
+        return []
+
+    @property
+    def glue_template(self) -> str:
+        """The template a robot's source imports: this transport's options and C++ type."""
+        return f"robot/glue/{self.name}.j2"
+
+
+def transport_header(name: str) -> tuple[str, str]:
+    """(template, package path) of a shared header in include/robot_hardware_interface/transport/."""
+    return (f"transport/{name}.j2", f"include/robot_hardware_interface/transport/{name}")

@@ -142,7 +142,9 @@ def test_missing_shared_skips_only_vendor_transports(tmp_path, monkeypatch):
     monkeypatch.setattr(vendor_msgs, "UPSTREAM_MSGS", tmp_path / "no_shared")
     reason = vendor_msgs.missing_reason()
     assert reason and str(tmp_path / "no_shared") in reason and "hal/msg/JointCommand.msg" in reason
-    assert "agibot_topics needs the vendor messages" in vendor_msgs.skip_reason("agibot_topics")
-    assert "engineai_topics needs the vendor messages" in vendor_msgs.skip_reason("engineai_topics")
+    agibot, engineai = vendor_msgs.skip_reason("agibot_topics"), vendor_msgs.skip_reason("engineai_topics")
+    assert agibot.startswith("agibot_topics needs the vendor messages") and "aimdk_msgs/" in agibot, agibot
+    assert engineai.startswith("engineai_topics needs the vendor messages") and "interface_protocol/" in engineai
+    assert "aimdk_msgs/" not in engineai, engineai
     assert vendor_msgs.skip_reason("unitree_dds") is None and vendor_msgs.skip_reason("generic_topics") is None
     assert vendor_msgs.include_dirs() == []

@@ -75,9 +75,9 @@ GenerateCpp('cpp').generate(job['package'], job['interface_files'],
 _LOCK = threading.Lock()
 
 
-def missing_reason() -> str | None:
+def missing_reason(packages: tuple[VendorPackage, ...] = PACKAGES) -> str | None:
     """Why the vendor messages cannot be generated here (None when every source file is present)."""
-    missing = [f"{p.source}/{m}" for p in PACKAGES for m in p.messages if not (UPSTREAM_MSGS / p.source / m).is_file()]
+    missing = [f"{p.source}/{m}" for p in packages for m in p.messages if not (UPSTREAM_MSGS / p.source / m).is_file()]
     if not missing:
         return None
     return (f"vendor .msg files not found under {UPSTREAM_MSGS} (../shared/upstream/msgs is not beside this "
@@ -86,10 +86,11 @@ def missing_reason() -> str | None:
 
 def skip_reason(transport: str) -> str | None:
     """Why a driver of ``transport`` cannot be compiled here (None when it can)."""
-    if any(transport in p.transports for p in PACKAGES):
-        reason = missing_reason()
-        return f"{transport} needs the vendor messages: {reason}" if reason else None
-    return None
+    own = tuple(p for p in PACKAGES if transport in p.transports)
+    if not own or not missing_reason():
+        return None
+    # Every package is generated together: name this transport's own missing files when it has some.
+    return f"{transport} needs the vendor messages: {missing_reason(own) or missing_reason()}"
 
 
 def cache_key() -> str:

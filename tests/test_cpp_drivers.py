@@ -29,10 +29,11 @@ from pathlib import Path
 
 import pytest
 
+from tests import vendor_msgs
 from tests.cpp_build import (FLAVOURS, PACKAGE, STANDINS_INCLUDE, WARNING_FLAGS, build_harness,
-                             crc_header, expand_description, plugin_types, project_robot_labels, require_compiler,
-                             run_binary_retrying, run_parallel, session_builder, session_reference_package,
-                             yaml_joint_map)
+                             crc_header, expand_description, message_include_flags, plugin_types,
+                             project_robot_labels, require_compiler, run_binary_retrying, run_parallel,
+                             session_builder, session_reference_package, yaml_joint_map)
 
 ROBOTS = project_robot_labels()
 REPORT = Path(__file__).resolve().parent / ".cpp_report.txt"
@@ -55,7 +56,8 @@ def reference(tmp_path_factory):
 def harness_binaries(reference, tmp_path_factory):
     """{(robot, flavour): (link result, [compile results])}, built in parallel, each once."""
     builder = session_builder(tmp_path_factory)
-    jobs = [(b, flavour) for b in reference.builds for flavour in FLAVOURS]
+    jobs = [(b, flavour) for b in reference.builds for flavour in FLAVOURS
+            if not vendor_msgs.skip_reason(b.model.transport)]
     start = time.monotonic()
     results = run_parallel(jobs, lambda job: build_harness(builder, *job))
     _TIMES["build"] = time.monotonic() - start
@@ -74,6 +76,15 @@ def harness_runs(harness_binaries):
 
 def _robot(reference, label):
     return reference.build(label)
+
+
+def _compilable_robot(reference, label):
+    """The robot, or a skip when its transport's vendor messages cannot be generated (no ../shared)."""
+    b = reference.build(label)
+    reason = vendor_msgs.skip_reason(b.model.transport)
+    if reason:
+        pytest.skip(reason)
+    return b
 
 
 # ------------------------------------------------------------------------------------ coverage
@@ -107,7 +118,8 @@ def test_common_headers_compile_on_their_own(reference, tmp_path):
         # Twice: the include guard / #pragma once works; alone: it includes what it uses.
         src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
         proc = subprocess.run([cxx, *WARNING_FLAGS, "-Wpedantic", "-fsyntax-only", f"-I{include}",
-                               f"-I{STANDINS_INCLUDE}", str(src)], capture_output=True, text=True)
+                               f"-I{STANDINS_INCLUDE}", *message_include_flags(), str(src)],
+                              capture_output=True, text=True)
         return rel, proc
 
     failures = [f"{rel}:\n{proc.stderr[:3000]}" for rel, proc in run_parallel(headers, compile_one)
@@ -118,13 +130,13 @@ def test_common_headers_compile_on_their_own(reference, tmp_path):
 @pytest.mark.parametrize("label", ROBOTS)
 def test_driver_header_compiles_on_its_own(reference, label, tmp_path):
     cxx = require_compiler()
-    b = _robot(reference, label)
+    b = _compilable_robot(reference, label)
     rel = f"{PACKAGE}/{b.model.vendor}/{b.model.robot}.hpp"
     src = tmp_path / "alone.cpp"
     src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
     proc = subprocess.run([cxx, *WARNING_FLAGS, "-Wpedantic", "-fsyntax-only",
-                           f"-I{reference.package_dir / 'include'}", f"-I{STANDINS_INCLUDE}", str(src)],
-                          capture_output=True, text=True)
+                           f"-I{reference.package_dir / 'include'}", f"-I{STANDINS_INCLUDE}",
+                           *message_include_flags(), str(src)], capture_output=True, text=True)
     assert proc.returncode == 0, f"{rel} does not compile on its own:\n{proc.stderr[:4000]}"
 
 
@@ -159,7 +171,8 @@ def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path)
 # ------------------------------------------------------------------------------------ compile
 @pytest.mark.parametrize("flavour", list(FLAVOURS))
 @pytest.mark.parametrize("label", ROBOTS)
-def test_driver_compiles_with_werror(harness_binaries, label, flavour):
+def test_driver_compiles_with_werror(harness_binaries, reference, label, flavour):
+    _compilable_robot(reference, label)
     link, steps = harness_binaries[(label, flavour)]
     driver = steps[0]
     assert driver.ok, (f"{label} driver does not compile ({flavour}, -Wall -Wextra -Werror):\n"
@@ -173,6 +186,7 @@ def test_driver_compiles_with_werror(harness_binaries, label, flavour):
 @pytest.mark.parametrize("flavour", list(FLAVOURS))
 @pytest.mark.parametrize("label", ROBOTS)
 def test_driver_against_simulated_robot(harness_runs, harness_binaries, reference, label, flavour):
+    _compilable_robot(reference, label)
     link, _ = harness_binaries[(label, flavour)]
     assert link.ok, f"{label} ({flavour}) did not build: see test_driver_compiles_with_werror"
     run = harness_runs[(label, flavour)]
@@ -189,7 +203,8 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
 
 
 @pytest.mark.parametrize("label", ROBOTS)
-def test_hot_paths_allocate_nothing(harness_runs, label):
+def test_hot_paths_allocate_nothing(harness_runs, reference, label):
+    _compilable_robot(reference, label)
     run = harness_runs.get((label, "plain"))
     assert run is not None, f"{label}: plain harness did not build"
     m = re.search(r"^allocations over (\d+) cycles: state callback (\d+), IMU callback (\d+), read\(\) (\d+), "
@@ -202,7 +217,8 @@ def test_hot_paths_allocate_nothing(harness_runs, label):
 
 @pytest.mark.parametrize("flavour", ["tsan", "asan_ubsan"])
 @pytest.mark.parametrize("label", ROBOTS)
-def test_no_torn_frames_with_real_threads(harness_runs, label, flavour):
+def test_no_torn_frames_with_real_threads(harness_runs, reference, label, flavour):
+    _compilable_robot(reference, label)
     run = harness_runs.get((label, flavour))
     assert run is not None, f"{label}: {flavour} harness did not build"
     m = re.search(r"torn states (\d+), torn commands (\d+), bad CRCs (\d+)", run.stdout)
@@ -218,6 +234,9 @@ def test_report(harness_runs, harness_binaries, reference, capsys):
         b = _robot(reference, label)
         lines.append(f"{label}: {b.model.transport}, {b.model.motor_count} SDK slots, "
                      f"{len(b.model.joints)} mapped joints, {b.model.float_type}")
+        if vendor_msgs.skip_reason(b.model.transport):
+            lines.append(f"  SKIPPED: {vendor_msgs.skip_reason(b.model.transport)}")
+            continue
         for flavour in FLAVOURS:
             run = harness_runs.get((label, flavour))
             link, steps = harness_binaries[(label, flavour)]

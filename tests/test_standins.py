@@ -1,8 +1,10 @@
 """The C++ stand-ins (tests/cpp/standins): they compile warning-free, behave as documented, and reject
-what the real ROS 2 Humble / unitree_sdk2 APIs reject.
+what the real ROS 2 Humble / unitree_sdk2 APIs reject. Messages are the real ROS 2 headers
+(tests/ros_msgs.py, tests/vendor_msgs.py).
 
 * the self-test program compiles with g++ -std=c++17 -Wall -Wextra -Werror and passes, plain and under
-  -fsanitize=address,undefined and -fsanitize=thread;
+  -fsanitize=address,undefined and -fsanitize=thread; with the rosidl-generated vendor messages it also
+  checks them (skipped, with the reason, when ../shared is missing);
 * every stand-in header compiles on its own;
 * every compile_fail/ snippet compiles without RHI_EXPECT_FAIL and fails, with the expected
   diagnostic, with it;
@@ -20,7 +22,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.cpp_build import require_compiler
+from tests import vendor_msgs
+from tests.cpp_build import message_include_flags, require_compiler
 
 STANDINS = Path(__file__).resolve().parent / "cpp" / "standins"
 INCLUDE = STANDINS / "include"
@@ -28,6 +31,7 @@ SELFTEST = STANDINS / "selftest" / "selftest.cpp"
 COMPILE_FAIL = sorted((STANDINS / "selftest" / "compile_fail").glob("*.cpp"))
 
 CXXFLAGS = ["-std=c++17", "-Wall", "-Wextra", "-Werror", "-pthread", f"-I{INCLUDE}"]
+VENDOR_CHECKS = "selftest: vendor messages checked"
 FLAVOURS = {
     # the generated CMakeLists adds -Wpedantic: keep the stand-ins clean under it too
     "plain": ["-O2", "-Wpedantic"],
@@ -53,10 +57,12 @@ def selftest_binaries(tmp_path_factory) -> dict[str, tuple[Path, subprocess.Comp
     """Compile the self-test in every flavour, in parallel; {flavour: (binary, compile result)}."""
     cxx = require_compiler()
     out_dir = tmp_path_factory.mktemp("standins")
+    vendor = [] if vendor_msgs.missing_reason() else ["-DRHI_SELFTEST_VENDOR_MSGS"]
+    messages = message_include_flags()
 
     def build(flavour: str):
         binary = out_dir / f"selftest_{flavour}"
-        cmd = [cxx, *CXXFLAGS, *FLAVOURS[flavour], str(SELFTEST), "-o", str(binary)]
+        cmd = [cxx, *CXXFLAGS, *messages, *vendor, *FLAVOURS[flavour], str(SELFTEST), "-o", str(binary)]
         return flavour, binary, subprocess.run(cmd, capture_output=True, text=True, env=ENV_C)
 
     with ThreadPoolExecutor(max_workers=len(FLAVOURS)) as pool:
@@ -77,6 +83,17 @@ def test_selftest_compiles_and_passes(selftest_binaries, flavour):
     assert "WARNING: ThreadSanitizer" not in run.stderr, run.stderr[-8000:]
 
 
+def test_selftest_checks_the_vendor_messages(selftest_binaries):
+    """The rosidl-generated aimdk_msgs / interface_protocol and the ROS hooks with them (needs ../shared)."""
+    reason = vendor_msgs.missing_reason()
+    if reason:
+        pytest.skip(reason)
+    binary, build = selftest_binaries["plain"]
+    assert build.returncode == 0, build.stderr[-8000:]
+    run = subprocess.run([str(binary)], capture_output=True, text=True, env=ENV_C, timeout=300)
+    assert run.returncode == 0 and VENDOR_CHECKS in run.stdout, run.stdout[-3000:] + run.stderr[-3000:]
+
+
 def test_every_header_compiles_on_its_own(tmp_path):
     cxx = require_compiler()
     headers = _public_headers()
@@ -85,7 +102,7 @@ def test_every_header_compiles_on_its_own(tmp_path):
     def check(header: str):
         src = tmp_path / (re.sub(r"[^A-Za-z0-9]", "_", header) + ".cpp")
         src.write_text(f'#include "{header}"\n#include "{header}"\n')
-        proc = subprocess.run([cxx, *CXXFLAGS, "-Wpedantic", "-fsyntax-only", str(src)],
+        proc = subprocess.run([cxx, *CXXFLAGS, *message_include_flags(), "-Wpedantic", "-fsyntax-only", str(src)],
                               capture_output=True, text=True, env=ENV_C)
         return header, proc
 
@@ -102,7 +119,7 @@ def compile_fail_results():
     def run(snippet: Path):
         first = snippet.read_text().splitlines()[0]
         expected = first[len("// expect: "):] if first.startswith("// expect: ") else None
-        base = [cxx, *CXXFLAGS, "-fsyntax-only", str(snippet)]
+        base = [cxx, *CXXFLAGS, *message_include_flags(), "-fsyntax-only", str(snippet)]
         ok = subprocess.run(base, capture_output=True, text=True, env=ENV_C)
         bad = subprocess.run([*base, "-DRHI_EXPECT_FAIL"], capture_output=True, text=True, env=ENV_C)
         return snippet.name, (expected, ok, bad)
@@ -139,9 +156,6 @@ INDIRECT_ONLY = {
     "rcl/time.h",
     "rmw/types.h",
     "rmw/qos_profiles.h",
-    "rosidl_runtime_cpp/message_initialization.hpp",
-    "rosidl_runtime_cpp/traits.hpp",
-    "lifecycle_msgs/msg/transition.hpp",
     "hardware_interface/macros.hpp",
     "rclcpp/callback_group.hpp",
     "rclcpp/context.hpp",

@@ -1,14 +1,22 @@
 // Self-test of the rhi-gen C++ stand-ins and rhi_fake hooks (run by tests/test_standins.py).
-// Exercises every stand-in header and every hook, counts heap allocations on the hot paths,
-// and checks the SDK struct layouts. Exit code 0 = all checks passed.
+// Exercises every stand-in header and every hook with the real ROS 2 message headers, counts heap
+// allocations on the hot paths, and checks the SDK struct layouts. Exit code 0 = all checks passed.
+// With -DRHI_SELFTEST_VENDOR_MSGS it also checks the rosidl-generated vendor messages (they need
+// ../shared: tests/vendor_msgs.py).
 
-// ---- stand-in headers, as a generated driver includes them ----
+// ---- headers as a generated driver includes them (stand-ins and real messages) ----
+#ifdef RHI_SELFTEST_VENDOR_MSGS
 #include <aimdk_msgs/msg/domain_error_state.hpp>
 #include <aimdk_msgs/msg/joint_command.hpp>
 #include <aimdk_msgs/msg/joint_command_array.hpp>
 #include <aimdk_msgs/msg/joint_state.hpp>
 #include <aimdk_msgs/msg/joint_state_array.hpp>
 #include <aimdk_msgs/msg/message_header.hpp>
+#include <interface_protocol/msg/imu_info.hpp>
+#include <interface_protocol/msg/joint_command.hpp>
+#include <interface_protocol/msg/joint_state.hpp>
+#include <interface_protocol/msg/parallel_parser_type.hpp>
+#endif
 #include <builtin_interfaces/msg/duration.hpp>
 #include <builtin_interfaces/msg/time.hpp>
 #include <geometry_msgs/msg/quaternion.hpp>
@@ -21,10 +29,6 @@
 #include <hardware_interface/types/lifecycle_state_names.hpp>
 #include <hardware_interface/version.h>
 #include <hardware_interface/visibility_control.h>
-#include <interface_protocol/msg/imu_info.hpp>
-#include <interface_protocol/msg/joint_command.hpp>
-#include <interface_protocol/msg/joint_state.hpp>
-#include <interface_protocol/msg/parallel_parser_type.hpp>
 #include <lifecycle_msgs/msg/state.hpp>
 #include <pluginlib/class_list_macros.hpp>
 #include <rclcpp/clock.hpp>
@@ -343,42 +347,11 @@ static void test_messages()
   builtin_interfaces::msg::Duration d;
   CHECK(h.stamp.sec == 0 && t.nanosec == 0u && d.sec == 0);
 
-  aimdk_msgs::msg::JointCommandArray cmd;
-  cmd.joints.resize(2);
-  cmd.joints[0].name = "left_hip_pitch_joint";
-  cmd.joints[0].stiffness = 40.0;
-  cmd.header.sequence = 7;
-  CHECK(cmd.joints[1].damping == 0.0 && cmd.header.meas_stamp.sec == 0);
-  aimdk_msgs::msg::JointCommand jc;
-  CHECK(jc.position == 0.0 && jc.velocity == 0.0 && jc.effort == 0.0 && jc.name.empty());
-  aimdk_msgs::msg::JointStateArray st;
-  st.joints.resize(1);
-  st.joints[0].error_code = 5;
-  static_assert(std::is_same<decltype(st.joints[0].error_code), uint16_t>::value, "error_code");
-  CHECK(st.state.value == aimdk_msgs::msg::DomainErrorState::NONE);
-  static_assert(aimdk_msgs::msg::DomainErrorState::DAMPING == 1, "DAMPING");
-  static_assert(aimdk_msgs::msg::DomainErrorState::DISCONNECT == 4, "DISCONNECT");
-  aimdk_msgs::msg::JointState ajs;
-  aimdk_msgs::msg::MessageHeader mh;
-  CHECK(ajs.effort == 0.0 && mh.sequence == 0u);
-
-  interface_protocol::msg::JointCommand ic;
-  ic.position.assign(24, 0.0);
-  ic.parallel_parser_type = interface_protocol::msg::ParallelParserType::RL_PARSER;
-  static_assert(interface_protocol::msg::ParallelParserType::CLASSIC_PARSER == 0, "CLASSIC");
-  static_assert(interface_protocol::msg::ParallelParserType::RL_PARSER == 1, "RL");
-  CHECK(ic.feed_forward_torque.empty() && ic.torque.empty() && ic.stiffness.empty() && ic.damping.empty());
-  interface_protocol::msg::JointState ijs;
-  interface_protocol::msg::ImuInfo ii;
-  interface_protocol::msg::ParallelParserType ppt;
-  CHECK(ijs.torque.empty() && ii.quaternion.w == 1.0 && ii.rpy.x == 0.0 && ppt.structure_needs_at_least_one_member == 0);
-  CHECK(ii.linear_acceleration.z == 0.0 && ii.angular_velocity.y == 0.0);
-
   static_assert(lifecycle_msgs::msg::State::PRIMARY_STATE_INACTIVE == 2, "INACTIVE");
   CHECK(std::string(rosidl_generator_traits::name<sensor_msgs::msg::Imu>()) == "sensor_msgs/msg/Imu");
-  CHECK(std::string(rosidl_generator_traits::data_type<aimdk_msgs::msg::JointCommandArray>()) ==
-    "aimdk_msgs::msg::JointCommandArray");
-  static_assert(rosidl_generator_traits::is_message<interface_protocol::msg::ImuInfo>::value, "msg");
+  CHECK(std::string(rosidl_generator_traits::data_type<sensor_msgs::msg::JointState>()) ==
+    "sensor_msgs::msg::JointState");
+  static_assert(rosidl_generator_traits::is_message<std_msgs::msg::Header>::value, "msg");
   static_assert(!rosidl_generator_traits::is_message<int>::value, "not msg");
   static_assert(!std::is_convertible<rosidl_runtime_cpp::MessageInitialization, sensor_msgs::msg::Imu>::value,
     "explicit ctor");
@@ -525,7 +498,7 @@ class BoundHandler
 public:
   explicit BoundHandler(CallbackCounters & c)
   : c_(c) {}
-  void on_state(const interface_protocol::msg::JointState & msg) {c_.bound += static_cast<int>(msg.position.size());}
+  void on_state(const sensor_msgs::msg::JointState & msg) {c_.bound += static_cast<int>(msg.position.size());}
   void on_timer() {c_.timer++;}
 
 private:
@@ -569,7 +542,7 @@ static void test_rclcpp()
   CHECK(sensor == rclcpp::SensorDataQoS() && sensor != ten);
 
   // ---- publishers ----
-  auto cmd_pub = node->create_publisher<interface_protocol::msg::JointCommand>("/hardware/joint_command", q3);
+  auto cmd_pub = node->create_publisher<sensor_msgs::msg::JointState>("/hardware/joint_command", q3);
   auto rel_pub = node->create_publisher<std_msgs::msg::Header>("relative/topic", 10);
   auto priv_pub = node->create_publisher<std_msgs::msg::Header>("~/private", rclcpp::QoS(rclcpp::KeepLast(2)));
   CHECK(std::string(cmd_pub->get_topic_name()) == "/hardware/joint_command");
@@ -580,39 +553,26 @@ static void test_rclcpp()
   CHECK_THROWS(rclcpp::exceptions::InvalidTopicNameError, node->create_publisher<std_msgs::msg::Header>("/1a", 1));
   CHECK_THROWS(std::logic_error, node->create_publisher<sensor_msgs::msg::Imu>("relative/topic", 1));
 
-  interface_protocol::msg::JointCommand jc;
+  sensor_msgs::msg::JointState jc;
+  for (int i = 0; i < 24; ++i) {jc.name.push_back("joint_with_a_long_name_" + std::to_string(i));}
   jc.position.assign(24, 0.5);
   jc.velocity.assign(24, 0.0);
-  jc.feed_forward_torque.assign(24, 0.0);
-  jc.torque.assign(24, 0.0);
-  jc.stiffness.assign(24, 40.0);
-  jc.damping.assign(24, 1.0);
-  jc.parallel_parser_type = interface_protocol::msg::ParallelParserType::RL_PARSER;
+  jc.effort.assign(24, 40.0);
   CHECK(rhi_fake::ros::publish_count("/hardware/joint_command") == 0);
-  CHECK(!rhi_fake::ros::last_published<interface_protocol::msg::JointCommand>("/hardware/joint_command"));
+  CHECK(!rhi_fake::ros::last_published<sensor_msgs::msg::JointState>("/hardware/joint_command"));
   cmd_pub->publish(jc);   // first publish sizes the retained message
   jc.position[3] = 1.5;
   CHECK_NO_ALLOC("Publisher::publish (warm)", cmd_pub->publish(jc));
   CHECK(rhi_fake::ros::publish_count("/hardware/joint_command") == 2);
   CHECK(rhi_fake::ros::publish_count("hardware/joint_command") == 2);
-  auto last = rhi_fake::ros::last_published<interface_protocol::msg::JointCommand>("/hardware/joint_command");
-  CHECK(last && last->position[3] == 1.5 && last->stiffness[23] == 40.0 && last->parallel_parser_type == 1);
-  interface_protocol::msg::JointCommand out;
+  auto last = rhi_fake::ros::last_published<sensor_msgs::msg::JointState>("/hardware/joint_command");
+  CHECK(last && last->position[3] == 1.5 && last->effort[23] == 40.0 && last->name[23] == "joint_with_a_long_name_23");
+  sensor_msgs::msg::JointState out;
   CHECK(rhi_fake::ros::last_published("/hardware/joint_command", out) && out == jc);
   CHECK_THROWS(std::logic_error, rhi_fake::ros::last_published<sensor_msgs::msg::Imu>("/hardware/joint_command"));
-  cmd_pub->publish(std::make_unique<interface_protocol::msg::JointCommand>(jc));
+  cmd_pub->publish(std::make_unique<sensor_msgs::msg::JointState>(jc));
   CHECK(rhi_fake::ros::publish_count("/hardware/joint_command") == 3);
   CHECK(rhi_fake::ros::publish_count("/nowhere") == 0);
-
-  aimdk_msgs::msg::JointCommandArray arr;
-  arr.joints.resize(12);
-  for (size_t i = 0; i < arr.joints.size(); ++i) {arr.joints[i].name = "left_long_joint_name_" + std::to_string(i);}
-  auto arr_pub = node->create_publisher<aimdk_msgs::msg::JointCommandArray>("/aima/hal/joint/leg/command", rclcpp::SensorDataQoS());
-  arr_pub->publish(arr);
-  arr.joints[2].position = 0.3;
-  CHECK_NO_ALLOC("Publisher::publish JointCommandArray (warm)", arr_pub->publish(arr));
-  auto arr_last = rhi_fake::ros::last_published<aimdk_msgs::msg::JointCommandArray>("/aima/hal/joint/leg/command");
-  CHECK(arr_last && arr_last->joints[2].position == 0.3 && arr_last->joints[11].name == "left_long_joint_name_11");
 
   // ---- subscriptions: every supported callback form ----
   CallbackCounters c;
@@ -634,7 +594,7 @@ static void test_rclcpp()
   rclcpp::Subscription<Imu>::SharedPtr s6 = node->create_subscription<Imu>(
     "/aima/hal/imu/torso/state", 1, [&c](Imu::ConstSharedPtr m) {c.kept = m;});
   BoundHandler handler(c);
-  auto s7 = node->create_subscription<interface_protocol::msg::JointState>(
+  auto s7 = node->create_subscription<sensor_msgs::msg::JointState>(
     "/hardware/joint_state", q3, std::bind(&BoundHandler::on_state, &handler, std::placeholders::_1));
   CHECK(std::string(s1->get_topic_name()) == "/aima/hal/imu/torso/state");
   CHECK(s1->get_publisher_count() == 0 && cmd_pub->get_subscription_count() == 0);
@@ -658,7 +618,7 @@ static void test_rclcpp()
     rhi_fake::ros::deliver("/aima/hal/imu/torso/state", imu));
   CHECK_NO_ALLOC("deliver shared_ptr<const Imu>", rhi_fake::ros::deliver("/aima/hal/imu/torso/state", imu_ptr));
 
-  interface_protocol::msg::JointState js;
+  sensor_msgs::msg::JointState js;
   js.position.assign(24, 0.0);
   CHECK(rhi_fake::ros::deliver("/hardware/joint_state", js) == 1 && c.bound == 24);
   CHECK_NO_ALLOC("deliver to std::bind member callback", rhi_fake::ros::deliver("/hardware/joint_state", js));
@@ -670,7 +630,7 @@ static void test_rclcpp()
   CHECK(info && info->publishers[0].durability == rclcpp::DurabilityPolicy::Volatile);
   CHECK(info && info->publishers[0].depth == 3 && info->publishers[0].history == rclcpp::HistoryPolicy::KeepLast);
   CHECK(info && info->publishers[0].node == "/g1_hardware_interface");
-  CHECK(info && info->publishers[0].type_name == "interface_protocol/msg/JointCommand");
+  CHECK(info && info->publishers[0].type_name == "sensor_msgs/msg/JointState");
   CHECK(info && info->publish_count == 3);
   auto imu_topic = rhi_fake::ros::topic("/aima/hal/imu/torso/state");
   CHECK(imu_topic && imu_topic->subscriptions.size() == 3 && imu_topic->publishers.empty());
@@ -678,10 +638,10 @@ static void test_rclcpp()
   CHECK(std::string(rhi_fake::ros::to_string(imu_topic->subscriptions[0].reliability)) == "best_effort");
   CHECK(std::string(rhi_fake::ros::to_string(rclcpp::DurabilityPolicy::TransientLocal)) == "transient_local");
   CHECK(std::string(rhi_fake::ros::to_string(rclcpp::HistoryPolicy::KeepAll)) == "keep_all");
-  CHECK(rhi_fake::ros::topics().size() >= 6);
+  CHECK(rhi_fake::ros::topics().size() >= 5);
   CHECK(!rhi_fake::ros::topic("/nope"));
   CHECK(rel_pub->get_actual_qos().depth() == 10);
-  auto state_sub_pub = node->create_publisher<interface_protocol::msg::JointState>("/hardware/joint_state", 1);
+  auto state_sub_pub = node->create_publisher<sensor_msgs::msg::JointState>("/hardware/joint_state", 1);
   CHECK(s7->get_publisher_count() == 1 && state_sub_pub->get_subscription_count() == 1);
 
   // ---- timers ----
@@ -1044,6 +1004,112 @@ static void test_reset()
   rclcpp::shutdown();
 }
 
+#ifdef RHI_SELFTEST_VENDOR_MSGS
+// ============================================================== vendor messages (rosidl-generated)
+// Fields, defaults and constants as listed in shared/upstream/SDK_FACTS.md (§B AimDK v1.0.0, §C
+// interface_protocol), and the rhi_fake ROS hooks with these types.
+static void test_vendor_messages()
+{
+  aimdk_msgs::msg::JointCommandArray cmd;
+  cmd.joints.resize(2);
+  cmd.joints[0].name = "left_hip_pitch_joint";
+  cmd.joints[0].stiffness = 40.0;
+  cmd.header.sequence = 7;
+  CHECK(cmd.joints[1].damping == 0.0 && cmd.header.meas_stamp.sec == 0);
+  aimdk_msgs::msg::JointCommand jc;
+  CHECK(jc.position == 0.0 && jc.velocity == 0.0 && jc.effort == 0.0 && jc.name.empty());
+  aimdk_msgs::msg::JointStateArray st;
+  st.joints.resize(1);
+  st.joints[0].error_code = 5;
+  static_assert(std::is_same<decltype(st.joints[0].error_code), uint16_t>::value, "error_code");
+  CHECK(st.state.value == aimdk_msgs::msg::DomainErrorState::NONE);
+  static_assert(aimdk_msgs::msg::DomainErrorState::DAMPING == 1, "DAMPING");
+  static_assert(aimdk_msgs::msg::DomainErrorState::DISCONNECT == 4, "DISCONNECT");
+  aimdk_msgs::msg::JointState ajs;
+  aimdk_msgs::msg::MessageHeader mh;
+  CHECK(ajs.effort == 0.0 && mh.sequence == 0u);
+
+  interface_protocol::msg::JointCommand ic;
+  ic.position.assign(24, 0.0);
+  ic.parallel_parser_type = interface_protocol::msg::ParallelParserType::RL_PARSER;
+  static_assert(interface_protocol::msg::ParallelParserType::CLASSIC_PARSER == 0, "CLASSIC");
+  static_assert(interface_protocol::msg::ParallelParserType::RL_PARSER == 1, "RL");
+  CHECK(ic.feed_forward_torque.empty() && ic.torque.empty() && ic.stiffness.empty() && ic.damping.empty());
+  interface_protocol::msg::JointState ijs;
+  interface_protocol::msg::ImuInfo ii;
+  interface_protocol::msg::ParallelParserType ppt;
+  CHECK(ijs.torque.empty() && ii.quaternion.w == 1.0 && ii.rpy.x == 0.0 && ppt.structure_needs_at_least_one_member == 0);
+  CHECK(ii.linear_acceleration.z == 0.0 && ii.angular_velocity.y == 0.0);
+  static_assert(std::is_same<decltype(jc.stiffness), double>::value && std::is_same<decltype(ajs.position), double>::value,
+    "AimDK float64");
+  static_assert(std::is_same<decltype(ic.torque), std::vector<double>>::value, "interface_protocol float64[]");
+  static_assert(std::is_same<decltype(ic.parallel_parser_type), uint8_t>::value, "uint8");
+  static_assert(std::is_same<decltype(mh.sequence), uint32_t>::value, "uint32");
+
+  CHECK(std::string(rosidl_generator_traits::data_type<aimdk_msgs::msg::JointCommandArray>()) ==
+    "aimdk_msgs::msg::JointCommandArray");
+  CHECK(std::string(rosidl_generator_traits::name<interface_protocol::msg::JointCommand>()) ==
+    "interface_protocol/msg/JointCommand");
+  static_assert(rosidl_generator_traits::is_message<interface_protocol::msg::ImuInfo>::value, "msg");
+  static_assert(!std::is_convertible<rosidl_runtime_cpp::MessageInitialization, aimdk_msgs::msg::JointStateArray>::value,
+    "explicit ctor");
+
+  rclcpp::init(0, nullptr);
+  auto node = std::make_shared<rclcpp::Node>("vendor_node");
+  rclcpp::QoS q3(3);
+  q3.best_effort().durability_volatile();
+  auto cmd_pub = node->create_publisher<interface_protocol::msg::JointCommand>("/hardware/joint_command", q3);
+  interface_protocol::msg::JointCommand ip_cmd;
+  ip_cmd.position.assign(24, 0.5);
+  ip_cmd.velocity.assign(24, 0.0);
+  ip_cmd.feed_forward_torque.assign(24, 0.0);
+  ip_cmd.torque.assign(24, 0.0);
+  ip_cmd.stiffness.assign(24, 40.0);
+  ip_cmd.damping.assign(24, 1.0);
+  ip_cmd.parallel_parser_type = interface_protocol::msg::ParallelParserType::RL_PARSER;
+  cmd_pub->publish(ip_cmd);   // first publish sizes the retained message
+  ip_cmd.position[3] = 1.5;
+  CHECK_NO_ALLOC("Publisher::publish interface_protocol JointCommand (warm)", cmd_pub->publish(ip_cmd));
+  auto last = rhi_fake::ros::last_published<interface_protocol::msg::JointCommand>("/hardware/joint_command");
+  CHECK(last && last->position[3] == 1.5 && last->stiffness[23] == 40.0 && last->parallel_parser_type == 1);
+  auto info = rhi_fake::ros::topic("/hardware/joint_command");
+  CHECK(info && info->publishers.size() == 1 && info->publishers[0].type_name == "interface_protocol/msg/JointCommand");
+
+  aimdk_msgs::msg::JointCommandArray arr;
+  arr.joints.resize(12);
+  for (size_t i = 0; i < arr.joints.size(); ++i) {arr.joints[i].name = "left_long_joint_name_" + std::to_string(i);}
+  auto arr_pub = node->create_publisher<aimdk_msgs::msg::JointCommandArray>("/aima/hal/joint/leg/command", rclcpp::SensorDataQoS());
+  arr_pub->publish(arr);
+  arr.joints[2].position = 0.3;
+  CHECK_NO_ALLOC("Publisher::publish JointCommandArray (warm)", arr_pub->publish(arr));
+  auto arr_last = rhi_fake::ros::last_published<aimdk_msgs::msg::JointCommandArray>("/aima/hal/joint/leg/command");
+  CHECK(arr_last && arr_last->joints[2].position == 0.3 && arr_last->joints[11].name == "left_long_joint_name_11");
+
+  auto arr_info = rhi_fake::ros::topic("/aima/hal/joint/leg/command");
+  CHECK(arr_info && arr_info->publishers[0].type_name == "aimdk_msgs/msg/JointCommandArray");
+
+  int received = 0;
+  auto sub = node->create_subscription<aimdk_msgs::msg::JointStateArray>(
+    "/aima/hal/joint/leg/state", rclcpp::SensorDataQoS(),
+    [&received](aimdk_msgs::msg::JointStateArray::ConstSharedPtr m) {received += static_cast<int>(m->joints.size());});
+  aimdk_msgs::msg::JointStateArray state;
+  state.joints.resize(12);
+  auto state_ptr = std::make_shared<const aimdk_msgs::msg::JointStateArray>(state);
+  CHECK(rhi_fake::ros::deliver("/aima/hal/joint/leg/state", state_ptr) == 1 && received == 12);
+  CHECK_NO_ALLOC("deliver shared_ptr<const JointStateArray>",
+    rhi_fake::ros::deliver("/aima/hal/joint/leg/state", state_ptr));
+  auto sub_info = rhi_fake::ros::topic("/aima/hal/joint/leg/state");
+  CHECK(sub_info && sub_info->subscriptions[0].type_name == "aimdk_msgs/msg/JointStateArray");
+  CHECK(rhi_fake::ros::deliver("/aima/hal/joint/leg/state", interface_protocol::msg::JointState()) == 0);
+
+  sub.reset();
+  cmd_pub.reset();
+  arr_pub.reset();
+  node.reset();
+  rhi_fake::reset_all();
+}
+#endif
+
 int main()
 {
   test_hardware_interface();
@@ -1053,6 +1119,10 @@ int main()
   test_concurrency();
   test_unitree();
   test_reset();
+#ifdef RHI_SELFTEST_VENDOR_MSGS
+  test_vendor_messages();
+  std::printf("selftest: vendor messages checked\n");
+#endif
   if (g_failures != 0) {
     std::fprintf(stderr, "selftest: %d of %d checks FAILED\n", g_failures, g_checks);
     return 1;

@@ -49,3 +49,35 @@ def test_uncrustify_finds_nothing(package):
                 "(ament_uncrustify --reformat fixes them):")
         diffs = [f"--- {name}\n{diff}" for name, diff in list(result.diffs.items())[:3]]
         pytest.fail("\n".join([head, *diffs])[:20000], pytrace=False)
+
+
+LONG = "a_very_long_joint_name_as_xacro_prefixes_make_them_left_arm_shoulder_pitch_joint_of_the_robot"
+
+
+@pytest.fixture(scope="module")
+def long_names_package(tmp_path_factory) -> Path:
+    """A robot whose every name is as long as rhi-gen allows (26-character vendor and robot, joint
+    names up to 128 characters): folding must keep each generated line within cpplint's limit."""
+    project = tmp_path_factory.mktemp("lint_long") / "project"
+    (project / "robots").mkdir(parents=True)
+    names = [f"{LONG}_{i}"[:128] for i in range(3)] + ["j" * 128]
+    links = "".join(f'  <link name="l{i}"/>\n' for i in range(len(names) + 1))
+    joints = "".join(
+        f'  <joint name="{n}" type="revolute"><parent link="l{i}"/><child link="l{i + 1}"/>'
+        f'<limit lower="-1.2345678901234" upper="1.2345678901234" effort="123.456789" velocity="12.3456789"/>'
+        f'</joint>\n' for i, n in enumerate(names))
+    urdf = project / "long.urdf"
+    urdf.write_text(f'<robot name="long">\n{links}{joints}</robot>\n')
+    vendor, robot = "v" * 25 + "x", "r" * 25 + "y"
+    assert main(["new", "--project", str(project), "--vendor", vendor, "--robot", robot, "--urdf", str(urdf),
+                 "--transport", "generic_topics"]) == 0
+    return project / "generated" / PACKAGE
+
+
+def test_long_names_lint_clean(long_names_package):
+    findings = run_cpplint(long_names_package)
+    if findings:
+        pytest.fail(_report(findings), pytrace=False)
+    result = run_uncrustify(long_names_package)
+    if result.findings:
+        pytest.fail("\n".join(f"--- {name}\n{diff}" for name, diff in result.diffs.items())[:20000], pytrace=False)

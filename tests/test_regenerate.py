@@ -273,8 +273,8 @@ def test_region_the_template_dropped_is_refused_not_lost(project, capsys, monkey
     fill_region(project / G1_CPP, "callbacks", "void precious() {}\n")
     original = pipeline_generate.render_package
 
-    def without_callbacks(models):
-        out = original(models)
+    def without_callbacks(models, **kwargs):
+        out = original(models, **kwargs)
         text = out["src/unitree/g1.cpp"]
         out["src/unitree/g1.cpp"] = re.sub(rf"// {REGION_BEGIN} callbacks\n// {REGION_END} callbacks\n", "", text)
         return out
@@ -422,7 +422,8 @@ def test_template_error_halfway_writes_nothing(project, capsys, monkeypatch):
         return env
 
     original = pipeline_generate.render_package
-    monkeypatch.setattr(pipeline_generate, "render_package", lambda models: original(models, env_factory=broken_env))
+    monkeypatch.setattr(pipeline_generate, "render_package",
+                        lambda models, **kwargs: original(models, env_factory=broken_env, **kwargs))
     code, out, err = cli(capsys, project, "generate")
     assert code == 2
     assert "template robot/test.cpp.j2 failed" in err and "no_such_field" in err

@@ -42,7 +42,7 @@ class Validator:
     def optional(self, mapping: dict[str, Any], path: str, key: str, read: Callable[[Any, str], T],
                  default: T) -> T:
         """``read(mapping[key], "path.key")`` when the key is present, else ``default``."""
-        return read(mapping[key], f"{path}.{key}") if key in mapping else default
+        return read(mapping[key], f"{path}.{key}" if path else key) if key in mapping else default
 
     def scalar(self, value: Any, path: str) -> Any:
         if not isinstance(value, Scalar):

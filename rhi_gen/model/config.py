@@ -12,6 +12,19 @@ MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the
 
 
 @dataclass(frozen=True)
+class PackageInfo:
+    """robots/package.yaml: who owns the generated package (copyright and license lines of every
+    generated file, package.xml's license and maintainer). The defaults name no one: they say the
+    package belongs to its authors under the license package.xml declares until the project says
+    otherwise."""
+    copyright: str = "the robot_hardware_interface authors"  # text after "Copyright"
+    license: str = "Apache-2.0"                             # SPDX identifier
+    maintainer_name: str = "rhi-gen user"
+    maintainer_email: str = "rhi-gen-user@example.com"
+    source: str = ""  # project-relative path of the file, "" when the project has none
+
+
+@dataclass(frozen=True)
 class Parameters:
     """hardware_parameters written into the ros2_control description (spec defaults)."""
     network_interface: str = "lo"

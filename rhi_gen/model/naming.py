@@ -12,8 +12,13 @@ import re
 
 from .c_library_names import C_LIBRARY_NAMES
 
-IDENTIFIER_RE = re.compile(r"^[a-z][a-z0-9_]{0,47}$")
-CLASS_PREFIX_RE = re.compile(r"^[A-Z][A-Za-z0-9]{0,47}$")
+# At most 26 characters: vendor, robot and class prefix become C++ names that generated lines
+# combine (Vendor::RobotHardwareInterface::RobotHardwareInterface(), the header guard
+# ROBOT_HARDWARE_INTERFACE__VENDOR__ROBOT_HPP_), and ROS 2 code stays within
+# 100 columns.
+MAX_NAME = 26
+IDENTIFIER_RE = re.compile(rf"^[a-z][a-z0-9_]{{0,{MAX_NAME - 1}}}$")
+CLASS_PREFIX_RE = re.compile(rf"^[A-Z][A-Za-z0-9]{{0,{MAX_NAME - 1}}}$")
 
 # C++20 keywords and alternative tokens, plus names that would clash inside the generated code.
 CPP_KEYWORDS = frozenset("""
@@ -44,7 +49,7 @@ def identifier_problem(name: object, what: str) -> str | None:
         return f"{what} must be a non-empty string"
     if not IDENTIFIER_RE.match(name):
         return (f"{what} {name!r} must be lowercase letters, digits and underscores, starting with a "
-                f"letter, at most 48 characters (it becomes a C++ namespace and a folder name)")
+                f"letter, at most {MAX_NAME} characters (it becomes a C++ namespace, class and folder name)")
     if "__" in name or name.endswith("_"):
         return f"{what} {name!r} must not contain '__' or end with '_' (reserved in C++)"
     if name in CPP_KEYWORDS:

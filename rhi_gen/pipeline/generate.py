@@ -14,7 +14,7 @@ from pathlib import PurePosixPath
 import rhi_gen
 
 from ..errors import ManifestError, ProjectError, WriteBlockedError
-from ..model import RobotModel
+from ..model import PackageInfo, RobotModel
 from ..project import PACKAGE_NAME, Project
 from ..render.banner import GENERATOR_MARK
 from ..render.package import render_package, robot_paths
@@ -26,14 +26,14 @@ from ..write.manifest import parse as parse_manifest
 from ..write.manifest import read_bytes as read_manifest_bytes
 from ..write.merge import Blocked, blocked_error, merge_existing, removal_problem, rendered_hash
 from ..write.semantic_diff import RobotDiff, diff_manifest
-from .load import LoadedRobot
+from .load import LoadedRobot, load_package_info
 
 OWNED_MARK = GENERATOR_MARK.encode("utf-8")
 
 
-def render_plan(models: Sequence[RobotModel]) -> dict[str, bytes]:
+def render_plan(models: Sequence[RobotModel], package: PackageInfo) -> dict[str, bytes]:
     """Paths relative to generated/ -> bytes."""
-    rendered = render_package(models)
+    rendered = render_package(models, package=package)
     return {f"{PACKAGE_NAME}/{rel}": text.encode("utf-8") for rel, text in rendered.items()}
 
 
@@ -119,7 +119,7 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
     """
     version = rhi_gen.__version__  # read now, not at import: tests stand in for an upgrade
     gen = project.generated_dir
-    rendered = render_plan([r.model for r in robots])
+    rendered = render_plan([r.model for r in robots], load_package_info(project))
     scope = list(robots) if only is None else [r for r in robots if r in only]
     if only is not None:
         skip: set[str] = set()

@@ -6,9 +6,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import ConfigError, ProjectError
+from ..inputs import package_info
 from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import load_config
-from ..model import RobotModel, UrdfRobot, VendorConfig
+from ..model import PackageInfo, RobotModel, UrdfRobot, VendorConfig
 from ..model.build import build_model
 from ..project import Project, check_layout, robot_yamls, select_yamls
 
@@ -37,6 +38,12 @@ def load_robot(project: Project, yaml_path: Path) -> LoadedRobot:
                      display_path=project.relative(urdf_path))
     model = build_model(config, urdf, yaml_path=yaml_path, project_root=project.root)
     return LoadedRobot(yaml_path, config, urdf, model)
+
+
+def load_package_info(project: Project) -> PackageInfo:
+    """robots/package.yaml (copyright, license, maintainer), or the neutral defaults."""
+    return package_info.load_package_info(
+        project.robots_dir, project.relative(project.robots_dir / package_info.FILE_NAME))
 
 
 def load_robots(project: Project, yaml_paths: Sequence[Path] | None = None) -> list[LoadedRobot]:

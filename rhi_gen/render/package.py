@@ -13,9 +13,12 @@ import jinja2
 
 from .. import transports
 from ..errors import GenerationError
-from ..model import RobotModel
+from ..model import PackageInfo, RobotModel
 from .banner import SHARED_INPUTS, banner_for, package_inputs, robot_inputs
+from .cpp_layout import fold_cpp
 from .environment import make_environment
+
+DEFAULT_PACKAGE = PackageInfo()
 
 # (template, output path) — output paths are relative to generated/robot_hardware_interface/
 COMMON_FILES = tuple(
@@ -61,8 +64,9 @@ def _render_one(env: jinja2.Environment, template: str, context: dict[str, Any],
 
 
 def render_package(models: Sequence[RobotModel],
-                   env_factory: Callable[[], jinja2.Environment] = make_environment) -> dict[str, str]:
-    """Render the whole robot_hardware_interface package for ``models``.
+                   env_factory: Callable[[], jinja2.Environment] = make_environment,
+                   package: PackageInfo = DEFAULT_PACKAGE) -> dict[str, str]:
+    """Render the whole robot_hardware_interface package for ``models``, owned by ``package``.
 
     Returns paths relative to the package folder (POSIX), in a deterministic order.
     """
@@ -70,19 +74,20 @@ def render_package(models: Sequence[RobotModel],
     robots = sorted(models, key=lambda m: (m.vendor, m.robot))
     plan: dict[str, str] = {}
 
-    shared_banner = banner_for(SHARED_INPUTS)
+    shared_banner = banner_for(SHARED_INPUTS, package)
     for template, out in (*COMMON_FILES, *(TEST_FILES if robots else ())):
         plan[out] = _render_one(env, template, {"banner": shared_banner}, out)
     for name in sorted({r.transport for r in robots}):
         for template, out in transports.TRANSPORTS[name].shared_files:
             plan[out] = _render_one(env, template, {"banner": shared_banner}, out)
 
-    package_banner = banner_for(package_inputs(robots))
+    package_banner = banner_for(package_inputs(robots), package)
     for template, out in PACKAGE_FILES:
-        plan[out] = _render_one(env, template, {"banner": package_banner, "robots": robots}, out)
+        plan[out] = _render_one(env, template, {"banner": package_banner, "robots": robots, "package": package},
+                                out)
 
     for robot in robots:
-        banner = banner_for(robot_inputs(robot))
+        banner = banner_for(robot_inputs(robot), package)
         for template, pattern in ROBOT_FILES:
             out = pattern.format(vendor=robot.vendor, robot=robot.robot)
             if out in plan:  # e.g. vendor "common" + robot "types": never overwrite silently
@@ -92,4 +97,6 @@ def render_package(models: Sequence[RobotModel],
 
     for path in plan:
         assert not PurePosixPath(path).is_absolute() and ".." not in PurePosixPath(path).parts
+        if path.endswith((".hpp", ".cpp")):
+            plan[path] = fold_cpp(plan[path])
     return dict(sorted(plan.items()))

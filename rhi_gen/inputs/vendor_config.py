@@ -6,6 +6,7 @@ exist, every actuated joint mapped) live in model/build.py.
 """
 from __future__ import annotations
 
+import math
 import os
 import re
 from pathlib import Path
@@ -14,17 +15,20 @@ from typing import Any
 from .. import transports
 from ..errors import ConfigError
 from ..model import FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
-from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, vendor_problem
+from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
 from .validator import Validator
 from .yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
-            "unmapped_joints")
+            "unmapped_joints", "default_gains", "command_modes")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
                   "state_decimation", "state_timeout_ms")
 IMU_KEYS = ("enabled", "name", "frame_id")
+GAIN_KEYS = ("stiffness", "damping")
+COMMAND_MODES = ("position", "velocity")
+MAX_GAIN = 1e6  # N*m/rad: far above any real motor; a typo of a few zeros still fails
 
 FRAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_/.\-]*$")
 NETIF_RE = re.compile(r"^[A-Za-z0-9_.:\-]{1,64}$")
@@ -110,6 +114,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     options = transport.read_options(
         v, v.mapping(raw_options, "transport_options", transport.option_keys) if raw_options is not None else {},
         motor_count)
+    options = transport.resolve_options(v, options, vendor=vendor, robot=robot, motor_count=motor_count)
 
     joint_map = _joint_map(v, data["joint_map"], motor_count)
     unmapped: tuple[str, ...] = ()
@@ -130,13 +135,59 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
             names.append(name)
         unmapped = tuple(names)
 
+    mapped = dict(joint_map)
+    default_gains = _default_gains(v, data.get("default_gains"), mapped) if "default_gains" in data else ()
+    command_modes = _command_modes(v, data.get("command_modes"), mapped) if "command_modes" in data else ()
+
     return VendorConfig(
         source=shown, vendor=vendor, robot=robot, urdf=str(urdf_path), urdf_relative=urdf_rel,
         transport=transport.name, motor_count=motor_count, float_type=float_type, joint_map=joint_map,
         unmapped_joints=unmapped, imu=imu, transport_options=options, parameters=params,
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
+        default_gains=default_gains, command_modes=command_modes,
         content_sha256=content_sha256(data), key_lines=dict(lines),
     )
+
+
+def _joint_entries(v: Validator, raw: Any, path: str, mapped: dict[str, int], example: str) -> dict[str, Any]:
+    """A mapping keyed by joint names of joint_map (an empty or null value is an empty mapping)."""
+    if isinstance(raw, Scalar) and raw.value is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise v.error(path, "must be a mapping of joint name: value", fix=f"e.g. {example}")
+    for name in raw:
+        if name not in mapped:
+            hint = suggest(name, list(mapped))
+            raise v.error(f"{path}.{name}", f"{name!r} is not a joint of joint_map",
+                          fix=f"did you mean {hint!r}?" if hint else "list joints of joint_map only")
+    return raw
+
+
+def _default_gains(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[str, float, float], ...]:
+    """default_gains: {joint: {stiffness: kp, damping: kd}}, each finite, >= 0."""
+    path = "default_gains"
+    entries = _joint_entries(v, raw, path, mapped, "{knee_joint: {stiffness: 60.0, damping: 1.5}}")
+    out = []
+    for name, item in entries.items():
+        m = v.mapping(item, f"{path}.{name}", GAIN_KEYS)
+        gains = []
+        for key in GAIN_KEYS:
+            q = f"{path}.{name}.{key}"
+            value = v.scalar(m[key], q) if key in m else 0.0
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                    or not 0.0 <= value <= MAX_GAIN:
+                raise v.error(q, f"must be a number from 0 to {MAX_GAIN:g}, got {getattr(m.get(key), 'raw', value)!r}",
+                              fix="write the gain in N*m/rad (stiffness) or N*m*s/rad (damping), e.g. 60.0")
+            gains.append(float(value))
+        out.append((name, gains[0], gains[1]))
+    return tuple(out)
+
+
+def _command_modes(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[str, str], ...]:
+    """command_modes: {joint: position | velocity}."""
+    path = "command_modes"
+    entries = _joint_entries(v, raw, path, mapped, "{wheel_joint: velocity}")
+    return tuple((name, v.choice(item, f"{path}.{name}", COMMAND_MODES)) for name, item in entries.items())
 
 
 def _joint_map(v: Validator, raw: Any, motor_count: int) -> tuple[tuple[str, int], ...]:

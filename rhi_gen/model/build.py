@@ -10,6 +10,7 @@ import os
 from dataclasses import replace
 from pathlib import Path
 
+from .. import transports
 from ..errors import ConfigError, UrdfError
 from .config import VendorConfig
 from .naming import joint_name_problem, pascal_case, suggest, upper_snake
@@ -83,6 +84,14 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                   "add them to joint_map, or list them under unmapped_joints if they are intentionally not driven")
 
     groups = config.transport_options.groups
+    transport = transports.get(config.transport)
+    modes = dict(config.command_modes)
+    gains = {name: (kp, kd) for name, kp, kd in config.default_gains}
+    for name, kp, _ in config.default_gains:
+        if kp > 0 and modes.get(name, "velocity" if by_name[name].type == "continuous" else "position") == "velocity":
+            raise err(f"default_gains.{name}.stiffness", f"joint {name!r} is velocity-commanded, so it takes no "
+                      "stiffness", "remove stiffness (a velocity-commanded joint uses damping only), or set "
+                      f"command_modes.{name}: position")
     joints = []
     for joint in actuated:
         if joint.name not in mapped:
@@ -92,8 +101,13 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         for g in groups:
             if g.offset <= index < g.offset + g.size:
                 group, position = g.name, index - g.offset
+        mode = modes.get(joint.name, "velocity" if joint.type == "continuous" else "position")
+        stiffness, damping = gains.get(joint.name, (0.0, 0.0))
         joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,
-                                 group=group, group_position=position))
+                                 group=group, group_position=position, command_mode=mode,
+                                 command_interfaces=transport.command_interfaces(mode),
+                                 default_stiffness=stiffness if mode == "position" else 0.0,
+                                 default_damping=damping))
 
     imu = config.imu
     if imu.enabled:

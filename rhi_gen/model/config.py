@@ -65,6 +65,9 @@ class TransportOptions:
     One flat type (rather than one per transport) because the templates read these fields by name.
     """
     # unitree_dds
+    family: str = "hg"                 # hg (G1, H1-2) | go (H1, Go2, Go2-W, B2, B2-W) low-level messages
+    motor_modes: tuple[int, ...] = ()  # go: MotorCmd_.mode of every slot (0x01 servo, 0x0A strong motor)
+    verify_state_crc: bool = True      # drop LowState_ frames whose crc does not match
     lowcmd_topic: str = "rt/lowcmd"
     lowstate_topic: str = "rt/lowstate"
     sdk_slots: int = 35
@@ -98,6 +101,10 @@ class VendorConfig:
     xacro_args: tuple[tuple[str, str], ...] = ()
     package_paths: tuple[tuple[str, str], ...] = ()  # ROS package name -> directory (for $(find))
     class_prefix: str | None = None
+    # joint -> (stiffness, damping) applied while no controller claims them (YAML default_gains)
+    default_gains: tuple[tuple[str, float, float], ...] = ()
+    # joint -> "position" | "velocity" (YAML command_modes); continuous joints default to velocity
+    command_modes: tuple[tuple[str, str], ...] = ()
     # sha256 of the parsed YAML content (inputs/yaml_source.content_sha256): comments and layout do not count
     content_sha256: str = ""
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

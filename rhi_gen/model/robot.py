@@ -19,6 +19,10 @@ class MotorJoint:
     limits: JointLimits | None
     group: str | None = None           # AgiBot group name
     group_position: int | None = None  # position inside the group
+    command_mode: str = "position"     # position | velocity (wheels: continuous joints by default)
+    command_interfaces: tuple[str, ...] = ("position", "velocity", "stiffness", "damping", "effort")
+    default_stiffness: float = 0.0     # applied while no controller claims stiffness
+    default_damping: float = 0.0       # applied while no controller claims damping
 
 
 @dataclass(frozen=True)

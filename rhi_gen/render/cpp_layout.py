@@ -89,7 +89,9 @@ def _split(line: str, width: int, continuation: int) -> tuple[str | None, tuple[
         if in_literal(pos):
             continue
         ch = line[pos]
-        if ch in "(<{" or (ch == "," and line[pos + 1:pos + 2] == " ") or \
+        # "<" only as a template's opening bracket (Name<...), never inside "<=" or "<<"
+        template_open = ch == "<" and line[pos - 1:pos].isidentifier() and line[pos + 1:pos + 2] not in ("=", "<")
+        if ch in "({" or template_open or (ch == "," and line[pos + 1:pos + 2] == " ") or \
                 (ch == "=" and line[pos - 1:pos] == " " and line[pos + 1:pos + 2] == " "):
             best = pos
             break

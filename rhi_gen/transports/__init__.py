@@ -23,6 +23,7 @@ from .base import (
     KnownRobot,
     Transport,
     suggest_order,
+    suggest_slots,
 )
 
 _ALL: tuple[Transport, ...] = (unitree_dds.TRANSPORT, agibot_topics.TRANSPORT, engineai_topics.TRANSPORT,
@@ -32,7 +33,8 @@ NAMES: tuple[str, ...] = tuple(TRANSPORTS)
 DEFAULT = generic_topics.NAME  # for a vendor rhi-gen has no transport of its own for
 
 __all__ = ["COMMON_DEPENDENCIES", "DEFAULT", "NAMES", "TRANSPORTS", "Dependency", "DependencyTables", "KnownRobot",
-           "Transport", "dependency_tables", "for_vendor", "get", "known_robot", "suggest_order"]
+           "Transport", "dependency_tables", "for_vendor", "get", "known_robot", "suggest_order",
+           "suggest_slots"]
 
 
 def get(name: str, *, key: str = "transport") -> Transport:
@@ -57,7 +59,7 @@ def known_robot(vendor: str, robot: str) -> KnownRobot | None:
     """The vendor robot whose SDK motor order rhi-gen knows, if any."""
     for t in _ALL:
         for known in t.known_robots:
-            if (known.vendor, known.robot) == (vendor, robot):
+            if known.vendor == vendor and known.named(robot):
                 return known
     return None
 

@@ -39,17 +39,38 @@ class KnownRobot:
     vendor: str
     robot: str
     transport: str
-    joint_order: tuple[str, ...]                       # SDK motor index order
+    joint_order: tuple[str, ...]                       # SDK motor index order ("" for a slot no joint drives)
     note: str                                          # where the order comes from, for the YAML comment
     groups: tuple[tuple[str, tuple[str, ...]], ...] = ()  # per joint group, for grouped transports
+    aliases: tuple[str, ...] = ()                      # other robot names it goes by ("go2_w" for "go2w")
+    family: str = ""                                   # unitree_dds: "hg" | "go" message family
+    motor_modes: tuple[int, ...] = ()                  # unitree go: MotorCmd_.mode per slot
+    # joint -> (stiffness, damping) for a controller that claims only position / velocity
+    default_gains: tuple[tuple[str, float, float], ...] = ()
+    gains_note: str = ""                               # where the gains come from, or why there are none
+
+    def named(self, robot: str) -> bool:
+        return robot == self.robot or robot in self.aliases
 
 
 def suggest_order(actuated: Sequence[str], known: KnownRobot | None) -> list[str]:
     """Actuated joints in SDK order: the known robot's order where names match, the rest in URDF order."""
     if known is None or not known.joint_order:
         return list(actuated)
-    first = [n for n in known.joint_order if n in actuated]
+    first = [n for n in known.joint_order if n and n in actuated]
     return first + [n for n in actuated if n not in first]
+
+
+def suggest_slots(actuated: Sequence[str], known: KnownRobot | None) -> list[tuple[str, int]]:
+    """(joint, SDK slot) of every actuated joint: a known robot's real slots (which may skip slots no
+    joint drives), then the remaining joints on the next free slots."""
+    slots: list[tuple[str, int]] = []
+    if known is not None:
+        slots = [(n, i) for i, n in enumerate(known.joint_order) if n and n in actuated]
+    taken = {i for _, i in slots}
+    named = {n for n, _ in slots}
+    free = (i for i in range(len(actuated) + len(taken) + 1) if i not in taken)
+    return slots + [(n, next(free)) for n in actuated if n not in named]
 
 
 class Transport(ABC):
@@ -64,11 +85,25 @@ class Transport(ABC):
     vendors: ClassVar[tuple[str, ...]] = ()    # vendors whose robots `rhi-gen new` gives this transport
     known_robots: ClassVar[tuple[KnownRobot, ...]] = ()
     motor_slots: ClassVar[int | None] = None   # fixed motor slot count of the SDK message, if any
+    # Whether the robot receives stiffness and damping: if not, joints export no gain interfaces.
+    carries_gains: ClassVar[bool] = True
     slots_holder: ClassVar[str] = ""           # what has those slots, for messages ("a unitree hg LowCmd_")
 
     @abstractmethod
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
         """Validate ``transport_options`` (keys already checked against ``option_keys``), fill defaults."""
+
+    def resolve_options(self, v: Validator, options: TransportOptions, *, vendor: str, robot: str,
+                        motor_count: int) -> TransportOptions:
+        """Options that depend on which robot this is (a known robot's defaults); unchanged by default."""
+        return options
+
+    def command_interfaces(self, mode: str) -> tuple[str, ...]:
+        """A joint's command interfaces: a position-commanded joint takes the full PD command, a
+        velocity-commanded one (a wheel) no position or stiffness; gains only where they travel."""
+        full = ("position", "velocity", "stiffness", "damping", "effort") if mode == "position" \
+            else ("velocity", "damping", "effort")
+        return tuple(i for i in full if self.carries_gains or i not in ("stiffness", "damping"))
 
     @abstractmethod
     def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:

@@ -22,6 +22,9 @@ IMU_TOPIC = "/hardware/imu"
 class GenericTopics(Transport):
     name = NAME
     summary = "sensor_msgs/JointState and sensor_msgs/Imu ROS 2 topics, for any robot"
+    # sensor_msgs/JointState has no stiffness or damping: the receiver applies its own gains, so
+    # the driver exports no gain interfaces (and the controllers YAML starts no gain controllers).
+    carries_gains = False
     option_keys = ("command_topic", "state_topic", "imu_topic", "qos")
     default_float_type = "double"
     dependencies = (Dependency("sensor_msgs", ROSDISTRO),)

@@ -22,35 +22,36 @@ namespace engineai
 namespace
 {
 
+constexpr auto kPosition = robot_hardware_interface::CommandMode::kPosition;
 using Transport = robot_hardware_interface::EngineaiTopicsTransport<PM01_NUM_MOTOR, double>;
 
-// URDF joint -> SDK motor slot, with the URDF limits write() clamps to:
-// {name, slot, position min, position max, |velocity| max, |effort| max}
+// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to and the
+// default gains: {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd}
 constexpr std::array<robot_hardware_interface::JointSpec, 24> kJoints = {{
-  {"J00_HIP_PITCH_L", 0, -3.141, 2.443, 26.3, 164.0},
-  {"J01_HIP_ROLL_L", 1, -0.436, 2.094, 26.3, 164.0},
-  {"J02_HIP_YAW_L", 2, -1.57, 4.014, 35.2, 61.0},
-  {"J03_KNEE_PITCH_L", 3, -0.3491, 2.3911, 26.3, 164.0},
-  {"J04_ANKLE_PITCH_L", 4, -0.6807, 0.7243, 35.2, 61.0},
-  {"J05_ANKLE_ROLL_L", 5, -0.2618, 0.2618, 35.2, 61.0},
-  {"J06_HIP_PITCH_R", 6, -3.141, 2.443, 26.3, 164.0},
-  {"J07_HIP_ROLL_R", 7, -2.094, 0.436, 26.3, 164.0},
-  {"J08_HIP_YAW_R", 8, -4.014, 1.57, 35.2, 61.0},
-  {"J09_KNEE_PITCH_R", 9, -0.3491, 2.3911, 26.3, 164.0},
-  {"J10_ANKLE_PITCH_R", 10, -0.6807, 0.7243, 35.2, 61.0},
-  {"J11_ANKLE_ROLL_R", 11, -0.2618, 0.2618, 35.2, 61.0},
-  {"J12_WAIST_YAW", 12, -4.014, 1.57, 35.2, 61.0},
-  {"J13_SHOULDER_PITCH_L", 13, -2.9671, 2.7925, 35.2, 61.0},
-  {"J14_SHOULDER_ROLL_L", 14, -0.6108, 2.3562, 35.2, 61.0},
-  {"J15_SHOULDER_YAW_L", 15, -2.618, 2.618, 35.2, 61.0},
-  {"J16_ELBOW_PITCH_L", 16, -2.1948, 0.7374, 35.2, 61.0},
-  {"J17_ELBOW_YAW_L", 17, -2.618, 2.618, 35.2, 61.0},
-  {"J18_SHOULDER_PITCH_R", 18, -2.9671, 2.7925, 35.2, 61.0},
-  {"J19_SHOULDER_ROLL_R", 19, -2.3562, 0.6108, 35.2, 61.0},
-  {"J20_SHOULDER_YAW_R", 20, -2.618, 2.618, 35.2, 61.0},
-  {"J21_ELBOW_PITCH_R", 21, -2.1948, 0.7374, 35.2, 61.0},
-  {"J22_ELBOW_YAW_R", 22, -2.618, 2.618, 35.2, 61.0},
-  {"J23_HEAD_YAW", 23, -0.6109, 0.6109, 35.2, 61.0},
+  {"J00_HIP_PITCH_L", 0, kPosition, -3.141, 2.443, 26.3, 164.0, 0.0, 0.0},
+  {"J01_HIP_ROLL_L", 1, kPosition, -0.436, 2.094, 26.3, 164.0, 0.0, 0.0},
+  {"J02_HIP_YAW_L", 2, kPosition, -1.57, 4.014, 35.2, 61.0, 0.0, 0.0},
+  {"J03_KNEE_PITCH_L", 3, kPosition, -0.3491, 2.3911, 26.3, 164.0, 0.0, 0.0},
+  {"J04_ANKLE_PITCH_L", 4, kPosition, -0.6807, 0.7243, 35.2, 61.0, 0.0, 0.0},
+  {"J05_ANKLE_ROLL_L", 5, kPosition, -0.2618, 0.2618, 35.2, 61.0, 0.0, 0.0},
+  {"J06_HIP_PITCH_R", 6, kPosition, -3.141, 2.443, 26.3, 164.0, 0.0, 0.0},
+  {"J07_HIP_ROLL_R", 7, kPosition, -2.094, 0.436, 26.3, 164.0, 0.0, 0.0},
+  {"J08_HIP_YAW_R", 8, kPosition, -4.014, 1.57, 35.2, 61.0, 0.0, 0.0},
+  {"J09_KNEE_PITCH_R", 9, kPosition, -0.3491, 2.3911, 26.3, 164.0, 0.0, 0.0},
+  {"J10_ANKLE_PITCH_R", 10, kPosition, -0.6807, 0.7243, 35.2, 61.0, 0.0, 0.0},
+  {"J11_ANKLE_ROLL_R", 11, kPosition, -0.2618, 0.2618, 35.2, 61.0, 0.0, 0.0},
+  {"J12_WAIST_YAW", 12, kPosition, -4.014, 1.57, 35.2, 61.0, 0.0, 0.0},
+  {"J13_SHOULDER_PITCH_L", 13, kPosition, -2.9671, 2.7925, 35.2, 61.0, 0.0, 0.0},
+  {"J14_SHOULDER_ROLL_L", 14, kPosition, -0.6108, 2.3562, 35.2, 61.0, 0.0, 0.0},
+  {"J15_SHOULDER_YAW_L", 15, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
+  {"J16_ELBOW_PITCH_L", 16, kPosition, -2.1948, 0.7374, 35.2, 61.0, 0.0, 0.0},
+  {"J17_ELBOW_YAW_L", 17, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
+  {"J18_SHOULDER_PITCH_R", 18, kPosition, -2.9671, 2.7925, 35.2, 61.0, 0.0, 0.0},
+  {"J19_SHOULDER_ROLL_R", 19, kPosition, -2.3562, 0.6108, 35.2, 61.0, 0.0, 0.0},
+  {"J20_SHOULDER_YAW_R", 20, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
+  {"J21_ELBOW_PITCH_R", 21, kPosition, -2.1948, 0.7374, 35.2, 61.0, 0.0, 0.0},
+  {"J22_ELBOW_YAW_R", 22, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
+  {"J23_HEAD_YAW", 23, kPosition, -0.6109, 0.6109, 35.2, 61.0, 0.0, 0.0},
 }};
 static_assert(robot_hardware_interface::slotsAreValid(kJoints, PM01_NUM_MOTOR), "joint table");
 

@@ -23,41 +23,42 @@ namespace unitree
 namespace
 {
 
+constexpr auto kPosition = robot_hardware_interface::CommandMode::kPosition;
 using Transport = robot_hardware_interface::UnitreeDdsTransport<
   G1_NUM_MOTOR, float, robot_hardware_interface::unitree_hg::Family>;
 
-// URDF joint -> SDK motor slot, with the URDF limits write() clamps to:
-// {name, slot, position min, position max, |velocity| max, |effort| max}
+// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to and the
+// default gains: {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd}
 constexpr std::array<robot_hardware_interface::JointSpec, 29> kJoints = {{
-  {"left_hip_pitch_joint", 0, -2.5307, 2.8798, 32.0, 88.0},
-  {"left_hip_roll_joint", 1, -0.5236, 2.9671, 20.0, 139.0},
-  {"left_hip_yaw_joint", 2, -2.7576, 2.7576, 32.0, 88.0},
-  {"left_knee_joint", 3, -0.087267, 2.8798, 20.0, 139.0},
-  {"left_ankle_pitch_joint", 4, -0.87267, 0.5236, 30.0, 35.0},
-  {"left_ankle_roll_joint", 5, -0.2618, 0.2618, 30.0, 35.0},
-  {"right_hip_pitch_joint", 6, -2.5307, 2.8798, 32.0, 88.0},
-  {"right_hip_roll_joint", 7, -2.9671, 0.5236, 20.0, 139.0},
-  {"right_hip_yaw_joint", 8, -2.7576, 2.7576, 32.0, 88.0},
-  {"right_knee_joint", 9, -0.087267, 2.8798, 20.0, 139.0},
-  {"right_ankle_pitch_joint", 10, -0.87267, 0.5236, 30.0, 35.0},
-  {"right_ankle_roll_joint", 11, -0.2618, 0.2618, 30.0, 35.0},
-  {"waist_yaw_joint", 12, -2.618, 2.618, 32.0, 88.0},
-  {"waist_roll_joint", 13, -0.52, 0.52, 30.0, 35.0},
-  {"waist_pitch_joint", 14, -0.52, 0.52, 30.0, 35.0},
-  {"left_shoulder_pitch_joint", 15, -3.0892, 2.6704, 37.0, 25.0},
-  {"left_shoulder_roll_joint", 16, -1.5882, 2.2515, 37.0, 25.0},
-  {"left_shoulder_yaw_joint", 17, -2.618, 2.618, 37.0, 25.0},
-  {"left_elbow_joint", 18, -1.0472, 2.0944, 37.0, 25.0},
-  {"left_wrist_roll_joint", 19, -1.972222054, 1.972222054, 37.0, 25.0},
-  {"left_wrist_pitch_joint", 20, -1.614429558, 1.614429558, 22.0, 5.0},
-  {"left_wrist_yaw_joint", 21, -1.614429558, 1.614429558, 22.0, 5.0},
-  {"right_shoulder_pitch_joint", 22, -3.0892, 2.6704, 37.0, 25.0},
-  {"right_shoulder_roll_joint", 23, -2.2515, 1.5882, 37.0, 25.0},
-  {"right_shoulder_yaw_joint", 24, -2.618, 2.618, 37.0, 25.0},
-  {"right_elbow_joint", 25, -1.0472, 2.0944, 37.0, 25.0},
-  {"right_wrist_roll_joint", 26, -1.972222054, 1.972222054, 37.0, 25.0},
-  {"right_wrist_pitch_joint", 27, -1.614429558, 1.614429558, 22.0, 5.0},
-  {"right_wrist_yaw_joint", 28, -1.614429558, 1.614429558, 22.0, 5.0},
+  {"left_hip_pitch_joint", 0, kPosition, -2.5307, 2.8798, 32.0, 88.0, 0.0, 0.0},
+  {"left_hip_roll_joint", 1, kPosition, -0.5236, 2.9671, 20.0, 139.0, 0.0, 0.0},
+  {"left_hip_yaw_joint", 2, kPosition, -2.7576, 2.7576, 32.0, 88.0, 0.0, 0.0},
+  {"left_knee_joint", 3, kPosition, -0.087267, 2.8798, 20.0, 139.0, 0.0, 0.0},
+  {"left_ankle_pitch_joint", 4, kPosition, -0.87267, 0.5236, 30.0, 35.0, 0.0, 0.0},
+  {"left_ankle_roll_joint", 5, kPosition, -0.2618, 0.2618, 30.0, 35.0, 0.0, 0.0},
+  {"right_hip_pitch_joint", 6, kPosition, -2.5307, 2.8798, 32.0, 88.0, 0.0, 0.0},
+  {"right_hip_roll_joint", 7, kPosition, -2.9671, 0.5236, 20.0, 139.0, 0.0, 0.0},
+  {"right_hip_yaw_joint", 8, kPosition, -2.7576, 2.7576, 32.0, 88.0, 0.0, 0.0},
+  {"right_knee_joint", 9, kPosition, -0.087267, 2.8798, 20.0, 139.0, 0.0, 0.0},
+  {"right_ankle_pitch_joint", 10, kPosition, -0.87267, 0.5236, 30.0, 35.0, 0.0, 0.0},
+  {"right_ankle_roll_joint", 11, kPosition, -0.2618, 0.2618, 30.0, 35.0, 0.0, 0.0},
+  {"waist_yaw_joint", 12, kPosition, -2.618, 2.618, 32.0, 88.0, 0.0, 0.0},
+  {"waist_roll_joint", 13, kPosition, -0.52, 0.52, 30.0, 35.0, 0.0, 0.0},
+  {"waist_pitch_joint", 14, kPosition, -0.52, 0.52, 30.0, 35.0, 0.0, 0.0},
+  {"left_shoulder_pitch_joint", 15, kPosition, -3.0892, 2.6704, 37.0, 25.0, 0.0, 0.0},
+  {"left_shoulder_roll_joint", 16, kPosition, -1.5882, 2.2515, 37.0, 25.0, 0.0, 0.0},
+  {"left_shoulder_yaw_joint", 17, kPosition, -2.618, 2.618, 37.0, 25.0, 0.0, 0.0},
+  {"left_elbow_joint", 18, kPosition, -1.0472, 2.0944, 37.0, 25.0, 0.0, 0.0},
+  {"left_wrist_roll_joint", 19, kPosition, -1.972222054, 1.972222054, 37.0, 25.0, 0.0, 0.0},
+  {"left_wrist_pitch_joint", 20, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 0.0, 0.0},
+  {"left_wrist_yaw_joint", 21, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 0.0, 0.0},
+  {"right_shoulder_pitch_joint", 22, kPosition, -3.0892, 2.6704, 37.0, 25.0, 0.0, 0.0},
+  {"right_shoulder_roll_joint", 23, kPosition, -2.2515, 1.5882, 37.0, 25.0, 0.0, 0.0},
+  {"right_shoulder_yaw_joint", 24, kPosition, -2.618, 2.618, 37.0, 25.0, 0.0, 0.0},
+  {"right_elbow_joint", 25, kPosition, -1.0472, 2.0944, 37.0, 25.0, 0.0, 0.0},
+  {"right_wrist_roll_joint", 26, kPosition, -1.972222054, 1.972222054, 37.0, 25.0, 0.0, 0.0},
+  {"right_wrist_pitch_joint", 27, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 0.0, 0.0},
+  {"right_wrist_yaw_joint", 28, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 0.0, 0.0},
 }};
 static_assert(robot_hardware_interface::slotsAreValid(kJoints, G1_NUM_MOTOR), "joint table");
 

@@ -81,12 +81,18 @@ public:
   {
     slot_limits_.fill(SlotLimits{-kNoLimit, kNoLimit, kNoLimit, kNoLimit});
     slot_joint_names_.fill("");
+    slot_modes_.fill(CommandMode::kPosition);
+    default_stiffness_.fill(0.0);
+    default_damping_.fill(0.0);
     mapped_slots_.reserve(spec.joint_count);
     for (size_t i = 0; i < spec.joint_count; ++i) {
       const JointSpec & joint = spec.joints[i];
       slot_limits_[joint.slot] = SlotLimits{
         joint.position_min, joint.position_max, joint.velocity_max, joint.effort_max};
       slot_joint_names_[joint.slot] = joint.name;
+      slot_modes_[joint.slot] = joint.mode;
+      default_stiffness_[joint.slot] = joint.default_stiffness;
+      default_damping_[joint.slot] = joint.default_damping;
       mapped_slots_.push_back(joint.slot);
     }
     std::sort(mapped_slots_.begin(), mapped_slots_.end());
@@ -108,7 +114,9 @@ public:
   // URDF joint name of every slot ("" where the slot drives no joint).
   const std::array<const char *, N> & slotJointNames() const {return slot_joint_names_;}
 
-  // The joint driven by `slot`, -1 for none.
+  CommandMode modeOf(size_t slot) const {return slot_modes_[slot];}
+
+  // The SDK motor slot of a URDF joint, -1 for none.
   int slotOf(const std::string & joint_name) const
   {
     for (size_t i = 0; i < spec_.joint_count; ++i) {
@@ -303,6 +311,57 @@ public:
     }
   }
 
+  // ---------------------------------------------------------------- command mode switches
+  // Which command interfaces of a joint active controllers claim (bits of Claim).
+  enum Claim : uint8_t
+  {
+    kClaimPosition = 1U << 0,
+    kClaimVelocity = 1U << 1,
+    kClaimEffort = 1U << 2,
+    kClaimStiffness = 1U << 3,
+    kClaimDamping = 1U << 4,
+  };
+
+  // prepare_command_mode_switch (controller manager, non-real-time): the claims after starting
+  // and stopping the given "<joint>/<interface>" names; names of other components are ignored.
+  // Applied only if commitClaims() follows.
+  template<typename Names>
+  void prepareClaims(const Names & start, const Names & stop)
+  {
+    Claims next = committed_;
+    for (const auto & name : stop) {
+      updateClaim(next, name, false);
+    }
+    for (const auto & name : start) {
+      updateClaim(next, name, true);
+    }
+    next.generation = committed_.generation + 1;
+    prepared_ = next;
+    claims_prepared_.store(true, std::memory_order_release);
+  }
+
+  // perform_command_mode_switch: hand the prepared claims to write(), which applies them at its
+  // next cycle (never from this thread: write() may be running).
+  void commitClaims()
+  {
+    if (!claims_prepared_.exchange(false, std::memory_order_acquire)) {
+      return;
+    }
+    committed_ = prepared_;
+    claim_buffer_.setData(committed_);
+  }
+
+  // Position-commanded joints without default stiffness: limp under a position-only controller.
+  size_t jointsWithoutDefaultStiffness() const
+  {
+    size_t count = 0;
+    for (const size_t slot : mapped_slots_) {
+      count += (slot_modes_[slot] == CommandMode::kPosition && default_stiffness_[slot] <
+        = 0.0) ? 1U : 0U;
+    }
+    return count;
+  }
+
   // ---------------------------------------------------------------- controller thread
   // read(): the newest state and IMU sample into the exported storage.
   void readState()
@@ -334,8 +393,10 @@ public:
     }
   }
 
-  // write(): the commanded values, clamped to the URDF limits, to the command writer. Returns
-  // true when it (re)initialised the command storage itself (layer 3), false otherwise.
+  // write(): what the active controllers command, clamped to the URDF limits, to the command
+  // writer. Only claimed interfaces count: an unclaimed stiffness / damping is the joint's default
+  // gain while its position (or velocity) is claimed, and zero otherwise. Returns true when it
+  // rewrote the command storage itself (safe start, mode switch), false otherwise.
   bool writeCommand()
   {
     // Layer 3: nothing is forwarded before readState() has copied a state of this activation;
@@ -343,7 +404,7 @@ public:
     if (!state_copied_.load(std::memory_order_relaxed)) {
       return false;
     }
-    bool seeded = false;
+    bool rewritten = false;
     if (!command_initialized_.load(std::memory_order_relaxed)) {
       for (MotorData & joint : joint_data_) {
         joint.posDes_ = joint.pos_;  // target = measured position
@@ -353,23 +414,35 @@ public:
         joint.ff_ = 0.0;
       }
       command_initialized_.store(true, std::memory_order_relaxed);
-      seeded = true;
+      rewritten = true;
       RCLCPP_INFO(logger_, "command initialized to the measured position with zero gains");
     }
+    rewritten = applyClaimChanges() || rewritten;
     for (size_t i = 0; i < N; ++i) {
       const MotorData & joint = joint_data_[i];
       const SlotLimits & limits = slot_limits_[i];
-      const double position = std::clamp(joint.posDes_, limits.position_min, limits.position_max);
-      const double velocity = std::clamp(joint.velDes_, -limits.velocity, limits.velocity);
-      const double effort = std::clamp(joint.ff_, -limits.effort, limits.effort);
+      const uint8_t claims = claims_[i];
+      const bool position_mode = slot_modes_[i] == CommandMode::kPosition;
+      const bool driven = (claims & (kClaimPosition | kClaimVelocity)) != 0U;
+      // A velocity-commanded joint has no position target: its measured position, with kp = 0.
+      const double position = position_mode ?
+        std::clamp(joint.posDes_, limits.position_min, limits.position_max) : joint.pos_;
+      const double velocity = (claims & kClaimVelocity) != 0U ?
+        std::clamp(joint.velDes_, -limits.velocity, limits.velocity) : 0.0;
+      const double effort = (claims & kClaimEffort) != 0U ?
+        std::clamp(joint.ff_, -limits.effort, limits.effort) : 0.0;
+      const double kp = !position_mode ? 0.0 : (claims & kClaimStiffness) != 0U ? joint.kp_ :
+        (claims & kClaimPosition) != 0U ? default_stiffness_[i] : 0.0;
+      const double kd = (claims & kClaimDamping) != 0U ? joint.kd_ :
+        driven ? default_damping_[i] : 0.0;
       motor_cmd_cache_.q_target[i] = static_cast<T>(position);
       motor_cmd_cache_.dq_target[i] = static_cast<T>(velocity);
-      motor_cmd_cache_.kp[i] = static_cast<T>(joint.kp_);
-      motor_cmd_cache_.kd[i] = static_cast<T>(joint.kd_);
+      motor_cmd_cache_.kp[i] = static_cast<T>(kp);
+      motor_cmd_cache_.kd[i] = static_cast<T>(kd);
       motor_cmd_cache_.tau_ff[i] = static_cast<T>(effort);
     }
     motor_command_buffer_.setData(motor_cmd_cache_);
-    return seeded;
+    return rewritten;
   }
 
   // Controller-thread latency checks of read() and write().
@@ -418,6 +491,60 @@ private:
     return duration_us > threshold_us;
   }
 
+  struct Claims
+  {
+    std::array<uint8_t, N> bits{};
+    uint64_t generation{0};
+  };
+
+  // "<joint>/<interface>": the claim bit it sets or clears (joint names may contain '/').
+  template<typename Name>
+  void updateClaim(Claims & claims, const Name & full_name, bool claimed) const
+  {
+    const std::string name(full_name);
+    const auto separator = name.rfind('/');
+    if (separator == std::string::npos) {
+      return;
+    }
+    const int slot = slotOf(name.substr(0, separator));
+    if (slot < 0) {
+      return;  // another component's interface
+    }
+    const std::string interface = name.substr(separator + 1);
+    const uint8_t bit = interface == "position" ? kClaimPosition :
+      interface == "velocity" ? kClaimVelocity : interface == "effort" ? kClaimEffort :
+      interface == "stiffness" ? kClaimStiffness : interface == "damping" ? kClaimDamping : 0U;
+    uint8_t & bits = claims.bits[static_cast<size_t>(slot)];
+    bits = static_cast<uint8_t>(claimed ? (bits | bit) : (bits & ~bit));
+  }
+
+  // Controller thread: take over claims a mode switch committed. A joint whose claims changed
+  // starts from a command that cannot jump or carry another controller's gains: target = measured
+  // position, no velocity or effort, the default gains. Returns true when the storage changed.
+  bool applyClaimChanges()
+  {
+    const Claims * next = claim_buffer_.getData();
+    if (next == nullptr || next->generation == applied_generation_) {
+      return false;
+    }
+    applied_generation_ = next->generation;
+    bool changed = false;
+    for (size_t i = 0; i < N; ++i) {
+      if (next->bits[i] == claims_[i]) {
+        continue;
+      }
+      MotorData & joint = joint_data_[i];
+      joint.posDes_ = joint.pos_;
+      joint.velDes_ = 0.0;
+      joint.ff_ = 0.0;
+      joint.kp_ = slot_modes_[i] == CommandMode::kPosition ? default_stiffness_[i] : 0.0;
+      joint.kd_ = default_damping_[i];
+      claims_[i] = next->bits[i];
+      changed = true;
+    }
+    return changed;
+  }
+
   bool stateIsStale() const
   {
     const int64_t age_ns = steadyNowNs() - last_state_time_ns_.load(std::memory_order_acquire);
@@ -430,7 +557,18 @@ private:
   rclcpp::Clock throttle_clock_{RCL_STEADY_TIME};  // throttles warnings, immune to sim time
   std::array<SlotLimits, N> slot_limits_{};
   std::array<const char *, N> slot_joint_names_{};
+  std::array<CommandMode, N> slot_modes_{};
+  std::array<double, N> default_stiffness_{};
+  std::array<double, N> default_damping_{};
   std::vector<size_t> mapped_slots_;
+
+  // Command mode switches: prepared and committed by the controller manager, applied by write().
+  Claims prepared_{};
+  Claims committed_{};
+  std::atomic<bool> claims_prepared_{false};
+  DataBuffer<Claims> claim_buffer_;   // commitClaims() -> write()
+  std::array<uint8_t, N> claims_{};   // controller thread: the claims write() applies
+  uint64_t applied_generation_{0};    // controller thread
 
   // Thread-safe state/command exchange (producer -> one consumer each)
   DataBuffer<State> motor_state_buffer_;      // state thread -> read()

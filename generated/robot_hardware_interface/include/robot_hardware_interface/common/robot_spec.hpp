@@ -20,15 +20,28 @@ namespace robot_hardware_interface
 // A limit the URDF does not give.
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
-// One URDF joint driven by one SDK motor slot, with the URDF limits write() clamps to.
+// How ros2_control commands a joint: a position-commanded joint takes the motor's whole PD command
+// (position, velocity, stiffness, damping, effort); a velocity-commanded one (a wheel) velocity,
+// damping and effort, never a position target or stiffness.
+enum class CommandMode : uint8_t
+{
+  kPosition,
+  kVelocity,
+};
+
+// One URDF joint driven by one SDK motor slot, with the URDF limits write() clamps to and the
+// gains applied while a controller commands the joint without claiming them.
 struct JointSpec
 {
-  const char * name;    // URDF joint name, as the ros2_control description names it
-  size_t slot;          // SDK motor slot
-  double position_min;  // URDF <limit lower>, -kNoLimit when there is none
-  double position_max;  // URDF <limit upper>, kNoLimit when there is none
-  double velocity_max;  // bound of |velocity target|
-  double effort_max;    // bound of |feed-forward effort|
+  const char * name;         // URDF joint name, as the ros2_control description names it
+  size_t slot;               // SDK motor slot
+  CommandMode mode;
+  double position_min;       // URDF <limit lower>, -kNoLimit when there is none
+  double position_max;       // URDF <limit upper>, kNoLimit when there is none
+  double velocity_max;       // bound of |velocity target|
+  double effort_max;         // bound of |feed-forward effort|
+  double default_stiffness;  // vendor YAML default_gains: kp while stiffness is not claimed
+  double default_damping;    // kd while damping is not claimed
 };
 
 // Defaults of the <hardware> parameters (the vendor YAML's `parameters`).

@@ -49,6 +49,8 @@ public:
   virtual void stop() = 0;
   // Destruction: stop everything that could still call into the driver. Must not throw.
   virtual void shutdown() noexcept = 0;
+  // Whether stiffness and damping reach the robot (otherwise no gain interfaces are exported).
+  virtual bool carriesGains() const {return true;}
 };
 
 // The ros2_control face of every driver: SystemInterface lifecycle and read()/write() around a
@@ -86,6 +88,13 @@ public:
       return CallbackReturn::ERROR;
     }
     RCLCPP_INFO(core_.logger(), "activated: commands start after the first valid state");
+    const size_t limp = core_.jointsWithoutDefaultStiffness();
+    if (limp > 0) {
+      RCLCPP_WARN(
+        core_.logger(),
+        "%zu position-commanded joint(s) have no default stiffness (default_gains of "
+        "the vendor YAML): a controller that claims only their position leaves them limp", limp);
+    }
     return CallbackReturn::SUCCESS;
   }
 
@@ -96,6 +105,24 @@ public:
     RCLCPP_INFO(core_.logger(), "deactivated: the %s transport stopped sending",
       transport_->name());
     return CallbackReturn::SUCCESS;
+  }
+
+  // The controller manager switches controllers: claimed command interfaces count, unclaimed
+  // gains fall back to the joint's default (see DriverCore::writeCommand()).
+  return_type prepare_command_mode_switch(
+    const std::vector<std::string> & start_interfaces,
+    const std::vector<std::string> & stop_interfaces) override
+  {
+    core_.prepareClaims(start_interfaces, stop_interfaces);
+    return return_type::OK;
+  }
+
+  return_type perform_command_mode_switch(
+    const std::vector<std::string> & /*start_interfaces*/,
+    const std::vector<std::string> & /*stop_interfaces*/) override
+  {
+    core_.commitClaims();
+    return return_type::OK;
   }
 
   return_type read(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
@@ -287,6 +314,14 @@ private:
       return nullptr;
     }
     MotorData & joint = core_.jointData(static_cast<size_t>(slot));
+    if (core_.modeOf(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
+      (name == "position" || name == "stiffness"))
+    {
+      return nullptr;  // a velocity-commanded joint has no position target and no stiffness
+    }
+    if (!transport_->carriesGains() && (name == "stiffness" || name == "damping")) {
+      return nullptr;  // the robot applies its own gains
+    }
     return name == "position" ? &joint.posDes_ : name == "velocity" ? &joint.velDes_ :
            name == "stiffness" ? &joint.kp_ : name == "damping" ? &joint.kd_ :
            name == "effort" ? &joint.ff_ : nullptr;

@@ -1,14 +1,13 @@
 // rhi-gen test stand-in (not the real ROS 2 code): the ament_generate_version_header() output of
-// hardware_interface on the Humble branch (2.x). The exact minor/patch of the newest Humble
-// release was not verified; drivers should only gate on MAJOR (2 = Humble) or on
-// HARDWARE_INTERFACE_VERSION_GTE.
+// hardware_interface 2.54.0, the newest release of the Humble branch (package.xml). Humble has
+// version.h since 2.46.0; drivers gate on MAJOR (2 = Humble) or HARDWARE_INTERFACE_VERSION_GTE.
 #ifndef HARDWARE_INTERFACE__VERSION_H_
 #define HARDWARE_INTERFACE__VERSION_H_
 
 #define HARDWARE_INTERFACE_VERSION_MAJOR (2)
-#define HARDWARE_INTERFACE_VERSION_MINOR (52)
+#define HARDWARE_INTERFACE_VERSION_MINOR (54)
 #define HARDWARE_INTERFACE_VERSION_PATCH (0)
-#define HARDWARE_INTERFACE_VERSION_STR "2.52.0"
+#define HARDWARE_INTERFACE_VERSION_STR "2.54.0"
 
 #define HARDWARE_INTERFACE_VERSION_GTE(major, minor, patch) ( \
     (major < HARDWARE_INTERFACE_VERSION_MAJOR) ? true \

@@ -27,8 +27,8 @@ from pathlib import Path
 import pytest
 
 from rhi_gen.cli import main
-from tests.cpp_build import ENV_C, REPO, STANDINS_INCLUDE, WARNING_FLAGS, project_robot_labels, \
-    require_compiler, run_compiler
+from tests.cpp_build import ENV_C, REPO, WARNING_FLAGS, project_robot_labels, require_compiler, \
+    run_compiler, standin_flags
 
 PACKAGE = "robot_hardware_interface"
 LABELS = project_robot_labels(extra_robots=False)  # vendor/robot of robots/*/*.yaml
@@ -74,8 +74,9 @@ def package_dir(tmp_path_factory) -> Path:
 
 
 def _flags(package: Path) -> list[str]:
-    # -Wpedantic: the generated CMakeLists.txt adds -Wall -Wextra -Wpedantic to every target.
-    return [*WARNING_FLAGS, "-Wpedantic", f"-I{STANDINS_INCLUDE}", f"-I{package / 'include'}"]
+    # WARNING_FLAGS has -Wpedantic: the generated CMakeLists.txt adds -Wall -Wextra -Wpedantic.
+    # Humble: the generated test skips itself on ros2_control >= 3 (a template change to come).
+    return [*WARNING_FLAGS, *standin_flags("humble"), f"-I{package / 'include'}"]
 
 
 def _source(package: Path, label: str) -> Path:

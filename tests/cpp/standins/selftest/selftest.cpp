@@ -148,11 +148,26 @@ static int g_checks = 0;
   } while (0)
 
 template<typename Pred>
-bool eventually(Pred pred, std::chrono::milliseconds timeout = std::chrono::milliseconds(3000))
+bool eventually(Pred pred, std::chrono::milliseconds timeout = std::chrono::milliseconds(10000))
 {
   auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!pred()) {
     if (std::chrono::steady_clock::now() > deadline) {return false;}
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
+
+/// Cancels `exec` until its spin() thread reports it returned (a cancel() that races the start of
+/// spin() is lost), at most `timeout`; false if it never returned (the join would then hang).
+static bool stop_spinning(
+  rclcpp::Executor & exec, const std::atomic<bool> & returned,
+  std::chrono::milliseconds timeout = std::chrono::milliseconds(10000))
+{
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!returned.load()) {
+    if (std::chrono::steady_clock::now() > deadline) {return false;}
+    exec.cancel();
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   return true;
@@ -562,7 +577,7 @@ static void test_rclcpp()
   CHECK(rhi_fake::ros::spinning_executors() == 0 && !rhi_fake::ros::is_spinning(*exec));
   std::atomic<bool> spin_returned{false};
   std::thread spinner([&]() {exec->spin(); spin_returned = true;});
-  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(10000)));
   CHECK(rhi_fake::ros::is_spinning(*exec));
   CHECK_THROWS(std::runtime_error, exec->spin());
   int before = c.timer.load();
@@ -575,7 +590,7 @@ static void test_rclcpp()
   // deliveries from the test thread interleave safely with timer callbacks on the spin thread
   for (int i = 0; i < 200; ++i) {rhi_fake::ros::deliver("/hardware/joint_state", js);}
   rhi_fake::ros::set_realtime_timers(false);
-  exec->cancel();
+  CHECK(stop_spinning(*exec, spin_returned));
   spinner.join();
   CHECK(spin_returned && !rhi_fake::ros::is_spinning(*exec));
   CHECK(rhi_fake::ros::wait_spinning_executors(0, std::chrono::milliseconds(100)));
@@ -584,10 +599,10 @@ static void test_rclcpp()
   exec->cancel();
   spin_returned = false;
   std::thread late([&]() {exec->spin(); spin_returned = true;});
-  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(10000)));
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   CHECK(!spin_returned);
-  exec->cancel();
+  CHECK(stop_spinning(*exec, spin_returned));
   late.join();
   CHECK(spin_returned);
 
@@ -602,7 +617,7 @@ static void test_rclcpp()
   CHECK(mt.get_number_of_threads() == 2);
   mt.add_node(node);
   std::thread mt_spinner([&]() {mt.spin();});
-  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(10000)));
   CHECK(rclcpp::shutdown());
   mt_spinner.join();
   CHECK(!rclcpp::ok() && !rclcpp::shutdown());
@@ -619,7 +634,7 @@ static void test_rclcpp()
 
   // rclcpp::spin(node) on a helper thread, ended by shutdown
   std::thread free_spin([&]() {rclcpp::spin(node);});
-  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(3000)));
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(10000)));
   rclcpp::shutdown();
   free_spin.join();
   rclcpp::init(0, nullptr);
@@ -641,7 +656,11 @@ static void test_concurrency()
   rclcpp::executors::SingleThreadedExecutor exec;
   exec.add_node(node);
   rhi_fake::ros::set_realtime_timers(true);
-  std::thread spinner([&]() {exec.spin();});
+  std::atomic<bool> spin_returned{false};
+  std::thread spinner([&]() {exec.spin(); spin_returned = true;});
+  // A cancel() before spin() has started is lost (Humble semantics, kept by the stand-in): wait
+  // until it spins. Under load the workers below can finish before the spinner is scheduled.
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(10000)));
   std::vector<std::thread> workers;
   for (int w = 0; w < 3; ++w) {
     workers.emplace_back([&, w]() {
@@ -657,7 +676,7 @@ static void test_concurrency()
   }
   for (auto & t : workers) {t.join();}
   rhi_fake::ros::set_realtime_timers(false);
-  exec.cancel();
+  CHECK(stop_spinning(exec, spin_returned));
   spinner.join();
   CHECK(received == 3 * 300 * 3);
   CHECK(rhi_fake::ros::publish_count("/ns/state_out") == 900);

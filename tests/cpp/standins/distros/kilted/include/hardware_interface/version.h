@@ -10,12 +10,12 @@
 #define HARDWARE_INTERFACE_VERSION_STR "5.16.0"
 
 #define HARDWARE_INTERFACE_VERSION_GTE(major, minor, patch) ( \
-    (major < HARDWARE_INTERFACE_VERSION_MAJOR) ? true \
-    : ((major > HARDWARE_INTERFACE_VERSION_MAJOR) ? false \
-    : ((minor < HARDWARE_INTERFACE_VERSION_MINOR) ? true \
-    : ((minor > HARDWARE_INTERFACE_VERSION_MINOR) ? false \
-    : ((patch < HARDWARE_INTERFACE_VERSION_PATCH) ? true \
-    : ((patch > HARDWARE_INTERFACE_VERSION_PATCH) ? false \
-    : true))))))
+     (major < HARDWARE_INTERFACE_VERSION_MAJOR) ? true \
+     : ((major > HARDWARE_INTERFACE_VERSION_MAJOR) ? false \
+     : ((minor < HARDWARE_INTERFACE_VERSION_MINOR) ? true \
+     : ((minor > HARDWARE_INTERFACE_VERSION_MINOR) ? false \
+     : ((patch < HARDWARE_INTERFACE_VERSION_PATCH) ? true \
+     : ((patch > HARDWARE_INTERFACE_VERSION_PATCH) ? false \
+     : true))))))
 
 #endif  // HARDWARE_INTERFACE__VERSION_H_

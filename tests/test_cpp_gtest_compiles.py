@@ -3,9 +3,11 @@ rhi_gen/templates/robot/test.cpp.j2) compiles against the Humble stand-ins and t
 
 On a ROS 2 Humble machine that file is built by ament_add_gmock() and run by `colcon test`; here
 nothing else compiles it. Every robot of robots/ is rendered into a temporary project and its test
-is compiled with g++ -std=c++17 -Wall -Wextra -Wpedantic -Werror -fsyntax-only against
-tests/cpp/standins/include (hardware_interface/resource_manager.hpp,
-ros2_control_test_assets/descriptions.hpp, rclcpp, ...) and the generated include folder.
+is compiled with g++ -std=c++17 -Wall -Wextra -Wpedantic -Werror -fsyntax-only against the Humble
+stand-ins (tests/cpp/standins/distros/humble/include + include: hardware_interface/resource_manager.hpp,
+ros2_control_test_assets/descriptions.hpp, rclcpp, ...) and the generated include folder. (The
+4.x+ ResourceManager stand-ins exist and are self-tested; the generated test skips itself there
+until its template supports them.)
 The same file is then linked with gmock_main and run: the stand-in ResourceManager "exports"
 exactly what the test's <ros2_control> block lists, so this checks the test's own bookkeeping
 (expected keys and counts), not the driver.

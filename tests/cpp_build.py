@@ -22,8 +22,43 @@ from tests import vendor_msgs
 from tests.ros_msgs import wheel_include_dirs, wheels_digest
 
 REPO = Path(__file__).resolve().parents[1]
-STANDINS_INCLUDE = REPO / "tests" / "cpp" / "standins" / "include"
-WARNING_FLAGS = ("-std=c++17", "-Wall", "-Wextra", "-Werror")
+STANDINS = REPO / "tests" / "cpp" / "standins"
+# Distro-independent stand-ins (rclcpp, pluginlib, unitree_sdk2, messages, rhi_fake hooks).
+STANDINS_INCLUDE = STANDINS / "include"
+# What every distro's code is compiled with (the issue's flags; deprecations are errors).
+WARNING_FLAGS = ("-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror")
+
+
+@dataclass(frozen=True)
+class Distro:
+    """One ROS 2 distribution the stand-ins cover (tests/cpp/standins/README.md, "Distros")."""
+    name: str
+    hardware_interface: str  # version of the ros2_control branch the stand-in follows
+    layers: tuple[str, ...]  # folders under tests/cpp/standins/distros/, most specific first
+
+    @property
+    def hi_major(self) -> int:
+        return int(self.hardware_interface.split(".")[0])
+
+    @property
+    def include_dirs(self) -> list[Path]:
+        """-I order: the distro's own headers, the shared layers, then the distro-independent ones."""
+        return [STANDINS / "distros" / layer / "include" for layer in self.layers] + [STANDINS_INCLUDE]
+
+
+DISTROS: dict[str, Distro] = {
+    "humble": Distro("humble", "2.54.0", ("humble",)),
+    "jazzy": Distro("jazzy", "4.46.0", ("jazzy", "since_jazzy")),
+    "kilted": Distro("kilted", "5.16.0", ("kilted", "since_kilted", "since_jazzy")),
+    # Rolling and Lyrical share ros2_control's master branch (6.x).
+    "rolling": Distro("rolling", "6.8.0", ("rolling", "since_kilted", "since_jazzy")),
+}
+DEFAULT_DISTRO = "humble"
+
+
+def standin_flags(distro: str = DEFAULT_DISTRO) -> list[str]:
+    """-I flags of the stand-ins for ``distro``."""
+    return [f"-I{p}" for p in DISTROS[distro].include_dirs]
 
 
 def require_compiler() -> str:
@@ -66,16 +101,17 @@ def messages_digest() -> str:
     return f"{wheels_digest()} {vendor}"
 
 
-def include_flags(package_dir: Path, extra: Iterable[Path] = ()) -> list[str]:
-    return [f"-I{package_dir / 'include'}", f"-I{STANDINS_INCLUDE}", *(f"-I{p}" for p in extra),
+def include_flags(package_dir: Path, extra: Iterable[Path] = (), distro: str = DEFAULT_DISTRO) -> list[str]:
+    return [f"-I{package_dir / 'include'}", *standin_flags(distro), *(f"-I{p}" for p in extra),
             *message_include_flags()]
 
 
-def syntax_check_driver(package_dir: Path, vendor: str, robot: str, flags: Sequence[str] = ()) -> None:
-    """Compile one generated driver against the stand-in headers with -Werror (no linking)."""
+def syntax_check_driver(package_dir: Path, vendor: str, robot: str, flags: Sequence[str] = (),
+                        distro: str = DEFAULT_DISTRO) -> None:
+    """Compile one generated driver against ``distro``'s stand-in headers with -Werror (no linking)."""
     source = driver_source(package_dir, vendor, robot)
-    run_compiler([*WARNING_FLAGS, *flags, "-fsyntax-only", *include_flags(package_dir), str(source)],
-                 what=f"{vendor}/{robot} driver")
+    run_compiler([*WARNING_FLAGS, *flags, "-fsyntax-only", *include_flags(package_dir, distro=distro), str(source)],
+                 what=f"{vendor}/{robot} driver ({distro})")
 
 
 # =====================================================================================================
@@ -97,8 +133,8 @@ ENV_C = {**os.environ, "LC_ALL": "C", "LANG": "C"}
 
 # Build flavours of the harness binaries. Every flavour compiles the driver with -Werror.
 FLAVOURS: dict[str, tuple[str, ...]] = {
-    # the generated CMakeLists adds -Wpedantic; -O2 is how a release build of the driver runs
-    "plain": ("-O2", "-Wpedantic"),
+    # -O2 is how a release build of the driver runs
+    "plain": ("-O2",),
     "asan_ubsan": ("-O1", "-g1", "-fno-omit-frame-pointer", "-fsanitize=address,undefined",
                    "-fno-sanitize-recover=all"),
     "tsan": ("-O1", "-g1", "-fsanitize=thread"),
@@ -402,7 +438,7 @@ class CppBuilder:
         self.jobs = jobs or max(1, os.cpu_count() or 1)
         version = subprocess.run([self.cxx, "--version"], capture_output=True, text=True).stdout
         self._salt = hashlib.sha256(version.encode()).hexdigest()
-        self._standins = _tree_digest(STANDINS_INCLUDE)
+        self._standins = _tree_digest(STANDINS, (".hpp", ".h"))  # every distro's headers
         self._message_flags = message_include_flags()
         self._messages = messages_digest()
         self._harness = _tree_digest(HARNESS_DIR)
@@ -454,10 +490,11 @@ class CppBuilder:
         return result
 
     def compile(self, source: Path, flags: Sequence[str], includes: Sequence[Path], *,
-                digest_parts: Sequence[str], name: str) -> CompileResult:
-        # Paths are not part of the key: the same sources in another folder give the same object.
+                digest_parts: Sequence[str], name: str, distro: str = DEFAULT_DISTRO) -> CompileResult:
+        # Paths are not part of the key (the same sources in another folder give the same object),
+        # so the distro, which picks the stand-in folders, is.
         key = self._key("compile", source.name, source.read_text(encoding="utf-8"), *flags,
-                        self._standins, self._messages, *digest_parts)
+                        self._standins, self._messages, f"distro={distro}", *digest_parts)
         out = self.cache_dir / f"{name}-{key}.o"
         cmd = [self.cxx, *WARNING_FLAGS, "-pthread", *flags, *(f"-I{p}" for p in includes),
                *self._message_flags, "-c", str(source)]
@@ -509,21 +546,32 @@ def package_digest(package_dir: Path) -> str:
     return _tree_digest(package_dir / "include")
 
 
-def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str) -> tuple[CompileResult, list[CompileResult]]:
-    """Driver object (-Werror), harness object, CRC probe (unitree) and the linked binary.
+def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
+                           distro: str = DEFAULT_DISTRO) -> CompileResult:
+    """driver_harness.cpp for one robot against ``distro``'s stand-ins (no driver needed)."""
+    m = rb.model
+    return builder.compile(HARNESS_DIR / "driver_harness.cpp", FLAVOURS[flavour],
+                           [rb.data_dir, HARNESS_DIR, *DISTROS[distro].include_dirs],
+                           digest_parts=[rb.data_header, builder._harness],
+                           name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro)
+
+
+def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
+                  distro: str = DEFAULT_DISTRO) -> tuple[CompileResult, list[CompileResult]]:
+    """Driver object (-Werror), harness object, CRC probe (unitree) and the linked binary, all
+    against ``distro``'s stand-ins.
 
     Returns (link result, [object results]); a failed step leaves later ones out."""
     m = rb.model
     flags = FLAVOURS[flavour]
     pkg_include = rb.package_dir / "include"
+    standins = DISTROS[distro].include_dirs
     pkg = package_digest(rb.package_dir)
-    tag = f"{m.vendor}_{m.robot}_{flavour}"
+    tag = f"{m.vendor}_{m.robot}_{flavour}_{distro}"
     driver_src = driver_source(rb.package_dir, m.vendor, m.robot)
-    steps = [builder.compile(driver_src, flags, [pkg_include, STANDINS_INCLUDE], digest_parts=[pkg],
-                             name=f"driver_{tag}")]
-    steps.append(builder.compile(HARNESS_DIR / "driver_harness.cpp", flags,
-                                 [rb.data_dir, HARNESS_DIR, STANDINS_INCLUDE],
-                                 digest_parts=[rb.data_header, builder._harness], name=f"harness_{tag}"))
+    steps = [builder.compile(driver_src, flags, [pkg_include, *standins], digest_parts=[pkg],
+                             name=f"driver_{tag}", distro=distro)]
+    steps.append(compile_harness_object(builder, rb, flavour, distro))
     if m.transport == "unitree_dds":
         header = crc_header(rb.package_dir)
         if header is None:
@@ -531,8 +579,8 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str) -> tuple[Co
         else:
             rel = header.relative_to(pkg_include).as_posix()
             steps.append(builder.compile(HARNESS_DIR / "crc_probe.cpp", (*flags, f'-DRHI_CRC_HEADER="{rel}"'),
-                                         [pkg_include, STANDINS_INCLUDE], digest_parts=[pkg],
-                                         name=f"crcprobe_{tag}"))
+                                         [pkg_include, *standins], digest_parts=[pkg],
+                                         name=f"crcprobe_{tag}", distro=distro))
     failed = [s for s in steps if not s.ok]
     if failed:
         return failed[0], steps

@@ -4,7 +4,8 @@
 // robot_data.hpp (written per robot by tests/cpp_build.py) provides namespace rhi_data: the
 // expected joint -> SDK slot table read from the vendor YAML (NOT from the generated
 // jointIndexMap), limits from the URDF, transport topics, parameter defaults and kInfoRecords,
-// the <ros2_control> block of the expanded xacro.
+// the <ros2_control> block of the expanded xacro. Interfaces are read and written through
+// rhi_fake/hw.hpp, so the same code runs on every distro's stand-ins.
 #pragma once
 
 #include <algorithm>
@@ -18,8 +19,9 @@
 #include <string>
 #include <vector>
 
-#include <hardware_interface/handle.hpp>
 #include <hardware_interface/hardware_info.hpp>
+
+#include "rhi_fake/hw.hpp"
 
 #include "robot_data.hpp"
 
@@ -122,8 +124,9 @@ inline StateFrame coded_state(uint32_t code) {
 }
 
 // ---------------------------------------------------------------- HardwareInfo
+// Value-initialised: 4.x+ HardwareInfo/InterfaceInfo have members without initializers.
 inline hardware_interface::HardwareInfo make_hardware_info() {
-  hardware_interface::HardwareInfo info;
+  hardware_interface::HardwareInfo info{};
   hardware_interface::ComponentInfo* component = nullptr;
   for (const InfoRecord& r : kInfoRecords) {
     switch (r.kind) {
@@ -132,7 +135,7 @@ inline hardware_interface::HardwareInfo make_hardware_info() {
         info.type = r.b;
         break;
       case 'L':  // <plugin>
-        info.hardware_class_type = r.a;
+        rhi_fake::hw::set_plugin_name(info, r.a);
         break;
       case 'H':  // <hardware><param>
         info.hardware_parameters[r.a] = r.b;
@@ -150,7 +153,7 @@ inline hardware_interface::HardwareInfo make_hardware_info() {
         component->type = "sensor";
         break;
       case 'C': {  // <command_interface> (+ min/max params)
-        hardware_interface::InterfaceInfo i;
+        hardware_interface::InterfaceInfo i{};
         i.name = r.a;
         i.min = r.b;
         i.max = r.c;
@@ -159,7 +162,7 @@ inline hardware_interface::HardwareInfo make_hardware_info() {
         break;
       }
       case 'T': {  // <state_interface>
-        hardware_interface::InterfaceInfo i;
+        hardware_interface::InterfaceInfo i{};
         i.name = r.a;
         i.size = 1;
         component->state_interfaces.push_back(i);
@@ -185,12 +188,11 @@ constexpr std::array<const char*, 5> kJointCommands = {"position", "velocity", "
                                                        "effort"};
 
 struct Interfaces {
-  std::vector<hardware_interface::StateInterface> states;
-  std::vector<hardware_interface::CommandInterface> commands;
+  rhi_fake::hw::Exported exported;  // what the driver exported, in its order
   // per kJoints entry (nullptr when missing)
-  std::vector<const hardware_interface::StateInterface*> pos, vel, eff;
-  std::vector<hardware_interface::CommandInterface*> cpos, cvel, ckp, ckd, cff;
-  std::array<const hardware_interface::StateInterface*, 10> imu{};
+  std::vector<const rhi_fake::hw::StateRef*> pos, vel, eff;
+  std::vector<const rhi_fake::hw::CommandRef*> cpos, cvel, ckp, ckd, cff;
+  std::array<const rhi_fake::hw::StateRef*, 10> imu{};
 
   void index() {
     pos.assign(kJointCount, nullptr);
@@ -202,28 +204,28 @@ struct Interfaces {
     ckd.assign(kJointCount, nullptr);
     cff.assign(kJointCount, nullptr);
     imu.fill(nullptr);
-    for (const auto& s : states) {
+    for (const auto& s : exported.states()) {
       for (size_t k = 0; k < kJointCount; ++k) {
-        if (s.get_prefix_name() != kJoints[k].name) {
+        if (s.prefix() != kJoints[k].name) {
           continue;
         }
-        const std::string& n = s.get_interface_name();
+        const std::string& n = s.interface();
         if (n == "position") pos[k] = &s;
         if (n == "velocity") vel[k] = &s;
         if (n == "effort") eff[k] = &s;
       }
-      if (kImuEnabled && s.get_prefix_name() == kImuName) {
+      if (kImuEnabled && s.prefix() == kImuName) {
         for (size_t i = 0; i < kImuInterfaces.size(); ++i) {
-          if (s.get_interface_name() == kImuInterfaces[i]) imu[i] = &s;
+          if (s.interface() == kImuInterfaces[i]) imu[i] = &s;
         }
       }
     }
-    for (auto& c : commands) {
+    for (const auto& c : exported.commands()) {
       for (size_t k = 0; k < kJointCount; ++k) {
-        if (c.get_prefix_name() != kJoints[k].name) {
+        if (c.prefix() != kJoints[k].name) {
           continue;
         }
-        const std::string& n = c.get_interface_name();
+        const std::string& n = c.interface();
         if (n == "position") cpos[k] = &c;
         if (n == "velocity") cvel[k] = &c;
         if (n == "stiffness") ckp[k] = &c;
@@ -273,11 +275,11 @@ inline ControllerCommand distinct_command(uint32_t variant) {
 inline void apply_command(Interfaces& ifs, const ControllerCommand& c) {
   for (size_t k = 0; k < kJointCount; ++k) {
     const size_t s = kJoints[k].slot;
-    if (ifs.cpos[k]) ifs.cpos[k]->set_value(c.q[s]);
-    if (ifs.cvel[k]) ifs.cvel[k]->set_value(c.dq[s]);
-    if (ifs.ckp[k]) ifs.ckp[k]->set_value(c.kp[s]);
-    if (ifs.ckd[k]) ifs.ckd[k]->set_value(c.kd[s]);
-    if (ifs.cff[k]) ifs.cff[k]->set_value(c.ff[s]);
+    if (ifs.cpos[k]) ifs.cpos[k]->set(c.q[s]);
+    if (ifs.cvel[k]) ifs.cvel[k]->set(c.dq[s]);
+    if (ifs.ckp[k]) ifs.ckp[k]->set(c.kp[s]);
+    if (ifs.ckd[k]) ifs.ckd[k]->set(c.kd[s]);
+    if (ifs.cff[k]) ifs.cff[k]->set(c.ff[s]);
   }
 }
 

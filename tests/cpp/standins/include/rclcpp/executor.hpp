@@ -8,7 +8,7 @@
 //  * spin() also returns when rclcpp::shutdown() is called;
 //  * add_node() of a node that is already in an executor throws std::runtime_error;
 //    remove_node() of a node that is not in this executor throws std::runtime_error;
-//  * there is no Executor::is_spinning() in Humble (tests use rhi_fake::ros::spinning_executors()).
+//  * is_spinning() (every distro, Humble since rclcpp 16.0.0) is true while inside spin()/spin_some().
 //
 // Fake behaviour: spin() blocks (no busy loop) until cancel()/shutdown(). Subscriptions are fed by
 // the test (rhi_fake::ros::deliver, on the test's thread). Wall timers of the executor's nodes fire
@@ -149,6 +149,9 @@ public:
     }
     core_->cv.notify_all();
   }
+
+  /// True while this executor is inside spin() / spin_some() (any thread may ask).
+  bool is_spinning() {return core_->spinning.load();}
 
   /// Stand-in internal (used by rhi_fake::ros hooks).
   const std::shared_ptr<::rhi_fake::detail::ExecutorCore> & rhi_core() const {return core_;}

@@ -1,6 +1,6 @@
 // rhi-gen test stand-in (not the real ROS 2 code): rclcpp::Node (ROS 2 Humble API subset):
 // names, logger, clock, now(), create_publisher, create_subscription, create_wall_timer,
-// get_node_base_interface. Like rclcpp:
+// get_node_base_interface / get_node_clock_interface / get_node_logging_interface. Like rclcpp:
 //  * constructing a Node before rclcpp::init() (or after shutdown) throws rclcpp::exceptions::RCLError;
 //  * invalid node names / namespaces / topic names throw the rclcpp::exceptions::Invalid*Error types;
 //  * topic names are expanded: "x" -> "<ns>/x", "~/x" -> "<node fqn>/x".
@@ -29,6 +29,8 @@
 #include "rclcpp/logger.hpp"
 #include "rclcpp/macros.hpp"
 #include "rclcpp/node_interfaces/node_base_interface.hpp"
+#include "rclcpp/node_interfaces/node_clock_interface.hpp"
+#include "rclcpp/node_interfaces/node_logging_interface.hpp"
 #include "rclcpp/node_options.hpp"
 #include "rclcpp/publisher.hpp"
 #include "rclcpp/publisher_options.hpp"
@@ -157,6 +159,35 @@ inline EndpointEntry make_endpoint(
 }  // namespace detail
 }  // namespace rhi_fake
 
+namespace rhi_fake {
+namespace detail {
+// The node's clock and logger behind the abstract rclcpp node interfaces.
+class NodeClock final : public rclcpp::node_interfaces::NodeClockInterface
+{
+public:
+  explicit NodeClock(rclcpp::Clock::SharedPtr clock)
+  : clock_(std::move(clock)) {}
+  rclcpp::Clock::SharedPtr get_clock() override {return clock_;}
+  rclcpp::Clock::ConstSharedPtr get_clock() const override {return clock_;}
+
+private:
+  rclcpp::Clock::SharedPtr clock_;
+};
+
+class NodeLogging final : public rclcpp::node_interfaces::NodeLoggingInterface
+{
+public:
+  explicit NodeLogging(rclcpp::Logger logger)
+  : logger_(std::move(logger)) {}
+  rclcpp::Logger get_logger() const override {return logger_;}
+  const char * get_logger_name() const override {return logger_.get_name();}
+
+private:
+  rclcpp::Logger logger_;
+};
+}  // namespace detail
+}  // namespace rhi_fake
+
 namespace rclcpp
 {
 
@@ -186,6 +217,8 @@ public:
     core_->ns = ::rhi_fake::detail::normalize_namespace(namespace_);
     core_->fqn = (core_->ns == "/" ? std::string("/") : core_->ns + "/") + node_name;
     base_ = std::make_shared<node_interfaces::NodeBaseInterface>(core_);
+    clock_if_ = std::make_shared<::rhi_fake::detail::NodeClock>(clock_);
+    logging_if_ = std::make_shared<::rhi_fake::detail::NodeLogging>(logger_);
   }
 
   virtual ~Node() = default;
@@ -205,6 +238,10 @@ public:
   const NodeOptions & get_node_options() const {return options_;}
 
   node_interfaces::NodeBaseInterface::SharedPtr get_node_base_interface() {return base_;}
+
+  node_interfaces::NodeClockInterface::SharedPtr get_node_clock_interface() {return clock_if_;}
+
+  node_interfaces::NodeLoggingInterface::SharedPtr get_node_logging_interface() {return logging_if_;}
 
   template<
     typename MessageT,
@@ -311,6 +348,8 @@ private:
   rclcpp::Clock::SharedPtr clock_;
   std::shared_ptr<::rhi_fake::detail::NodeCore> core_;
   node_interfaces::NodeBaseInterface::SharedPtr base_;
+  node_interfaces::NodeClockInterface::SharedPtr clock_if_;
+  node_interfaces::NodeLoggingInterface::SharedPtr logging_if_;
 };
 
 }  // namespace rclcpp

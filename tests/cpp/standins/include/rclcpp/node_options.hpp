@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "rhi_fake/detail/distro.hpp"
+
 namespace rclcpp
 {
 class NodeOptions
@@ -30,6 +32,15 @@ public:
     start_parameter_event_publisher_ = v;
     return *this;
   }
+#if RHI_FAKE_RCLCPP_MAJOR >= 21
+  // Iron (rclcpp 21) and later; hardware_interface 4.x+ sets it in define_custom_node_options().
+  bool enable_logger_service() const {return enable_logger_service_;}
+  NodeOptions & enable_logger_service(bool v)
+  {
+    enable_logger_service_ = v;
+    return *this;
+  }
+#endif
   const std::vector<std::string> & arguments() const {return arguments_;}
   NodeOptions & arguments(const std::vector<std::string> & a)
   {
@@ -41,6 +52,7 @@ private:
   bool use_intra_process_comms_ = false;
   bool start_parameter_services_ = true;
   bool start_parameter_event_publisher_ = true;
+  bool enable_logger_service_ = false;
   std::vector<std::string> arguments_;
 };
 }  // namespace rclcpp

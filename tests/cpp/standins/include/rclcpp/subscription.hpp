@@ -39,6 +39,7 @@
 #include "rclcpp/qos.hpp"
 #include "rclcpp/visibility_control.hpp"
 #include "rosidl_runtime_cpp/traits.hpp"
+#include "rhi_fake/detail/distro.hpp"
 #include "rhi_fake/detail/function_traits.hpp"
 #include "rhi_fake/detail/ros_core.hpp"
 
@@ -193,9 +194,15 @@ struct subscription_callback_traits
   static constexpr CallbackKind kind = kind_of::value;
 };
 
+// Humble deprecates void(std::shared_ptr<MessageT>) callbacks; Iron and later accept them again.
+#if RHI_FAKE_RCLCPP_SHARED_PTR_CALLBACK_DEPRECATED
 template<typename MessageT>
 [[deprecated("use 'void(std::shared_ptr<const MessageT>)' instead")]]
 inline void shared_ptr_callback_is_deprecated() {}
+#else
+template<typename MessageT>
+inline void shared_ptr_callback_is_deprecated() {}
+#endif
 
 template<typename MessageT, typename AllocatorT, typename CallbackT, CallbackKind Kind>
 class SubscriptionImpl final : public rclcpp::Subscription<MessageT, AllocatorT>

@@ -1,6 +1,8 @@
-// rhi-gen test hooks: everything, plus reset_all(). Test code only.
+// rhi-gen test hooks: everything (hw facade, logs, plugins, ros, unitree), plus reset_all(). Test
+// code only.
 #pragma once
 
+#include "rhi_fake/hw.hpp"
 #include "rhi_fake/logs.hpp"
 #include "rhi_fake/plugins.hpp"
 #include "rhi_fake/ros.hpp"

@@ -1,4 +1,5 @@
 // expect: use of deleted function .*CommandInterface\(const hardware_interface::CommandInterface&\)
+// distros: humble
 // Humble deletes CommandInterface's copy constructor: vectors must be built by moving.
 #include <utility>
 #include <vector>

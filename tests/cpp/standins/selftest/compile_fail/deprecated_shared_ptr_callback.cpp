@@ -1,4 +1,5 @@
 // expect: is deprecated: use 'void\(std::shared_ptr<const MessageT>\)' instead
+// distros: humble
 // Humble deprecates void(std::shared_ptr<MessageT>) callbacks: -Werror makes it an error.
 #include <memory>
 #include <rclcpp/rclcpp.hpp>

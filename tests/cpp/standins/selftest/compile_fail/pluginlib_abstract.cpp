@@ -1,4 +1,5 @@
 // expect: is abstract
+// distros: humble
 // A driver that forgets to override a pure virtual (here write()) cannot be exported.
 #include <vector>
 #include <hardware_interface/system_interface.hpp>

@@ -1,4 +1,5 @@
 // expect: 'DEACTIVATE' is not a member
+// distros: humble
 // Humble's return_type has only OK and ERROR.
 #include <hardware_interface/types/hardware_interface_return_values.hpp>
 

@@ -1,4 +1,5 @@
 // expect: use of deleted function .*StateInterface::operator=
+// distros: humble
 // StateInterface is copyable but not assignable (its move constructor is user-declared).
 #include <vector>
 #include <hardware_interface/handle.hpp>

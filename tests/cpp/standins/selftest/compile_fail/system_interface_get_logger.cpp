@@ -1,4 +1,5 @@
 // expect: has no member named 'get_logger'
+// distros: humble
 // Humble's SystemInterface has no get_logger()/get_node()/get_clock().
 #include <string>
 #include <hardware_interface/system_interface.hpp>

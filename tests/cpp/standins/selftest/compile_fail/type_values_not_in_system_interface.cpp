@@ -1,4 +1,5 @@
 // expect: 'HW_IF_POSITION' is not a member
+// distros: humble
 // Humble's system_interface.hpp does not include hardware_interface_type_values.hpp.
 #include <string>
 #include <hardware_interface/system_interface.hpp>

@@ -19,10 +19,20 @@ struct PluginEntry
   std::function<std::shared_ptr<void>()> create;   // returns shared_ptr<Base> as shared_ptr<void>
 };
 
+// One <class name=".." type=".." base_class_type=".."> of a pluginlib plugin description.
+struct PluginDescription
+{
+  std::string lookup_name;  // e.g. "agibot/X2HardwareInterface" (what a <plugin> tag names)
+  std::string type;         // e.g. "agibot::X2HardwareInterface"
+  std::string base;         // e.g. "hardware_interface::SystemInterface"
+};
+
 struct PluginRegistry
 {
   std::mutex mutex;
   std::vector<PluginEntry> entries;
+  std::vector<PluginDescription> descriptions;
+  bool environment_loaded = false;  // RHI_FAKE_PLUGIN_XML read (see rhi_fake/plugins.hpp)
 };
 
 inline PluginRegistry & plugin_registry()

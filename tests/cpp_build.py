@@ -300,10 +300,23 @@ def yaml_joint_map(yaml_path: Path) -> dict[str, int]:
     return {str(name): int(index) for name, index in data["joint_map"].items()}
 
 
+def yaml_modes_and_gains(yaml_path: Path) -> tuple[dict[str, str], dict[str, tuple[float, float]]]:
+    """command_modes and default_gains exactly as the vendor YAML writes them."""
+    import yaml
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    modes = {str(k): str(v) for k, v in (data.get("command_modes") or {}).items()}
+    gains = {str(k): (float((v or {}).get("stiffness", 0.0)), float((v or {}).get("damping", 0.0)))
+             for k, v in (data.get("default_gains") or {}).items()}
+    return modes, gains
+
+
 def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     """robot_data.hpp for one robot (namespace rhi_data, see tests/cpp/harness/harness_common.hpp)."""
     model = loaded.model
     joint_map = yaml_joint_map(loaded.yaml_path)
+    yaml_modes, yaml_gains = yaml_modes_and_gains(loaded.yaml_path)
+    has_gains = model.transport != "generic_topics"  # sensor_msgs/JointState carries no gains
     by_name = {j.name: j for j in model.joints}
     assert set(joint_map) == set(by_name), f"{model.robot}: YAML joint_map and model joints differ"
     assert all(by_name[n].index == i for n, i in joint_map.items()), f"{model.robot}: model moved a joint"
@@ -346,18 +359,24 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr size_t kMotorCount = {model.motor_count};",
         f"inline constexpr bool kImuEnabled = {'true' if model.imu.enabled else 'false'};",
         f"inline constexpr char kImuName[] = {_c_string(model.imu.name)};",
+        f"inline constexpr bool kHasGains = {'true' if has_gains else 'false'};  // stiffness/damping travel",
+        "// mode: 0 position-commanded, 1 velocity-commanded (a continuous joint unless command_modes says",
+        "// otherwise); kp/kd: the YAML's default_gains (kp is 0 for a velocity-commanded joint)",
         "struct Joint { const char* name; size_t slot; size_t group; double lower; double upper; double velocity;"
-        " double effort; };",
+        " double effort; int mode; double kp; double kd; };",
         "inline constexpr Joint kJoints[] = {",
     ]
     for name, slot in joint_map.items():
         limits = by_name[name].limits
         lower = limits.lower if limits else None
         upper = limits.upper if limits else None
+        mode = yaml_modes.get(name, "velocity" if by_name[name].type == "continuous" else "position")
+        kp, kd = yaml_gains.get(name, (0.0, 0.0))
         lines.append(
             f"    {{{_c_string(name)}, {slot}, {group_of(slot)}, "
             f"{_c_double(-math.inf if lower is None else lower)}, {_c_double(upper)}, "
-            f"{_c_double(limits.velocity if limits else None)}, {_c_double(limits.effort if limits else None)}}},")
+            f"{_c_double(limits.velocity if limits else None)}, {_c_double(limits.effort if limits else None)}, "
+            f"{1 if mode == 'velocity' else 0}, {repr(float(kp) if mode == 'position' else 0.0)}, {repr(float(kd))}}},")
     lines += [
         "};",
         f"inline constexpr size_t kJointCount = {len(joint_map)};",

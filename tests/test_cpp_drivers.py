@@ -7,9 +7,9 @@ the package is rendered into a temporary folder, then:
   -std=c++17 -Wall -Wextra -Wpedantic -Werror; so does each robot's driver header;
 * the ros2_control description, expanded by xacro as a user includes it, lists exactly the YAML's
   mapped joints with their interfaces, the IMU sensor, and a plugin the plugin descriptor exports;
-* the harness itself compiles against every distro's stand-ins (rhi_fake/hw.hpp), the drivers
-  against the distro they target (DISTRO);
-* the driver is compiled with -Werror in three flavours (plain -O2, ASan+UBSan, TSan) and linked into
+* the driver and the harness (through rhi_fake/hw.hpp) are compiled against every distro's stand-ins
+  (MATRIX: plain -O2 on Humble, Jazzy, Kilted and Rolling/Lyrical; TSan on Humble, raw-pointer
+  interfaces; ASan+UBSan and TSan on Rolling, framework-owned handles) with -Werror and linked into
   tests/cpp/harness/driver_harness.cpp, which creates it through pluginlib's registry and checks, per
   section: interfaces, safety (the three layers, re-armed on re-activation), joint_map, imu, commands
   (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
@@ -31,21 +31,27 @@ from pathlib import Path
 
 import pytest
 
+from rhi_gen.transports import TRANSPORTS
 from tests import vendor_msgs
-from tests.cpp_build import (DISTROS, FLAVOURS, PACKAGE, WARNING_FLAGS, build_harness, compile_harness_object,
+from tests.cpp_build import (PACKAGE, WARNING_FLAGS, build_harness,
                              crc_header, expand_description, message_include_flags, plugin_types,
                              project_robot_labels, require_compiler, run_binary_retrying, run_parallel,
                              session_builder, session_reference_package, standin_flags, yaml_joint_map)
 
 ROBOTS = project_robot_labels()
 REPORT = Path(__file__).resolve().parent / ".cpp_report.txt"
-SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "crc", "parameters",
-                 "decimation", "allocations", "threads")
+SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes",
+                 "crc", "parameters", "decimation", "allocations", "threads")
 THREADS_MS = 300
 # The generated drivers target the Humble API today (rhi_gen/templates/driver/_ros2_control_api.j2);
 # the harness itself compiles on every distro (test_harness_compiles_on_every_distro). Add a distro
 # here once the templates support it: build_harness(..., distro=...) does the rest.
-DISTRO = "humble"
+# (distro, flavour) of every harness build: the plain flavour on every distro; the sanitizers on
+# Humble (interfaces over driver-owned doubles) and Rolling (framework-owned handles: the path of
+# Jazzy 4.34+, Kilted and Lyrical too).
+MATRIX = (("humble", "plain"), ("humble", "tsan"), ("jazzy", "plain"), ("kilted", "plain"),
+          ("rolling", "plain"), ("rolling", "asan_ubsan"), ("rolling", "tsan"))
+DISTRO = "humble"  # what the headers-alone checks compile against
 
 _TIMES: dict[str, float] = {}
 
@@ -60,19 +66,19 @@ def reference(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def harness_binaries(reference, tmp_path_factory):
-    """{(robot, flavour): (link result, [compile results])}, built in parallel, each once."""
+    """{(robot, distro, flavour): (link result, [compile results])}, built in parallel, each once."""
     builder = session_builder(tmp_path_factory)
-    jobs = [(b, flavour) for b in reference.builds for flavour in FLAVOURS
+    jobs = [(b, distro, flavour) for b in reference.builds for distro, flavour in MATRIX
             if not vendor_msgs.skip_reason(b.model.transport)]
     start = time.monotonic()
-    results = run_parallel(jobs, lambda job: build_harness(builder, *job, distro=DISTRO))
+    results = run_parallel(jobs, lambda job: build_harness(builder, job[0], job[2], distro=job[1]))
     _TIMES["build"] = time.monotonic() - start
-    return {(b.label, flavour): result for (b, flavour), result in zip(jobs, results)}
+    return {(b.label, distro, flavour): result for (b, distro, flavour), result in zip(jobs, results)}
 
 
 @pytest.fixture(scope="module")
 def harness_runs(harness_binaries):
-    """{(robot, flavour): HarnessRun} for every binary that linked; two at a time."""
+    """{(robot, distro, flavour): HarnessRun} for every binary that linked; two at a time."""
     linked = [(key, link.path) for key, (link, _) in harness_binaries.items() if link.ok]
     start = time.monotonic()
     runs = run_parallel(linked, lambda item: run_binary_retrying(item[1], [f"--threads-ms={THREADS_MS}"]), workers=2)
@@ -155,9 +161,12 @@ def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path)
     assert len(names) == len(set(names)), f"a joint is described twice: {names}"
     assert set(names) == set(joint_map), \
         f"description joints must be exactly the YAML's mapped joints: {sorted(set(names) ^ set(joint_map))}"
+    gains = ["stiffness", "damping"] if TRANSPORTS[b.model.transport].carries_gains else []
+    modes = {j.name: j.command_mode for j in b.model.joints}
     for j in d.joints:
-        assert [c for c, _ in j["command_interfaces"]] == ["position", "velocity", "stiffness", "damping",
-                                                          "effort"], j["name"]
+        expected = (["position", "velocity", *gains, "effort"] if modes[j["name"]] == "position"
+                    else ["velocity", *gains[1:], "effort"])  # a velocity joint: no position, no stiffness
+        assert [c for c, _ in j["command_interfaces"]] == expected, j["name"]
         assert j["state_interfaces"] == ["position", "velocity", "effort"], j["name"]
     if b.model.imu.enabled:
         assert [s["name"] for s in d.sensors] == [b.model.imu.name]
@@ -174,47 +183,33 @@ def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path)
 
 
 # ------------------------------------------------------------------------------------ compile
-@pytest.mark.parametrize("flavour", list(FLAVOURS))
+@pytest.mark.parametrize(("distro", "flavour"), MATRIX, ids=[f"{d}-{f}" for d, f in MATRIX])
 @pytest.mark.parametrize("label", ROBOTS)
-def test_driver_compiles_with_werror(harness_binaries, reference, label, flavour):
+def test_driver_compiles_with_werror(harness_binaries, reference, label, distro, flavour):
+    """-Wall -Wextra -Wpedantic -Werror on each distro: deprecated declarations are errors."""
     _compilable_robot(reference, label)
-    link, steps = harness_binaries[(label, flavour)]
+    link, steps = harness_binaries[(label, distro, flavour)]
     driver = steps[0]
-    assert driver.ok, (f"{label} driver does not compile ({flavour}, -Wall -Wextra -Werror):\n"
+    assert driver.ok, (f"{label} driver does not compile ({distro}, {flavour}, -Werror):\n"
                        f"{' '.join(driver.command)}\n{driver.stderr[:6000]}")
     for step in steps[1:]:
-        assert step.ok, f"{label} harness part does not compile ({flavour}):\n{step.stderr[:6000]}"
-    assert link.ok, f"{label} harness does not link ({flavour}):\n{link.stderr[:6000]}"
-
-
-@pytest.mark.parametrize("distro", [d for d in DISTROS if d != DISTRO])
-def test_harness_compiles_on_every_distro(reference, tmp_path_factory, distro):
-    """driver_harness.cpp (through rhi_fake/hw.hpp) compiles against every distro's stand-ins, one
-    robot per transport, whatever API the generated drivers target today."""
-    builder = session_builder(tmp_path_factory)
-    per_transport = {}
-    for b in reference.builds:
-        per_transport.setdefault(b.model.transport, b)
-    assert len(per_transport) == 4, sorted(per_transport)
-    results = run_parallel(list(per_transport.values()),
-                           lambda b: (b.label, compile_harness_object(builder, b, "plain", distro)))
-    failures = [f"{label}:\n{r.stderr[:4000]}" for label, r in results if not r.ok]
-    assert not failures, f"the harness does not compile on {distro}:\n" + "\n".join(failures)
+        assert step.ok, f"{label} harness part does not compile ({distro}, {flavour}):\n{step.stderr[:6000]}"
+    assert link.ok, f"{label} harness does not link ({distro}, {flavour}):\n{link.stderr[:6000]}"
 
 
 # ------------------------------------------------------------------------------------ run
-@pytest.mark.parametrize("flavour", list(FLAVOURS))
+@pytest.mark.parametrize(("distro", "flavour"), MATRIX, ids=[f"{d}-{f}" for d, f in MATRIX])
 @pytest.mark.parametrize("label", ROBOTS)
-def test_driver_against_simulated_robot(harness_runs, harness_binaries, reference, label, flavour):
+def test_driver_against_simulated_robot(harness_runs, harness_binaries, reference, label, distro, flavour):
     _compilable_robot(reference, label)
-    link, _ = harness_binaries[(label, flavour)]
-    assert link.ok, f"{label} ({flavour}) did not build: see test_driver_compiles_with_werror"
-    run = harness_runs[(label, flavour)]
+    link, _ = harness_binaries[(label, distro, flavour)]
+    assert link.ok, f"{label} ({distro}, {flavour}) did not build: see test_driver_compiles_with_werror"
+    run = harness_runs[(label, distro, flavour)]
     reports = run.sanitizer_reports()
     assert not reports, f"{label} ({flavour}): sanitizer reports:\n" + "\n".join(reports[:20]) + \
         f"\n{run.stderr[-6000:]}"
     assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{label} ({flavour}): {run.describe()}"
-    expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "parameters",
+    expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes", "parameters",
                 "decimation", "allocations", "threads"}
     if _robot(reference, label).model.transport == "unitree_dds":
         expected.add("crc")
@@ -222,11 +217,12 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 
 
+@pytest.mark.parametrize("distro", ["humble", "jazzy", "kilted", "rolling"])
 @pytest.mark.parametrize("label", ROBOTS)
-def test_hot_paths_allocate_nothing(harness_runs, reference, label):
+def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
     _compilable_robot(reference, label)
-    run = harness_runs.get((label, "plain"))
-    assert run is not None, f"{label}: plain harness did not build"
+    run = harness_runs.get((label, distro, "plain"))
+    assert run is not None, f"{label}: plain harness did not build for {distro}"
     m = re.search(r"^allocations over (\d+) cycles: state callback (\d+), IMU callback (\d+), read\(\) (\d+), "
                   r"write\(\) (\d+), command writer (\d+)$", run.stdout, re.M)
     assert m, f"{label}: no allocation line in the harness output:\n{run.stdout[-3000:]}"
@@ -235,11 +231,12 @@ def test_hot_paths_allocate_nothing(harness_runs, reference, label):
     assert all(v == 0 for v in counts.values()), f"{label}: heap allocations after activation: {counts}"
 
 
-@pytest.mark.parametrize("flavour", ["tsan", "asan_ubsan"])
+@pytest.mark.parametrize(("distro", "flavour"), [(d, f) for d, f in MATRIX if f != "plain"],
+                         ids=[f"{d}-{f}" for d, f in MATRIX if f != "plain"])
 @pytest.mark.parametrize("label", ROBOTS)
-def test_no_torn_frames_with_real_threads(harness_runs, reference, label, flavour):
+def test_no_torn_frames_with_real_threads(harness_runs, reference, label, distro, flavour):
     _compilable_robot(reference, label)
-    run = harness_runs.get((label, flavour))
+    run = harness_runs.get((label, distro, flavour))
     assert run is not None, f"{label}: {flavour} harness did not build"
     m = re.search(r"torn states (\d+), torn commands (\d+), bad CRCs (\d+)", run.stdout)
     assert m, f"{label} ({flavour}): the threaded scenario did not report:\n{run.stdout[-3000:]}"
@@ -257,19 +254,19 @@ def test_report(harness_runs, harness_binaries, reference, capsys):
         if vendor_msgs.skip_reason(b.model.transport):
             lines.append(f"  SKIPPED: {vendor_msgs.skip_reason(b.model.transport)}")
             continue
-        for flavour in FLAVOURS:
-            run = harness_runs.get((label, flavour))
-            link, steps = harness_binaries[(label, flavour)]
+        for distro, flavour in MATRIX:
+            run = harness_runs.get((label, distro, flavour))
+            link, steps = harness_binaries[(label, distro, flavour)]
             compile_s = sum(s.seconds for s in steps) + link.seconds
             if run is None:
-                lines.append(f"  {flavour:10s} BUILD FAILED")
+                lines.append(f"  {distro:8s} {flavour:10s} BUILD FAILED")
                 continue
             sections = ", ".join(f"{name} {run.sections[name][0]}" + (f"/{run.sections[name][1]} FAILED"
                                                                         if run.sections[name][1] else "")
                                  for name in SECTION_ORDER if name in run.sections)
             sanitizer = "no sanitizer reports" if not run.sanitizer_reports() else \
                 f"{len(run.sanitizer_reports())} SANITIZER REPORT LINES"
-            lines.append(f"  {flavour:10s} exit {run.returncode}: {run.passed} passed, {run.failed} failed "
+            lines.append(f"  {distro:8s} {flavour:10s} exit {run.returncode}: {run.passed} passed, {run.failed} failed "
                          f"({sanitizer}; compile {compile_s:.1f}s, run {run.seconds:.1f}s)")
             lines.append(f"             {sections}")
             for prefix in ("allocations over", "threads:", "decimation"):

@@ -56,7 +56,13 @@ MUTATIONS = (
              r"^[ \t]*if \(!state_copied_\.load\(std::memory_order_relaxed\)\) \{\n[ \t]*return false;\n"
              r"[ \t]*\}\n", "", ("safety",)),
     Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
-             "common/driver_core.hpp.j2", r"^[ \t]*joint\.posDes_ = joint\.pos_;.*\n", "", ("safety",)),
+             "common/driver_core.hpp.j2", r"^[ \t]*joint\.posDes_ = joint\.pos_;  // target = measured.*\n", "", ("safety",)),
+    Mutation("default_gains_ignored", "a position-only controller gets zero stiffness instead of the default",
+             "common/driver_core.hpp.j2", r"\(claims & kClaimPosition\) != 0U \? default_stiffness_\[i\] : 0\.0",
+             "0.0", ("command_modes",), robots=("unitree/g1",)),
+    Mutation("velocity_joint_position_target", "a velocity-commanded joint is sent the stale position target",
+             "common/driver_core.hpp.j2", r"(limits\.position_max\) : )joint\.pos_;", r"\g<1>joint.posDes_;",
+             ("command_modes",), robots=("acme/scara",)),
     Mutation("joint_map_swap", "the robot's joint table swaps the SDK slots of motors 0 and 1",
              "robot/driver.cpp.j2", r"(\{\{ joint\.name \| cpp_string \}\}, )\{\{ joint\.index \}\}",
              r"\1{{ (1 - joint.index) if joint.index < 2 else joint.index }}", ("joint_map",)),
@@ -124,7 +130,8 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
     start = time.monotonic()
     templates = _mutated_templates(root, mutation)
     robots = mutation.robots if mutation else ROBOTS
-    package = render_test_package(root, only=robots or ROBOTS[:1], template_dir=templates, extra_robots=False)
+    package = render_test_package(root, only=robots or ROBOTS[:1], template_dir=templates,
+                                  extra_robots=any(label not in ROBOTS for label in robots))  # the harness's test robots
     outcomes = []
     if mutation is None or mutation.data_buffer:
         link = compile_data_buffer_stress(builder, package.package_dir, "plain")

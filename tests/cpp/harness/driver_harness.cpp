@@ -83,6 +83,34 @@ struct Rig {
   bool active{false};
 };
 
+// The controller manager switching controllers: `start` claims, `stop` releases (prepare, then
+// perform, as ros2_control does).
+void switch_claims(Rig& rig, const std::vector<std::string>& start, const std::vector<std::string>& stop) {
+  CHECK(rig.hw->prepare_command_mode_switch(start, stop) == hardware_interface::return_type::OK,
+        "prepare_command_mode_switch accepts the switch");
+  CHECK(rig.hw->perform_command_mode_switch(start, stop) == hardware_interface::return_type::OK,
+        "perform_command_mode_switch accepts the switch");
+}
+
+// "<joint>/<interface>" of every joint for the interfaces `pick` selects among the joint's own.
+template <typename Pick>
+std::vector<std::string> interface_names(Pick pick) {
+  std::vector<std::string> out;
+  for (size_t k = 0; k < kJointCount; ++k) {
+    for (const std::string& iface : joint_commands(k)) {
+      if (pick(k, iface)) {
+        out.push_back(std::string(kJoints[k].name) + "/" + iface);
+      }
+    }
+  }
+  return out;
+}
+
+// A controller that claims every command interface of every joint (full MIT-style control).
+void claim_everything(Rig& rig) {
+  switch_claims(rig, interface_names([](size_t, const std::string&) { return true; }), {});
+}
+
 std::shared_ptr<SystemInterface> create_driver() {
   try {
     return rhi_fake::plugins::create<SystemInterface>(kPluginType);
@@ -123,6 +151,9 @@ bool setup(Rig& rig, const hardware_interface::HardwareInfo& info) {
   rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
   rig.ifs.index();
   CHECK(rig.ifs.complete(), "every expected interface is exported");
+  if (rig.ifs.complete()) {
+    claim_everything(rig);  // the sections below play a controller that commands everything
+  }
   return rig.ifs.complete();
 }
 
@@ -235,9 +266,18 @@ void test_interfaces() {
       CHECK_EQ(count_of(state_count, std::string(j.name) + "/" + iface), 1,
                "state interface %s/%s exported exactly once", j.name, iface);
     }
+  }
+  size_t expected_commands = 0;
+  for (size_t k = 0; k < kJointCount; ++k) {
+    const Joint& j = kJoints[k];
+    const std::vector<std::string> wanted = joint_commands(k);
+    expected_commands += wanted.size();
     for (const char* iface : kJointCommands) {
-      CHECK_EQ(count_of(command_count, std::string(j.name) + "/" + iface), 1,
-               "command interface %s/%s exported exactly once", j.name, iface);
+      const bool want = std::find(wanted.begin(), wanted.end(), iface) != wanted.end();
+      CHECK_EQ(count_of(command_count, std::string(j.name) + "/" + iface), want ? 1 : 0,
+               "command interface %s/%s exported %s (%s-commanded joint%s)", j.name, iface,
+               want ? "exactly once" : "never", j.mode == 0 ? "position" : "velocity",
+               kHasGains ? "" : ", transport without gains");
     }
   }
   if (kImuEnabled) {
@@ -249,7 +289,7 @@ void test_interfaces() {
   // Nothing else: the totals equal the expected sets.
   CHECK_EQ(states.size(), 3 * kJointCount + (kImuEnabled ? kImuInterfaces.size() : 0U),
            "number of state interfaces (3 per mapped joint + IMU)");
-  CHECK_EQ(commands.size(), 5 * kJointCount, "number of command interfaces (5 per mapped joint)");
+  CHECK_EQ(commands.size(), expected_commands, "number of command interfaces (per joint mode)");
   CHECK_EQ(state_count.size(), states.size(), "state interface names are unique");
   CHECK_EQ(command_count.size(), commands.size(), "command interface names are unique");
   bool readable = true;
@@ -354,11 +394,17 @@ void test_main_scenario() {
     hw.write(kTime, kPeriod);
     for (size_t k = 0; k < kJointCount; ++k) {
       const Joint& j = kJoints[k];
-      CHECK_EQ(ifs.cpos[k]->get(), s0.q[j.slot], "layer 3: first write() sets %s/position to the measured one",
-               j.name);
+      if (ifs.cpos[k]) {
+        CHECK_EQ(ifs.cpos[k]->get(), s0.q[j.slot], "layer 3: first write() sets %s/position to the measured one",
+                 j.name);
+      }
       CHECK_EQ(ifs.cvel[k]->get(), 0.0, "layer 3: first write() zeroes %s/velocity", j.name);
-      CHECK_EQ(ifs.ckp[k]->get(), 0.0, "layer 3: first write() zeroes %s/stiffness", j.name);
-      CHECK_EQ(ifs.ckd[k]->get(), 0.0, "layer 3: first write() zeroes %s/damping", j.name);
+      if (ifs.ckp[k]) {
+        CHECK_EQ(ifs.ckp[k]->get(), 0.0, "layer 3: first write() zeroes %s/stiffness", j.name);
+      }
+      if (ifs.ckd[k]) {
+        CHECK_EQ(ifs.ckd[k]->get(), 0.0, "layer 3: first write() zeroes %s/damping", j.name);
+      }
       CHECK_EQ(ifs.cff[k]->get(), 0.0, "layer 3: first write() zeroes %s/effort", j.name);
     }
     t.tick_writer();
@@ -418,14 +464,21 @@ void test_main_scenario() {
       for (const Joint& j : kJoints) {
         const size_t s = j.slot;
         CHECK(c.present[s], "%s: slot %zu is in the command", j.name, s);
-        CHECK_EQ(c.q[s], sdk(cmd.q[s]), "%s/position -> SDK slot %zu as %s", j.name, s, kFloatName);
+        if (j.mode == 0) {
+          CHECK_EQ(c.q[s], sdk(cmd.q[s]), "%s/position -> SDK slot %zu as %s", j.name, s, kFloatName);
+        } else {
+          const size_t k = static_cast<size_t>(&j - kJoints);
+          CHECK_EQ(c.q[s], sdk(ifs.pos[k]->get()), "velocity-commanded %s: position target = measured position",
+                   j.name);
+        }
         CHECK_EQ(c.dq[s], sdk(cmd.dq[s]), "%s/velocity -> SDK slot %zu as %s", j.name, s, kFloatName);
         CHECK_EQ(c.tau[s], sdk(cmd.ff[s]), "%s/effort -> SDK slot %zu as %s", j.name, s, kFloatName);
         if (c.has_gains) {
-          CHECK_EQ(c.kp[s], sdk(cmd.kp[s]), "%s/stiffness -> SDK slot %zu as %s", j.name, s, kFloatName);
+          CHECK_EQ(c.kp[s], j.mode == 0 ? sdk(cmd.kp[s]) : 0.0, "%s/stiffness -> SDK slot %zu as %s (0 when "
+                   "velocity-commanded)", j.name, s, kFloatName);
           CHECK_EQ(c.kd[s], sdk(cmd.kd[s]), "%s/damping -> SDK slot %zu as %s", j.name, s, kFloatName);
         }
-        rounded += static_cast<double>(static_cast<float>(cmd.q[s])) != cmd.q[s] ? 1U : 0U;
+        rounded += static_cast<double>(static_cast<float>(cmd.q[s])) != cmd.q[s] && j.mode == 0 ? 1U : 0U;
       }
       // The values are chosen so that float rounding is visible: a double SDK that received
       // float-rounded values fails the exact checks above, a float SDK must show the rounding.
@@ -469,12 +522,14 @@ void test_main_scenario() {
     t.tick_writer();
     CommandFrame good;
     last_command(t, good, "before NaN");
-    cmd.q[j0.slot] = std::numeric_limits<double>::quiet_NaN();
+    // the target the joint's mode commands: position, or velocity for a velocity-commanded joint
+    (j0.mode == 0 ? cmd.q : cmd.dq)[j0.slot] = std::numeric_limits<double>::quiet_NaN();
     apply_command(ifs, cmd);
     hw.write(kTime, kPeriod);
     t.tick_writer();
     if (last_command(t, c, "NaN command")) {
-      CHECK(std::isfinite(c.q[j0.slot]), "NaN position target of %s is not sent", j0.name);
+      CHECK(std::isfinite(c.q[j0.slot]) && std::isfinite(c.dq[j0.slot]), "NaN target of %s is not sent",
+            j0.name);
       CHECK_EQ(c.q[j0.slot], good.q[j0.slot], "%s keeps its last safe position target", j0.name);
       CHECK_EQ(c.dq[j0.slot], 0.0, "%s: no velocity target while held", j0.name);
       CHECK_EQ(c.tau[j0.slot], 0.0, "%s: no feed-forward while held", j0.name);
@@ -482,15 +537,17 @@ void test_main_scenario() {
         CHECK_EQ(c.kp[j0.slot], 0.0, "%s: stiffness 0 while held", j0.name);
       }
       for (size_t k = 1; k < kJointCount; ++k) {
-        CHECK_EQ(c.q[kJoints[k].slot], sdk(cmd.q[kJoints[k].slot]), "%s unaffected by %s's NaN", kJoints[k].name,
-                 j0.name);
+        if (kJoints[k].mode == 0) {
+          CHECK_EQ(c.q[kJoints[k].slot], sdk(cmd.q[kJoints[k].slot]), "%s unaffected by %s's NaN", kJoints[k].name,
+                   j0.name);
+        }
       }
     }
     // Position targets beyond the URDF limits are clamped.
     cmd = distinct_command(4);
     size_t clamped = 0;
     for (const Joint& j : kJoints) {
-      if (std::isfinite(j.upper)) {
+      if (std::isfinite(j.upper) && j.mode == 0) {
         cmd.q[j.slot] = j.upper + 1.0;
         ++clamped;
       }
@@ -500,7 +557,7 @@ void test_main_scenario() {
     t.tick_writer();
     if (clamped > 0 && last_command(t, c, "clamp")) {
       for (const Joint& j : kJoints) {
-        if (std::isfinite(j.upper)) {
+        if (std::isfinite(j.upper) && j.mode == 0) {
           CHECK_EQ(c.q[j.slot], sdk(j.upper), "%s position target clamped to its URDF upper limit", j.name);
         }
       }
@@ -525,9 +582,9 @@ void test_main_scenario() {
     hw.write(kTime, kPeriod);
     t.tick_writer();
     if (last_command(t, c, "after stale")) {
-      CHECK_EQ(c.q[j0.slot], sdk(cmd.q[j0.slot]), "commands flow again once state is back");
+      CHECK_EQ(c.dq[j0.slot], sdk(cmd.dq[j0.slot]), "commands flow again once state is back");
       if (c.has_gains) {
-        CHECK_EQ(c.kp[j0.slot], sdk(cmd.kp[j0.slot]), "stiffness flows again once state is back");
+        CHECK_EQ(c.kd[j0.slot], sdk(cmd.kd[j0.slot]), "damping flows again once state is back");
       }
     }
   }
@@ -613,6 +670,132 @@ void test_main_scenario() {
   }
 
   {
+    rhi_check::Section section("command_modes");
+    t.deliver_state(s0);
+    hw.read(kTime, kPeriod);
+    const auto everything = interface_names([](size_t, const std::string&) { return true; });
+    const auto targets = interface_names([](size_t k, const std::string& i) {
+      return i == (kJoints[k].mode == 0 ? "position" : "velocity");
+    });
+    const auto gains = interface_names([](size_t, const std::string& i) { return i == "stiffness" || i == "damping"; });
+    // After a write() and a writer cycle: the command the robot received.
+    const auto sent = [&](const char* what) {
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+      return last_command(t, c, what);
+    };
+    // kp / kd a joint must receive: the controller's when claimed, else the default gains while
+    // its position (or velocity) is claimed, else nothing.
+    const auto check_gains = [&](const char* what, bool targets_claimed, bool gains_claimed,
+                                 const ControllerCommand* cmd) {
+      if (!c.has_gains) {
+        return;
+      }
+      for (const Joint& j : kJoints) {
+        const size_t s = j.slot;
+        const double kp = gains_claimed && cmd ? sdk(cmd->kp[s]) : targets_claimed ? sdk(j.kp) : 0.0;
+        const double kd = gains_claimed && cmd ? sdk(cmd->kd[s]) : targets_claimed ? sdk(j.kd) : 0.0;
+        CHECK_EQ(c.kp[s], j.mode == 0 ? kp : 0.0, "%s: %s stiffness", what, j.name);
+        CHECK_EQ(c.kd[s], kd, "%s: %s damping", what, j.name);
+      }
+    };
+    const auto check_at_measured = [&](const char* what) {
+      for (size_t k = 0; k < kJointCount; ++k) {
+        const Joint& j = kJoints[k];
+        // what read() shows (a decimated stream may not have shown s0)
+        CHECK_EQ(c.q[j.slot], sdk(ifs.pos[k]->get()), "%s: %s target = measured position (no jump)", what,
+                 j.name);
+        CHECK_EQ(c.dq[j.slot], 0.0, "%s: %s no velocity target", what, j.name);
+        CHECK_EQ(c.tau[j.slot], 0.0, "%s: %s no feed-forward", what, j.name);
+      }
+    };
+
+    // No controller: nothing is claimed, so the robot is limp whatever the interfaces hold.
+    switch_claims(rig, {}, everything);
+    apply_command(ifs, distinct_command(6));
+    if (sent("nothing claimed")) {
+      check_at_measured("nothing claimed");
+      check_gains("nothing claimed", false, false, nullptr);
+    }
+
+    // A position-only controller (velocity for wheels): it starts from the measured position,
+    // and the default gains make it move the robot.
+    switch_claims(rig, targets, {});
+    if (sent("position-only switch")) {
+      check_at_measured("position-only controller, first cycle");
+      check_gains("position-only controller, first cycle", true, false, nullptr);
+    }
+    const ControllerCommand cmd7 = distinct_command(7);
+    apply_command(ifs, cmd7);
+    if (sent("position-only command")) {
+      for (const Joint& j : kJoints) {
+        const size_t s = j.slot;
+        if (j.mode == 0) {
+          CHECK_EQ(c.q[s], sdk(cmd7.q[s]), "position-only: %s target", j.name);
+          CHECK_EQ(c.dq[s], 0.0, "position-only: %s unclaimed velocity is not sent", j.name);
+        } else {
+          CHECK_EQ(c.dq[s], sdk(cmd7.dq[s]), "velocity-only: %s velocity target", j.name);
+        }
+        CHECK_EQ(c.tau[s], 0.0, "position-only: %s unclaimed effort is not sent", j.name);
+      }
+      check_gains("position-only controller", true, false, &cmd7);
+    }
+    // The robot moves: a velocity-commanded joint goes on reporting where it is, never the
+    // position it had when its controller started.
+    for (int code : {9, 10}) {  // two frames: a decimated stream shows one of them
+      t.deliver_state(distinct_state(code));
+      hw.read(kTime, kPeriod);
+    }
+    if (sent("velocity joints after the robot moved")) {
+      for (size_t k = 0; k < kJointCount; ++k) {
+        if (kJoints[k].mode != 0) {
+          CHECK_EQ(c.q[kJoints[k].slot], sdk(ifs.pos[k]->get()), "velocity joint %s: position = measured now",
+                   kJoints[k].name);
+        }
+      }
+    }
+
+    if (kHasGains) {
+      // A controller that also claims the gains: its values apply (from the defaults on).
+      switch_claims(rig, gains, {});
+      if (sent("gains claimed")) {
+        check_gains("gains claimed, first cycle", true, false, nullptr);
+      }
+      const ControllerCommand cmd8 = distinct_command(8);
+      apply_command(ifs, cmd8);
+      if (sent("gains commanded")) {
+        check_gains("gains claimed", true, true, &cmd8);
+      }
+      // Back to position-only: the previous controller's gains are not left behind...
+      switch_claims(rig, {}, gains);
+      apply_command(ifs, cmd8);
+      if (sent("gains released")) {
+        check_gains("gains released", true, false, nullptr);
+      }
+      // ... nor picked up by the next controller that claims them.
+      switch_claims(rig, gains, {});
+      if (sent("gains claimed again")) {
+        check_gains("gains claimed again, first cycle", true, false, nullptr);
+      }
+    }
+    // A prepared switch that is never performed changes nothing.
+    CHECK(hw.prepare_command_mode_switch({}, everything) == hardware_interface::return_type::OK,
+          "prepare_command_mode_switch of an aborted switch");
+    apply_command(ifs, cmd7);
+    if (sent("aborted switch")) {
+      for (const Joint& j : kJoints) {
+        if (j.mode == 0) {
+          CHECK_EQ(c.q[j.slot], sdk(cmd7.q[j.slot]), "aborted switch: %s still commanded", j.name);
+        }
+      }
+    }
+    // Interfaces of other components (the controller manager may pass them) are ignored.
+    switch_claims(rig, {"rhi_test_other_robot/position", "no_separator"}, {});
+    claim_everything(rig);
+    hw.write(kTime, kPeriod);
+  }
+
+  {
     rhi_check::Section section("safety");
     // Re-activation re-arms all three layers: the robot may have moved meanwhile.
     deactivate(rig);
@@ -646,6 +829,20 @@ void test_main_scenario() {
     t.tick_writer();
     if (last_command(t, c, "re-activation layer 3")) {
       check_hold(c, s1, "layer 3 after re-activation (state not yet read)");
+    }
+    // The controllers kept their claims: no mode switch seeds the command, layer 3 alone must.
+    hw.read(kTime, kPeriod);
+    apply_command(ifs, bogus);
+    hw.write(kTime, kPeriod);
+    for (size_t k = 0; k < kJointCount; ++k) {
+      if (ifs.cpos[k]) {
+        CHECK_EQ(ifs.cpos[k]->get(), s1.q[kJoints[k].slot],
+                 "layer 3 after re-activation: first write() sets %s/position to the measured one", kJoints[k].name);
+      }
+    }
+    t.tick_writer();
+    if (last_command(t, c, "re-activation first write")) {
+      check_hold(c, s1, "layer 3 after re-activation (first write() after read(), claims unchanged)");
     }
   }
   teardown(rig);
@@ -938,10 +1135,12 @@ void test_crc_functions() {
 // timers, a producer thread delivering state frames, the controller loop on this thread and a
 // monitor thread reading what the robot received. Every frame encodes one code in every joint's
 // position; a frame mixing codes within one consistency group is torn.
+// In a command (`present` given) a velocity-commanded joint carries its measured position, not a
+// code: it is left out.
 bool consistent_group(const std::array<double, N>& q, const std::array<bool, N>* present, size_t group, int* code) {
   int first = -1;
   for (const Joint& j : kJoints) {
-    if (j.group != group || !position_range(j).usable()) {
+    if (j.group != group || !position_range(j).usable() || (present != nullptr && j.mode != 0)) {
       continue;
     }
     if (present != nullptr && !(*present)[j.slot]) {

@@ -187,6 +187,18 @@ constexpr std::array<const char*, 3> kJointStates = {"position", "velocity", "ef
 constexpr std::array<const char*, 5> kJointCommands = {"position", "velocity", "stiffness", "damping",
                                                        "effort"};
 
+// The command interfaces joint k exports (its mode, and whether the transport carries gains).
+inline std::vector<std::string> joint_commands(size_t k) {
+  std::vector<std::string> out;
+  for (const char* name : kJointCommands) {
+    const std::string n = name;
+    if ((n == "position" || n == "stiffness") && kJoints[k].mode != 0) continue;
+    if ((n == "stiffness" || n == "damping") && !kHasGains) continue;
+    out.push_back(n);
+  }
+  return out;
+}
+
 struct Interfaces {
   rhi_fake::hw::Exported exported;  // what the driver exported, in its order
   // per kJoints entry (nullptr when missing)
@@ -235,9 +247,17 @@ struct Interfaces {
     }
   }
 
+  // Every interface the joint's command mode and the transport call for, and no other: a
+  // velocity-commanded joint has no position or stiffness command, a transport without gains no
+  // stiffness or damping.
   bool complete() const {
     for (size_t k = 0; k < kJointCount; ++k) {
-      if (!pos[k] || !vel[k] || !eff[k] || !cpos[k] || !cvel[k] || !ckp[k] || !ckd[k] || !cff[k]) {
+      const bool position_mode = kJoints[k].mode == 0;
+      if (!pos[k] || !vel[k] || !eff[k] || !cvel[k] || !cff[k]) {
+        return false;
+      }
+      if ((cpos[k] != nullptr) != position_mode || (ckp[k] != nullptr) != (position_mode && kHasGains) ||
+          (ckd[k] != nullptr) != kHasGains) {
         return false;
       }
     }

@@ -312,15 +312,12 @@ public:
   }
 
   // ---------------------------------------------------------------- command mode switches
-  // Which command interfaces of a joint active controllers claim (bits of Claim).
-  enum Claim : uint8_t
-  {
-    kClaimPosition = 1U << 0,
-    kClaimVelocity = 1U << 1,
-    kClaimEffort = 1U << 2,
-    kClaimStiffness = 1U << 3,
-    kClaimDamping = 1U << 4,
-  };
+  // Which command interfaces of a joint active controllers claim: one bit each.
+  static constexpr uint8_t kClaimPosition = 1U << 0;
+  static constexpr uint8_t kClaimVelocity = 1U << 1;
+  static constexpr uint8_t kClaimEffort = 1U << 2;
+  static constexpr uint8_t kClaimStiffness = 1U << 3;
+  static constexpr uint8_t kClaimDamping = 1U << 4;
 
   // prepare_command_mode_switch (controller manager, non-real-time): the claims after starting
   // and stopping the given "<joint>/<interface>" names; names of other components are ignored.
@@ -356,8 +353,8 @@ public:
   {
     size_t count = 0;
     for (const size_t slot : mapped_slots_) {
-      count += (slot_modes_[slot] == CommandMode::kPosition && default_stiffness_[slot] <
-        = 0.0) ? 1U : 0U;
+      const bool position = slot_modes_[slot] == CommandMode::kPosition;
+      count += (position && default_stiffness_[slot] <= 0.0) ? 1U : 0U;
     }
     return count;
   }
@@ -404,7 +401,8 @@ public:
     if (!state_copied_.load(std::memory_order_relaxed)) {
       return false;
     }
-    bool rewritten = false;
+    // A mode switch first, so that the safe start below has the last word on a first cycle.
+    bool rewritten = applyClaimChanges();
     if (!command_initialized_.load(std::memory_order_relaxed)) {
       for (MotorData & joint : joint_data_) {
         joint.posDes_ = joint.pos_;  // target = measured position
@@ -417,7 +415,6 @@ public:
       rewritten = true;
       RCLCPP_INFO(logger_, "command initialized to the measured position with zero gains");
     }
-    rewritten = applyClaimChanges() || rewritten;
     for (size_t i = 0; i < N; ++i) {
       const MotorData & joint = joint_data_[i];
       const SlotLimits & limits = slot_limits_[i];

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 
@@ -40,7 +41,8 @@ struct LogCore
   LogSlot ring[kLogRingSize];
   std::uint64_t next_seq = 1;                   // under mutex
   std::uint64_t counts[6] = {0, 0, 0, 0, 0, 0};  // index severity/10, under mutex
-  std::atomic<bool> echo{false};
+  // RHI_FAKE_LOG_ECHO=1 prints every line to stderr, as rcutils' console output would.
+  std::atomic<bool> echo{std::getenv("RHI_FAKE_LOG_ECHO") != nullptr};
 };
 
 inline LogCore & log_core()

@@ -250,12 +250,13 @@ def inspect(urdf: Annotated[Path, typer.Option(help="URDF or .xacro file.")],
             xacro_arg: XacroArgOpt = None,
             package_path: PackagePathOpt = None) -> None:
     """Show actuated joints, types, limits, mimic joints and the suggested joint map."""
+    from .inputs import wording
     from .inputs.inspect_report import inspect_text
     from .inputs.urdf_loader import load_urdf
 
     robot_model = load_urdf(urdf, xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
                             package_paths={k: Path(v) for k, v in _parse_pairs(package_path, "--package-path").items()},
-                            display_path=str(urdf))
+                            display_path=str(urdf), wording=wording.CLI)
     sys.stdout.write(inspect_text(robot_model, vendor=vendor, robot=robot))
 
 

@@ -195,7 +195,7 @@ def test_new_with_a_missing_urdf(tmp_path):
 def test_missing_xacro_include(tmp_path):
     xacro = HOSTILE / "missing_include.urdf.xacro"
     new_rejected(tmp_path / "proj", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
-                 file=str(xacro), words=("cannot open", "arm_macros.xacro", "xacro:include"))
+                 file=str(xacro), line=3, words=("cannot open", "arm_macros.xacro", "xacro:include"))
 
 
 def test_generate_without_robots(tmp_path):
@@ -217,14 +217,14 @@ def test_generate_an_unknown_robot(project):
 def test_missing_xacro_arg_through_generate(project):
     shutil.copy(HOSTILE / "needs_arg.urdf.xacro", project / "robots/acme/arm.urdf.xacro")
     edit_yaml(project, "urdf: arm.urdf", "urdf: arm.urdf.xacro")
-    generate_rejected(project, file="robots/acme/arm.urdf.xacro",
+    generate_rejected(project, file="robots/acme/arm.urdf.xacro", line=4,
                       words=("xacro arg 'prefix' is not set", "xacro_args: {prefix: <value>}"))
 
 
 def test_missing_xacro_arg_through_new(tmp_path):
     xacro = HOSTILE / "needs_arg.urdf.xacro"
     new_rejected(tmp_path / "proj", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
-                 file=str(xacro), words=("xacro arg 'prefix' is not set",))
+                 file=str(xacro), line=4, words=("xacro arg 'prefix' is not set", "--xacro-arg prefix=<value>"))
     # the fix works: given the arg, the same file generates
     result = run_cli("new", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
                      "--xacro-arg", "prefix=left_", "--project", tmp_path / "proj")

@@ -285,26 +285,27 @@ def test_xacro_expansions_in_parallel_threads_do_not_mix():
 
 XACRO_ERRORS = [
     # (fixture, package_paths, args, shown file, line, substrings)
-    ("unknown_pkg.urdf.xacro", {"mypkg": MYPKG}, {}, "robots/unknown_pkg.urdf.xacro", None,
+    ("unknown_pkg.urdf.xacro", {"mypkg": MYPKG}, {}, "robots/unknown_pkg.urdf.xacro", 3,  # the $(find) line
      ["unknown package 'nosuchpkg'", "add package_paths: {nosuchpkg: <dir>} to the vendor YAML"]),
-    ("needs_arg.urdf.xacro", {}, {}, "robots/needs_arg.urdf.xacro", None,
+    ("needs_arg.urdf.xacro", {}, {}, "robots/needs_arg.urdf.xacro", 3,  # the $(arg) line
      ["xacro arg 'base_name' is not set", "xacro_args: {base_name: <value>}"]),
     ("broken_include.urdf.xacro", {}, {}, "robots/parts/broken_part.xacro", 4,
      ["malformed XML: mismatched tag"]),
-    ("missing_include.urdf.xacro", {}, {}, "robots/missing_include.urdf.xacro", None,
+    ("missing_include.urdf.xacro", {}, {}, "robots/missing_include.urdf.xacro", 3,  # the <xacro:include> line
      ["cannot open robots/parts/does_not_exist.xacro", "No such file"]),
-    ("package_url.urdf.xacro", {}, {}, "robots/package_url.urdf.xacro", None,
-     ["package://mypkg/urdf/leg.xacro", "$(find pkg)"]),
+    ("package_url.urdf.xacro", {}, {}, "robots/package_url.urdf.xacro", 3,
+     ["package://mypkg/urdf/leg.xacro", "write $(find mypkg)/urdf/leg.xacro instead",
+      "package_paths: {mypkg: <dir>}"]),
     ("unknown_macro.urdf.xacro", {}, {}, "robots/unknown_macro.urdf.xacro", None,
      ["unknown macro name: xacro:no_such_macro"]),
     ("malformed_top.urdf.xacro", {}, {}, "robots/malformed_top.urdf.xacro", 4,
      ["malformed XML: Opening and ending tag mismatch"]),
     ("duplicate_after_expansion.urdf.xacro", {}, {}, "robots/duplicate_after_expansion.urdf.xacro",
      13, ["duplicate link name 'left_wheel'", "xacro-expanded"]),
-    ("robot.urdf.xacro", {}, {}, "robots/robot.urdf.xacro", None,
+    ("robot.urdf.xacro", {}, {}, "robots/robot.urdf.xacro", 7,
      ["unknown package 'mypkg'", "package_paths: {mypkg: <dir>}"]),
-    ("robot.urdf.xacro", {"mypkg": MYPKG / "nope"}, {}, "robots/robot.urdf.xacro", None,
-     ["not a directory"]),
+    ("robot.urdf.xacro", {"mypkg": MYPKG / "nope"}, {}, "robots/robot.urdf.xacro", 7,
+     ["not a directory", "package_paths: {mypkg: <dir>}"]),
 ]
 
 

@@ -32,6 +32,7 @@ from ..model import (
     UrdfJoint,
     UrdfRobot,
 )
+from .wording import YAML, Wording
 
 __all__ = ["JOINT_TYPES", "canonical_urdf_bytes", "load_urdf", "parse_urdf_bytes"]
 
@@ -141,9 +142,10 @@ class _Lines:
 
 # ---------------------------------------------------------------- errors
 class _Ctx:
-    def __init__(self, source: str, expanded: bool) -> None:
+    def __init__(self, source: str, expanded: bool, wording: Wording = YAML) -> None:
         self.source = source
         self.expanded = expanded
+        self.wording = wording
         self.lines: _Lines | None = None
 
     def line(self, el: etree._Element | None) -> int | None:
@@ -179,7 +181,7 @@ def _parser() -> etree.XMLParser:
 
 def _parse(data: bytes, ctx: _Ctx) -> etree._Element:
     if not data.strip():
-        raise ctx.err("file is empty", fix="point urdf: at a URDF or xacro file with content")
+        raise ctx.err("file is empty", fix=f"point {ctx.wording.urdf_key} at a URDF or xacro file with content")
     try:
         root = etree.fromstring(data, _parser())
     except etree.XMLSyntaxError as e:
@@ -191,7 +193,7 @@ def _parse(data: bytes, ctx: _Ctx) -> etree._Element:
         line = e.lineno or (int(m.group(1)) if m else None)
         if b"\x00" in data and not data.startswith((b"\xff\xfe", b"\xfe\xff")):
             raise ctx.err("not a text file (binary data), so not a URDF", line=None,
-                          fix="point urdf: at the .urdf or .xacro file") from None
+                          fix=f"point {ctx.wording.urdf_key} at the .urdf or .xacro file") from None
         if "encoding" in message.lower() or "utf-8" in message.lower():
             fix = ("save the file as UTF-8 (or declare its real encoding in "
                    "<?xml version=\"1.0\" encoding=\"...\"?>)")
@@ -538,13 +540,14 @@ def parse_urdf_bytes(xml: bytes, *, source: str) -> UrdfRobot:
     return _robot_from_root(_parse(xml, ctx), xml, ctx)
 
 
-def _read(path: Path, shown: str) -> bytes:
-    where = "check the urdf: path in the vendor YAML (relative paths are relative to the YAML)"
+def _read(path: Path, shown: str, wording: Wording) -> bytes:
+    where = f"check {wording.urdf_path}"
+    inside = f"point {wording.urdf_key} at the .urdf or .xacro file inside it"
     try:
         st = path.stat()
         if stat.S_ISDIR(st.st_mode):
             raise UrdfError("is a directory, not a URDF or xacro file", file=shown,
-                            fix="point urdf: at the .urdf or .xacro file inside it")
+                            fix=inside)
         if not stat.S_ISREG(st.st_mode):
             raise UrdfError("is not a regular file", file=shown, fix=where)
         return path.read_bytes()
@@ -554,7 +557,7 @@ def _read(path: Path, shown: str) -> bytes:
         raise UrdfError("file not found", file=shown, fix=where) from None
     except IsADirectoryError:
         raise UrdfError("is a directory, not a URDF or xacro file", file=shown,
-                        fix="point urdf: at the .urdf or .xacro file inside it") from None
+                        fix=inside) from None
     except PermissionError:
         raise UrdfError("cannot read the file (permission denied)", file=shown,
                         fix="make the file readable (chmod a+r)") from None
@@ -566,18 +569,19 @@ def _read(path: Path, shown: str) -> bytes:
 
 def load_urdf(path: str | Path, *, xacro_args: Mapping[str, str] | None = None,
               package_paths: Mapping[str, str | Path] | None = None,
-              display_path: str | None = None) -> UrdfRobot:
+              display_path: str | None = None, wording: Wording = YAML) -> UrdfRobot:
     """Load a URDF or xacro file.
 
     ``xacro_args`` and ``package_paths`` (ROS package name -> directory for ``$(find pkg)``) are
     used only when the file is a xacro: its name ends in ``.xacro`` or its root declares the xacro
     namespace. ``display_path`` is how the file is named in error messages and in
-    ``UrdfRobot.source`` (default: ``path`` as given).
+    ``UrdfRobot.source`` (default: ``path`` as given). ``wording`` says how a fix names the inputs:
+    vendor YAML keys (``wording.YAML``, the default) or command-line options (``wording.CLI``).
     """
     p = Path(path)
     shown = display_path if display_path is not None else str(path)
-    data = _read(p, shown)
-    ctx = _Ctx(shown, expanded=False)
+    data = _read(p, shown, wording)
+    ctx = _Ctx(shown, expanded=False, wording=wording)
     is_xacro = p.name.lower().endswith(".xacro")
     root = None
     if is_xacro or b"xacro" in data:
@@ -586,8 +590,8 @@ def load_urdf(path: str | Path, *, xacro_args: Mapping[str, str] | None = None,
     if is_xacro:
         from .xacro_expand import expand_xacro
 
-        expanded = expand_xacro(p, xacro_args or {}, package_paths or {}, display_path=shown)
-        xctx = _Ctx(shown, expanded=True)
+        expanded = expand_xacro(p, xacro_args or {}, package_paths or {}, display_path=shown, wording=wording)
+        xctx = _Ctx(shown, expanded=True, wording=wording)
         return _robot_from_root(_parse(expanded, xctx), expanded, xctx)
     if root is None:
         root = _parse(data, ctx)

@@ -5,6 +5,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import ProjectError, WriteBlockedError
+from ..inputs import wording
 from ..inputs.scaffold import relative_urdf_path, suggest_yaml
 from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import config_from_data
@@ -38,7 +39,7 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                            key="--urdf", fix="give the path of a .urdf or .xacro file")
     urdf = load_urdf(urdf_path, xacro_args=xacro_args,
                      package_paths={k: Path(v) for k, v in package_paths.items()},
-                     display_path=str(urdf_path))
+                     display_path=str(urdf_path), wording=wording.CLI)
     rel_pkg = {k: relative_urdf_path(Path(v), yaml_path.parent) for k, v in package_paths.items()}
     text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
                         urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,

@@ -139,7 +139,8 @@ def _version_line(old: str, new: str) -> str:
 @app.command()
 def generate(robots: RobotsArg = None,
              dry_run: Annotated[bool, typer.Option("--dry-run", help="Show what would change, write nothing.")] = False,
-             verbose: Annotated[bool, typer.Option("--verbose", "-v", help="Also list unchanged files.")] = False,
+             verbose: Annotated[bool, typer.Option(
+                 "--verbose", "-v", help="Also list unchanged files and each robot YAML as it is loaded.")] = False,
              force: Annotated[bool, typer.Option("--force", help=FORCE_HELP)] = False,
              project: ProjectOpt = None) -> None:
     """(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.
@@ -153,12 +154,12 @@ def generate(robots: RobotsArg = None,
     from .write.transaction import apply
 
     proj = _project(project)
-    loaded, only = load_selected(proj, robots, progress=_err)
+    loaded, only = load_selected(proj, robots, progress=typer.echo if verbose else None)
     plan = plan_generation(proj, loaded, only, force=force)
     if plan.blocked and not force:
-        if len(plan.blocked) > 1:
+        if len(plan.blocked) > 1:  # the details on stdout; stderr gets the one error line
             for b in plan.blocked:
-                _err(f"blocked: {b.note()}")
+                typer.echo(f"blocked: {b.note()}")
         raise plan.blocked_error()
     counts = _print_changes([*plan.files, plan.manifest_change], verbose=verbose)
     if not dry_run:
@@ -182,7 +183,7 @@ def diff(robots: RobotsArg = None, project: ProjectOpt = None) -> None:
     from .pipeline.load import load_selected
 
     proj = _project(project)
-    loaded, only = load_selected(proj, robots, progress=_err)
+    loaded, only = load_selected(proj, robots)
     plan = plan_generation(proj, loaded, only)
     colour = _use_colour()
     if plan.other_version:
@@ -301,14 +302,25 @@ def main(argv: list[str] | None = None) -> int:
         names = {cls.__name__ for cls in type(exc).__mro__}
         if "Abort" in names:
             return 130
-        if "ClickException" in names:
+        if "NoArgsIsHelpError" in names:  # `rhi-gen` alone: the help was printed
             exc.show()  # type: ignore[attr-defined]
+            return 2
+        if "ClickException" in names:
+            _err(_usage_line(exc))
             return 2
         if os.environ.get("RHI_GEN_DEBUG"):
             raise
         _err(f"internal error: {type(exc).__name__}: {exc} (a bug in rhi-gen; rerun with RHI_GEN_DEBUG=1 "
              "and report it)")
         return 3
+
+
+def _usage_line(exc: Exception) -> str:
+    """A usage error (missing or unknown option, no such command) as one line, like every other error."""
+    message = " ".join(str(exc.format_message()).split()).rstrip(".")  # type: ignore[attr-defined]
+    ctx = getattr(exc, "ctx", None)
+    command = getattr(ctx, "command_path", None) or "rhi-gen"
+    return f"error: {message} -> see `{command} --help`"
 
 
 def entry() -> None:

@@ -47,8 +47,8 @@ class CliResult:
 
     @property
     def error_lines(self) -> list[str]:
-        """stderr without the "loading <yaml>" progress lines of `generate`."""
-        return [line for line in self.err.splitlines() if line.strip() and not line.startswith("loading ")]
+        """Every line on stderr: for bad input that must be exactly the one error line (no progress lines)."""
+        return [line for line in self.err.splitlines() if line.strip()]
 
 
 def run_cli(*args: str | os.PathLike) -> CliResult:

@@ -66,9 +66,12 @@ def check_unique(project: Project, robots: Sequence[LoadedRobot]) -> None:
         classes[key] = r
 
 
-def load_selected(project: Project, names: Sequence[str] | None, progress: Callable[[str], None] = lambda _: None,
+def load_selected(project: Project, names: Sequence[str] | None, progress: Callable[[str], None] | None = None,
                   ) -> tuple[list[LoadedRobot], list[LoadedRobot] | None]:
-    """Every robot (shared files need them all) and, when ``names`` are given, the chosen ones."""
+    """Every robot (shared files need them all) and, when ``names`` are given, the chosen ones.
+
+    ``progress`` (``generate --verbose``) hears of each YAML as it is loaded; by default nothing is said.
+    """
     every = robot_yamls(project)
     if not every:
         raise ProjectError("no robots found", file=project.relative(project.robots_dir),
@@ -76,7 +79,8 @@ def load_selected(project: Project, names: Sequence[str] | None, progress: Calla
     chosen = set(select_yamls(project, list(names) if names else None))
     loaded = []
     for path in every:
-        progress(f"loading {project.relative(path)}")
+        if progress is not None:
+            progress(f"loading {project.relative(path)}")
         loaded.append(load_robot(project, path))
     check_unique(project, loaded)
     only = [r for r in loaded if r.yaml_path in chosen] if names else None

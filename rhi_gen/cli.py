@@ -82,6 +82,9 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
         xacro_arg: XacroArgOpt = None,
         package_path: PackagePathOpt = None,
         force: Annotated[bool, typer.Option("--force", help="Overwrite an existing robot YAML.")] = False,
+        class_prefix: Annotated[str | None, typer.Option(
+            help="C++ class prefix (class NAMEHardwareInterface; default from --robot: my_arm -> MyArm), "
+                 "written to the YAML as class_prefix:.")] = None,
         project: ProjectOpt = None) -> None:
     """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
     from .pipeline.new_robot import plan_new_robot
@@ -90,7 +93,8 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
     proj = _project(project)
     plan = plan_new_robot(proj, vendor=vendor, robot=robot, urdf_path=urdf, transport=transport,
                           xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
-                          package_paths=_parse_pairs(package_path, "--package-path"), force=force)
+                          package_paths=_parse_pairs(package_path, "--package-path"), force=force,
+                          class_prefix=class_prefix)
     apply(proj.root, plan.changes)
     m = plan.robot.model
     typer.echo(f"wrote {plan.yaml_relpath}: {len(m.joints)} joints, {m.motor_count} motors, "

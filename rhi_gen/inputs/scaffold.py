@@ -26,7 +26,7 @@ def _limits_comment(joint: UrdfJoint) -> str:
 
 def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str,
                  transport: str | None = None, xacro_args: Mapping[str, str] | None = None,
-                 package_paths: Mapping[str, str] | None = None) -> str:
+                 package_paths: Mapping[str, str] | None = None, class_prefix: str | None = None) -> str:
     """The text of a new vendor YAML for ``urdf``."""
     known = transports.known_robot(vendor, robot)
     chosen = transports.for_vendor(vendor) if transport is None else transports.get(transport, key="--transport")
@@ -72,6 +72,8 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         f"motor_count: {motor_count}",
         f"float_type: {chosen.default_float_type}",
     ]
+    if class_prefix is not None:
+        lines.append(f"class_prefix: {class_prefix}")
     if xacro_args:
         lines.append("xacro_args:")
         lines += [f"  {yaml_string(k)}: {yaml_string(v)}" for k, v in xacro_args.items()]

@@ -11,10 +11,10 @@ from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import config_from_data
 from ..inputs.yaml_source import parse_yaml_text
 from ..model.build import build_model
-from ..project import Project, robot_yamls, validate_names
+from ..project import PACKAGE_NAME, Project, robot_yamls, validate_names
 from ..write.changes import FileChange, compare
 from .generate import plan_generation
-from .load import LoadedRobot, load_robots
+from .load import Clash, LoadedRobot, find_clash, load_robots
 
 
 @dataclass(frozen=True)
@@ -25,10 +25,34 @@ class NewRobotPlan:
     changes: list[FileChange]  # relative to the project root: the YAML and generated/ files
 
 
+def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:
+    """The new robot clashes with one already in the project: in the words of `rhi-gen new`."""
+    m = clash.robot.model
+    others = project.relative(clash.other.yaml_path) if clash.other is not None else "rhi-gen's shared files"
+    if clash.kind == "robot name":
+        return ProjectError(f"robot name {m.robot!r} is already used by {others} (robot names share "
+                            "description/, config/ and test/)", key="--robot", fix="choose another --robot name")
+    if clash.kind == "plugin class":
+        if class_prefix is not None:
+            return ProjectError(f"plugin class {clash.value} is already generated for {others}",
+                                key="--class-prefix", fix="choose another --class-prefix")
+        return ProjectError(f"robot {m.robot!r} would generate plugin class {clash.value}, which {others} "
+                            "already generates", key="--robot",
+                            fix="choose another --robot name, or keep it and give this robot its own class with "
+                                "--class-prefix NAME (written to its YAML as class_prefix:)")
+    return ProjectError(f"robot {m.vendor}/{m.robot} would write generated/{PACKAGE_NAME}/{clash.value}, which "
+                        f"{others} also writes", key="--robot", fix="choose another --robot name")
+
+
 def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path, transport: str | None,
-                   xacro_args: dict[str, str], package_paths: dict[str, str], force: bool) -> NewRobotPlan:
-    """Everything `rhi-gen new` will write, computed before anything is written."""
-    validate_names(vendor, robot)
+                   xacro_args: dict[str, str], package_paths: dict[str, str], force: bool,
+                   class_prefix: str | None = None) -> NewRobotPlan:
+    """Everything `rhi-gen new` will write, computed before anything is written.
+
+    Refuses (ProjectError, nothing written) a robot that clashes with one of the project: same robot
+    name, same plugin class, or a generated file another robot writes (pipeline.load.find_clash).
+    """
+    validate_names(vendor, robot, class_prefix)
     yaml_path = project.yaml_path(vendor, robot)
     yaml_rel = project.relative(yaml_path)
     if yaml_path.exists() and not force:
@@ -43,17 +67,16 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
     rel_pkg = {k: relative_urdf_path(Path(v), yaml_path.parent) for k, v in package_paths.items()}
     text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
                         urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,
-                        xacro_args=xacro_args, package_paths=rel_pkg)
+                        xacro_args=xacro_args, package_paths=rel_pkg, class_prefix=class_prefix)
     # The model is built from the in-memory YAML, through the normal validator: nothing is on disk yet.
     data, lines = parse_yaml_text(text, yaml_rel)
     config = config_from_data(data, lines, yaml_rel, yaml_path.parent)
     model = build_model(config, urdf, yaml_path=yaml_path, project_root=project.root)
     new = LoadedRobot(yaml_path, config, urdf, model)
     others = load_robots(project, [p for p in robot_yamls(project) if p.resolve() != yaml_path.resolve()])
-    clash = next((r for r in others if r.model.robot == robot), None)
+    clash = find_clash([*others, new])
     if clash is not None:
-        raise ProjectError(f"robot name {robot!r} is already used by {project.relative(clash.yaml_path)}",
-                           key="--robot", fix="choose another robot name")
+        raise clash_error(project, clash, class_prefix=class_prefix)
     # Only the new robot's files and the shared ones: other drivers stay as they are, user regions of
     # the shared files (CMakeLists.txt) are carried over and hand edits block as in `generate`.
     generation = plan_generation(project, [*others, new], only=[new])

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from . import __version__
-from .errors import ProjectError, RhiGenError
+from .errors import InputWarning, ProjectError, RhiGenError
 from .transports import DEFAULT as DEFAULT_TRANSPORT
 from .transports import NAMES as TRANSPORT_NAMES
 
@@ -40,6 +40,12 @@ RobotsArg = Annotated[list[str] | None, typer.Argument(
 
 def _err(text: str) -> None:
     typer.echo(text, err=True)
+
+
+def _warn(warnings: Sequence[InputWarning]) -> None:
+    """Warnings go to stderr after the command succeeded: one line each, the command still exits 0."""
+    for w in warnings:
+        _err(f"warning: {w}")
 
 
 def _parse_pairs(values: Sequence[str] | None, option: str) -> dict[str, str]:
@@ -102,6 +108,7 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
     counts = _print_changes([c for c in plan.changes if c.path != plan.yaml_relpath], verbose=False)
     typer.echo(_summary(counts))
     typer.echo(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
+    _warn(plan.warnings)
 
 
 def _use_colour() -> bool:
@@ -152,6 +159,7 @@ def generate(robots: RobotsArg = None,
     User-region contents are carried over byte for byte; a file edited outside its regions blocks
     the whole run (exit 2, nothing written) unless --force.
     """
+    from .pipeline.existing_tags import existing_tag_warnings
     from .pipeline.generate import plan_generation
     from .pipeline.load import load_selected
     from .write.backups import BACKUP_DIR, BACKUP_MARKERS
@@ -175,6 +183,7 @@ def generate(robots: RobotsArg = None,
     names = ", ".join(f"{r.model.vendor}/{r.model.robot} ({len(r.model.joints)} joints)" for r in loaded)
     typer.echo(f"robots: {names}")
     typer.echo(_summary(counts, dry_run=dry_run))
+    _warn(existing_tag_warnings(loaded if only is None else only))
 
 
 @app.command()

@@ -27,10 +27,11 @@ class Project:
         return self.generated_dir / PACKAGE_NAME
 
     def relative(self, path: Path) -> str:
+        """``path`` relative to the project root (POSIX), or its absolute path when it lies outside."""
         try:
             return path.resolve().relative_to(self.root.resolve()).as_posix()
         except ValueError:
-            return str(path)
+            return str(path.resolve())
 
     def yaml_path(self, vendor: str, robot: str) -> Path:
         return self.robots_dir / vendor / f"{robot}.yaml"

@@ -34,7 +34,7 @@ from ..model import (
 )
 from .wording import YAML, Wording
 
-__all__ = ["JOINT_TYPES", "canonical_urdf_bytes", "load_urdf", "parse_urdf_bytes"]
+__all__ = ["JOINT_TYPES", "canonical_urdf_bytes", "is_xacro", "load_urdf", "parse_urdf_bytes"]
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 _LIMITED_TYPES = ("revolute", "prismatic")  # urdfdom rejects these without <limit>
@@ -565,6 +565,19 @@ def _read(path: Path, shown: str, wording: Wording) -> bytes:
         raise UrdfError(f"cannot read the file ({e.strerror or e})", file=shown, fix=where) from None
     except ValueError as e:  # e.g. a NUL character in the path
         raise UrdfError(f"invalid path ({e})", file=shown, fix=where) from None
+
+
+def is_xacro(path: str | Path) -> bool:
+    """Whether ``load_urdf`` runs xacro on ``path``: its name ends in ``.xacro`` or its root declares the
+    xacro namespace. False for a file that cannot be read or parsed (load_urdf reports those)."""
+    p = Path(path)
+    if p.name.lower().endswith(".xacro"):
+        return True
+    try:
+        data = p.read_bytes()
+        return b"xacro" in data and _declares_xacro(etree.fromstring(data, _parser()))
+    except (OSError, ValueError, etree.LxmlError):
+        return False
 
 
 def load_urdf(path: str | Path, *, xacro_args: Mapping[str, str] | None = None,

@@ -4,15 +4,16 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import ProjectError, WriteBlockedError
+from ..errors import InputWarning, ProjectError, WriteBlockedError
 from ..inputs import wording
 from ..inputs.scaffold import relative_urdf_path, suggest_yaml
-from ..inputs.urdf_loader import load_urdf
+from ..inputs.urdf_loader import is_xacro, load_urdf
 from ..inputs.vendor_config import config_from_data
 from ..inputs.yaml_source import parse_yaml_text
 from ..model.build import build_model
 from ..project import PACKAGE_NAME, Project, robot_yamls, validate_names
 from ..write.changes import FileChange, compare
+from .existing_tags import existing_tag_warning
 from .generate import plan_generation
 from .load import Clash, LoadedRobot, find_clash, load_robots
 
@@ -23,6 +24,7 @@ class NewRobotPlan:
     yaml_text: str
     robot: LoadedRobot
     changes: list[FileChange]  # relative to the project root: the YAML and generated/ files
+    warnings: tuple[InputWarning, ...] = ()  # accepted, but the user must know (printed after success)
 
 
 def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:
@@ -86,4 +88,6 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                                 fix="move the edits into user regions, or run `rhi-gen generate --force` first "
                                     "(keeps a backup), then rerun `rhi-gen new`")
     prefixed = [FileChange(f"generated/{c.path}", c.status, c.old, c.new) for c in generation.changes]
-    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, {yaml_rel: text.encode("utf-8")}), *prefixed])
+    warning = existing_tag_warning(urdf, model, xacro=is_xacro(urdf_path))
+    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, {yaml_rel: text.encode("utf-8")}), *prefixed],
+                        warnings=(warning,) if warning is not None else ())

@@ -105,7 +105,11 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
     m = plan.robot.model
     typer.echo(f"wrote {plan.yaml_relpath}: {len(m.joints)} joints, {m.motor_count} motors, "
                f"transport {m.transport}, {m.float_type}")
-    counts = _print_changes([c for c in plan.changes if c.path != plan.yaml_relpath], verbose=False)
+    inputs = {plan.yaml_relpath}
+    if plan.copy is not None:
+        typer.echo(plan.copy.note(plan.yaml_relpath))
+        inputs.add(plan.copy.rel)
+    counts = _print_changes([c for c in plan.changes if c.path not in inputs], verbose=False)
     typer.echo(_summary(counts))
     typer.echo(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
     _warn(plan.warnings)

@@ -28,6 +28,7 @@ import pytest
 import yaml
 from lxml import etree
 
+from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes
 from tests.cpp_build import syntax_check_driver
 from tests.test_hostile_inputs import run_cli, snapshot
 
@@ -134,8 +135,12 @@ def check_generated(root: Path, d: Description, outcome: Outcome) -> None:
     mapped = list(config["joint_map"])
     # the URDF as ros2_control's parser sees it (an independent read, lxml only): movable joints
     # without <mimic> get interfaces, mimic joints get none
-    if (yaml_path.parent / config["urdf"]).resolve() != d.path.resolve():
-        outcome.problems.append(f"the YAML's urdf: {config['urdf']!r} does not lead to {d.path}")
+    # the description lies outside the project: `new` wrote it, expanded, next to the YAML
+    copy = yaml_path.parent / config["urdf"]
+    if copy != yaml_path.with_suffix(".urdf") or not copy.is_file():
+        outcome.problems.append(f"the YAML's urdf: {config['urdf']!r} is not the copy {d.robot}.urdf")
+    elif not d.path.name.endswith(".xacro") and copy.read_bytes() != canonical_urdf_bytes(d.path.read_bytes()):
+        outcome.problems.append(f"{copy.name} is not a copy of {d.path}")
     urdf = etree.parse(str(d.path)) if not d.path.name.endswith(".xacro") else None
     if urdf is not None:
         joints = urdf.getroot().findall("joint")

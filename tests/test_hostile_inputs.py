@@ -225,13 +225,23 @@ def test_missing_xacro_arg_through_new(tmp_path):
     xacro = HOSTILE / "needs_arg.urdf.xacro"
     new_rejected(tmp_path / "proj", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
                  file=str(xacro), line=4, words=("xacro arg 'prefix' is not set", "--xacro-arg prefix=<value>"))
-    # the fix works: given the arg, the same file generates
+    # the fix works: given the arg, the same file generates (expanded into the project: it lies outside)
     result = run_cli("new", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
                      "--xacro-arg", "prefix=left_", "--project", tmp_path / "proj")
     assert result.code == 0, result.err
     written = yaml.safe_load((tmp_path / "proj" / YAML_REL).read_text())
-    assert written["xacro_args"] == {"prefix": "left_"}
+    assert written["urdf"] == "arm.urdf" and "xacro_args" not in written
+    assert "prefix:=left_" in (tmp_path / "proj" / YAML_REL).read_text()  # in the provenance comment
     assert list(written["joint_map"]) == ["left_shoulder_pan"]
+    # inside the project the xacro stays a xacro, and the arg is recorded
+    inside = tmp_path / "proj2" / "robots" / "acme" / "arm.urdf.xacro"
+    inside.parent.mkdir(parents=True)
+    shutil.copy(xacro, inside)
+    result = run_cli("new", "--vendor", "acme", "--robot", "arm", "--urdf", inside,
+                     "--xacro-arg", "prefix=left_", "--project", tmp_path / "proj2")
+    assert result.code == 0, result.err
+    written = yaml.safe_load((tmp_path / "proj2" / YAML_REL).read_text())
+    assert written["urdf"] == "arm.urdf.xacro" and written["xacro_args"] == {"prefix": "left_"}
 
 
 def test_xacro_undefined_property(tmp_path):

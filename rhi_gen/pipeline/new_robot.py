@@ -16,6 +16,7 @@ from ..write.changes import FileChange, compare
 from .existing_tags import existing_tag_warning
 from .generate import plan_generation
 from .load import Clash, LoadedRobot, find_clash, load_robots
+from .outside_description import DescriptionCopy, plan_copy
 
 
 @dataclass(frozen=True)
@@ -23,8 +24,9 @@ class NewRobotPlan:
     yaml_relpath: str
     yaml_text: str
     robot: LoadedRobot
-    changes: list[FileChange]  # relative to the project root: the YAML and generated/ files
+    changes: list[FileChange]  # relative to the project root: the YAML, the description's copy, generated/ files
     warnings: tuple[InputWarning, ...] = ()  # accepted, but the user must know (printed after success)
+    copy: DescriptionCopy | None = None      # the description lay (or read files) outside the project
 
 
 def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:
@@ -66,10 +68,17 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
     urdf = load_urdf(urdf_path, xacro_args=xacro_args,
                      package_paths={k: Path(v) for k, v in package_paths.items()},
                      display_path=str(urdf_path), wording=wording.CLI)
-    rel_pkg = {k: relative_urdf_path(Path(v), yaml_path.parent) for k, v in package_paths.items()}
-    text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
-                        urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,
-                        xacro_args=xacro_args, package_paths=rel_pkg, class_prefix=class_prefix)
+    copy = plan_copy(project, vendor=vendor, robot=robot, urdf_path=urdf_path, urdf=urdf, xacro_args=xacro_args,
+                     package_paths=package_paths, force=force)
+    if copy is None:
+        text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
+                            urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,
+                            xacro_args=xacro_args, class_prefix=class_prefix,
+                            package_paths={k: relative_urdf_path(Path(v), yaml_path.parent)
+                                           for k, v in package_paths.items()})
+    else:  # already expanded: no xacro_args or package_paths to record
+        text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=copy.file_name, transport=transport,
+                            class_prefix=class_prefix, urdf_comment=copy.yaml_comment())
     # The model is built from the in-memory YAML, through the normal validator: nothing is on disk yet.
     data, lines = parse_yaml_text(text, yaml_rel)
     config = config_from_data(data, lines, yaml_rel, yaml_path.parent)
@@ -89,5 +98,6 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                                     "(keeps a backup), then rerun `rhi-gen new`")
     prefixed = [FileChange(f"generated/{c.path}", c.status, c.old, c.new) for c in generation.changes]
     warning = existing_tag_warning(urdf, model, xacro=is_xacro(urdf_path))
-    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, {yaml_rel: text.encode("utf-8")}), *prefixed],
-                        warnings=(warning,) if warning is not None else ())
+    inputs = {yaml_rel: text.encode("utf-8"), **({copy.rel: copy.data} if copy is not None else {})}
+    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, inputs), *prefixed],
+                        warnings=(warning,) if warning is not None else (), copy=copy)

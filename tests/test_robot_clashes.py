@@ -9,6 +9,7 @@ is rejected by generate/check/diff in the words of the YAML. Both use one check,
 from __future__ import annotations
 
 import dataclasses
+import shutil
 from pathlib import Path
 
 import pytest
@@ -90,12 +91,14 @@ def test_new_force_over_the_same_robot_is_no_clash(h1_2):
 
 # ---------------------------------------------------------------- a clash already in the project
 def _clashing_yaml(root: Path, vendor: str, robot: str) -> Path:
-    """A copy of h1_2's YAML as robots/<vendor>/<robot>.yaml (same folder depth: its urdf: path still holds)."""
+    """A copy of h1_2's YAML as robots/<vendor>/<robot>.yaml, next to a copy of its URDF."""
     text = (root / "robots/unitree/h1_2.yaml").read_text()
     text = text.replace("vendor: unitree", f"vendor: {vendor}").replace("robot: h1_2", f"robot: {robot}")
     path = root / "robots" / vendor / f"{robot}.yaml"
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text)
+    if vendor != "unitree":
+        shutil.copy(root / "robots/unitree/h1_2.urdf", path.parent / "h1_2.urdf")
     return path
 
 

@@ -10,6 +10,7 @@ from ..inputs.scaffold import relative_urdf_path, suggest_yaml
 from ..inputs.urdf_loader import is_xacro, load_urdf
 from ..inputs.vendor_config import config_from_data
 from ..inputs.yaml_source import parse_yaml_text
+from ..model import UrdfRobot
 from ..model.build import build_model
 from ..project import PACKAGE_NAME, Project, robot_yamls, validate_names
 from ..write.changes import FileChange, compare
@@ -48,6 +49,18 @@ def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> 
                         f"{others} also writes", key="--robot", fix="choose another --robot name")
 
 
+def _yaml_text(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_path: Path, yaml_dir: Path,
+               copy: DescriptionCopy | None, transport: str | None, xacro_args: dict[str, str],
+               package_paths: dict[str, str], class_prefix: str | None) -> str:
+    """The suggested YAML: naming the description where it is (paths relative to the YAML), or its copy."""
+    if copy is not None:  # already expanded: no xacro_args or package_paths to record
+        return suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=copy.file_name, transport=transport,
+                            class_prefix=class_prefix, urdf_comment=copy.yaml_comment())
+    return suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=relative_urdf_path(urdf_path, yaml_dir),
+                        transport=transport, xacro_args=xacro_args, class_prefix=class_prefix,
+                        package_paths={k: relative_urdf_path(Path(v), yaml_dir) for k, v in package_paths.items()})
+
+
 def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path, transport: str | None,
                    xacro_args: dict[str, str], package_paths: dict[str, str], force: bool,
                    class_prefix: str | None = None) -> NewRobotPlan:
@@ -70,15 +83,9 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                      display_path=str(urdf_path), wording=wording.CLI)
     copy = plan_copy(project, vendor=vendor, robot=robot, urdf_path=urdf_path, urdf=urdf, xacro_args=xacro_args,
                      package_paths=package_paths, force=force)
-    if copy is None:
-        text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
-                            urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,
-                            xacro_args=xacro_args, class_prefix=class_prefix,
-                            package_paths={k: relative_urdf_path(Path(v), yaml_path.parent)
-                                           for k, v in package_paths.items()})
-    else:  # already expanded: no xacro_args or package_paths to record
-        text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=copy.file_name, transport=transport,
-                            class_prefix=class_prefix, urdf_comment=copy.yaml_comment())
+    text = _yaml_text(vendor=vendor, robot=robot, urdf=urdf, urdf_path=urdf_path, yaml_dir=yaml_path.parent,
+                      copy=copy, transport=transport, xacro_args=xacro_args, package_paths=package_paths,
+                      class_prefix=class_prefix)
     # The model is built from the in-memory YAML, through the normal validator: nothing is on disk yet.
     data, lines = parse_yaml_text(text, yaml_rel)
     config = config_from_data(data, lines, yaml_rel, yaml_path.parent)

@@ -196,3 +196,39 @@ def test_a_refused_new_writes_no_copy(tmp_path):
     result = run_cli("new", "--vendor", "acme", "--robot", "h12", "--urdf", FIX / "simple_arm.urdf", "--project", root)
     assert_rejected(result, file="--robot", words=("plugin class",))
     assert snapshot(root) == before and not (root / "robots/acme/h12.urdf").exists()
+
+
+# ---------------------------------------------------------------- $(find pkg) in meshes: no machine folder
+MESH_XACRO = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="meshy">
+  <link name="base_link"><visual><geometry><mesh filename="file://$(find mypkg)/meshes/base.stl"/></geometry></visual></link>
+  <link name="l1"/>
+  <joint name="j1" type="continuous"><parent link="base_link"/><child link="l1"/></joint>
+</robot>
+"""
+
+
+def test_find_in_a_mesh_inside_the_project_checks_in_a_clone_elsewhere(tmp_path):
+    """The expansion holds the package's absolute folder; the fingerprint must not, or CI is always stale."""
+    root = tmp_path / "proj"
+    (root / "robots" / "acme").mkdir(parents=True)
+    (root / "pkgs" / "mypkg").mkdir(parents=True)
+    (root / "robots/acme/meshy.urdf.xacro").write_text(MESH_XACRO)
+    new(root, "meshy", root / "robots/acme/meshy.urdf.xacro", "--package-path", f"mypkg={root / 'pkgs/mypkg'}")
+    data, _ = read_yaml(root, "meshy")
+    assert data["urdf"] == "meshy.urdf.xacro" and data["package_paths"] == {"mypkg": "../../pkgs/mypkg"}
+    clone = tmp_path / "elsewhere" / "deeper" / "clone"
+    shutil.copytree(root, clone)
+    result = run_cli("check", "--project", clone)
+    assert result.code == 0, result.out + result.err
+
+
+def test_find_in_a_mesh_outside_leaves_no_machine_folder_in_the_copy(tmp_path):
+    ws = tmp_path / "ws"
+    (ws / "mypkg").mkdir(parents=True)
+    (ws / "meshy.urdf.xacro").write_text(MESH_XACRO)
+    root = tmp_path / "proj"
+    new(root, "meshy", ws / "meshy.urdf.xacro", "--package-path", f"mypkg={ws / 'mypkg'}")
+    copy = (root / "robots/acme/meshy.urdf").read_text()
+    assert 'filename="file://$(find mypkg)/meshes/base.stl"' in copy and str(ws) not in copy
+    clone_checks(root, tmp_path)

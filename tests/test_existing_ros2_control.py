@@ -71,7 +71,8 @@ def test_new_on_tiago_pro_sums_up_three_tags_in_one_line(tmp_path):
     assert line.startswith(f"warning: {urdf}:2366: already has 3 <ros2_control> tags "
                            '("ros2_control_tiago_pro_system_can", "ros2_control_tiago_pro_system_dynamixel", '
                            '"ros2_control_tiago_pro_system_ethercat") with plugin robot_control/RobotControl for 33 '
-                           "joints (wheel_front_right_joint, wheel_front_left_joint, wheel_rear_right_joint and 30 more)")
+                           "joints (wheel_front_right_joint, wheel_front_left_joint, wheel_rear_right_joint and 30 "
+                           "more)")
     assert "drives 23 of them (" in line and " -> replace that tag" in line
 
 
@@ -141,8 +142,8 @@ def test_bad_input_is_one_error_line_without_the_warning(tagged_project):
 
 
 def test_new_refused_for_a_clash_says_nothing_about_the_tag(tagged_project):
-    result = run_cli("new", "--vendor", "other", "--robot", "xarm7", "--urdf", tagged_project / "robots/acme/xarm7.urdf",
-                     "--project", tagged_project)
+    result = run_cli("new", "--vendor", "other", "--robot", "xarm7", "--urdf",
+                     tagged_project / "robots/acme/xarm7.urdf", "--project", tagged_project)
     assert_rejected(result, file="--robot", words=("already used by robots/acme/xarm7.yaml",))
 
 
@@ -202,6 +203,6 @@ def test_a_tag_in_a_xacro_is_named_without_a_misleading_line(tmp_path):
 def test_inspect_lists_the_tag_and_the_choice():
     result = run_cli("inspect", "--urdf", FIX / "existing_ros2_control.urdf")
     assert result.code == 0 and result.err == ""
-    assert "existing <ros2_control name='RRBotSystem'> plugin ros2_control_demo_hardware/" \
-           "RRBotSystemPositionOnlyHardware: 2 joints (joint1, joint2)" in result.out
+    assert ("existing <ros2_control name='RRBotSystem'> plugin ros2_control_demo_hardware/"
+            "RRBotSystemPositionOnlyHardware: 2 joints (joint1, joint2)") in result.out
     assert "replace the existing tag with it, or keep the tag and do not include the macro" in result.out

@@ -122,9 +122,8 @@ def test_several_blocked_files_list_on_stdout_and_fail_in_one_line(three_robots)
     (message,) = result.err.splitlines()
     assert message.startswith("error: 2 generated files hold hand-written code") and " -> " in message
     assert "src/acme/arm.cpp" in message and "src/acme/wheel.cpp" in message and "--force" in message
+    reason = "edited outside its user regions since the last `rhi-gen generate`"
     assert [line for line in result.out.splitlines() if line.startswith("blocked: ")] == [
-        "blocked: generated/robot_hardware_interface/src/acme/arm.cpp: edited outside its user regions since "
-        "the last `rhi-gen generate`",
-        "blocked: generated/robot_hardware_interface/src/acme/wheel.cpp: edited outside its user regions since "
-        "the last `rhi-gen generate`"]
+        f"blocked: generated/robot_hardware_interface/src/acme/arm.cpp: {reason}",
+        f"blocked: generated/robot_hardware_interface/src/acme/wheel.cpp: {reason}"]
     assert snapshot(three_robots) == before

@@ -63,8 +63,8 @@ def test_the_other_robot_name_fix_works(h1_2):
 
 def test_a_class_prefix_that_clashes_names_the_option(h1_2):
     new_rejected(h1_2, "--vendor", "unitree", "--robot", "h2", "--urdf", ARM, "--class-prefix", "H12",
-                 file="--class-prefix", words=("plugin class unitree::H12HardwareInterface is already generated "
-                                               "for robots/unitree/h1_2.yaml", "choose another --class-prefix"))
+                 file="--class-prefix", words=(("plugin class unitree::H12HardwareInterface is already generated "
+                                                "for robots/unitree/h1_2.yaml"), "choose another --class-prefix"))
 
 
 @pytest.mark.parametrize("value", ["h12", "H 12", "1H", "Class", "H12_b"])
@@ -108,8 +108,8 @@ def test_a_class_clash_in_the_project_is_named_in_yaml_words(h1_2, command):
     before = snapshot(h1_2)
     # robots/unitree/h12.yaml sorts before h1_2.yaml ('2' < '_'), so h1_2.yaml is the second one
     message = assert_rejected(run_cli(command, "--project", h1_2), file="robots/unitree/h1_2.yaml", line=5,
-                              key="robot", words=("plugin class unitree::H12HardwareInterface is also generated "
-                                                  "for robots/unitree/h12.yaml", "set class_prefix: <Name>"))
+                              key="robot", words=(("plugin class unitree::H12HardwareInterface is also generated "
+                                                   "for robots/unitree/h12.yaml"), "set class_prefix: <Name>"))
     assert "--" not in message.split(" -> ")[1]
     assert snapshot(h1_2) == before
 
@@ -134,5 +134,5 @@ def test_a_robot_file_on_a_shared_file_is_a_clash(h1_2):
     assert clash is not None and clash.kind == "path" and clash.other is None
     assert clash.value == "include/robot_hardware_interface/common/types.hpp"
     error = clash_error(Project(h1_2), clash)
-    assert "would write generated/robot_hardware_interface/include/robot_hardware_interface/common/types.hpp, " \
-           "which rhi-gen's shared files also writes" in str(error)
+    assert ("would write generated/robot_hardware_interface/include/robot_hardware_interface/common/types.hpp, "
+            "which rhi-gen's shared files also writes") in str(error)

@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from rhi_gen.errors import RhiGenError, UrdfError
 from rhi_gen.model import JointLimits, Mimic
-from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes
+from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes, portable_xml
 from rhi_gen.inputs.xacro_expand import expand_xacro
 
 REPO = Path(__file__).resolve().parents[1]
@@ -607,3 +607,41 @@ def test_actuated_joints_match_yourdfpy(path):
     assert [j.name for j in robot.actuated_joints] == expected
     assert [j.name for j in robot.joints] == [j.name for j in theirs.robot.joints]
     assert list(robot.links) == [link.name for link in theirs.robot.links]
+
+
+MESH_XACRO = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="meshy">
+  <link name="base_link"><visual><geometry><mesh filename="file://$(find mypkg)/meshes/base.stl"/></geometry></visual></link>
+  <link name="l1"><visual><geometry><mesh filename="${xacro.abs_filename('meshes/l1.stl')}"/></geometry></visual></link>
+  <joint name="j1" type="continuous"><parent link="base_link"/><child link="l1"/></joint>
+</robot>
+"""
+
+
+def test_xacro_hash_is_machine_independent_with_find_and_dirname_in_meshes(tmp_path):
+    """$(find pkg) or xacro.abs_filename() in a mesh expand to this machine's folders: the fingerprint
+    must not see them (else no clone of the project at another path passes `rhi-gen check`)."""
+    results = []
+    for where in ("a", "deeper/b b&c"):
+        root = tmp_path / where
+        (root / "desc").mkdir(parents=True)
+        (root / "mypkg").mkdir()
+        (root / "desc" / "robot.urdf.xacro").write_text(MESH_XACRO)
+        robot = load_urdf(root / "desc" / "robot.urdf.xacro", package_paths={"mypkg": root / "mypkg"})
+        assert [j.name for j in robot.joints] == ["j1"]
+        results.append(robot.canonical_xml)
+    assert results[0] == results[1]
+    xml = results[0]
+    assert b'filename="file://$(find mypkg)/meshes/base.stl"' in xml
+    assert b'filename="$(dirname)/meshes/l1.stl"' in xml
+    assert str(tmp_path).encode() not in xml
+
+
+def test_portable_xml_replaces_whole_folders_only(tmp_path):
+    pkg, other = tmp_path / "ws" / "mypkg", tmp_path / "ws" / "mypkg2"
+    xml = (f'<robot name="r"><link name="a"><visual><geometry><mesh filename="{pkg}/a.stl"/></geometry></visual>'
+           f'</link><link name="b"><visual><geometry><mesh filename="{other}/b.stl"/></geometry></visual></link>'
+           f'<!-- {pkg} --></robot>').encode()
+    out = portable_xml(xml, tmp_path / "top" / "r.urdf.xacro", {"mypkg": pkg})
+    assert b'filename="$(find mypkg)/a.stl"' in out and f'filename="{other}/b.stl"'.encode() in out
+    assert b"<!-- $(find mypkg) -->" in out

@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import bisect
 import difflib
+import os
 import re
 import stat
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
+from xml.sax.saxutils import escape as xml_escape
 
 from lxml import etree
 
@@ -96,6 +98,25 @@ def canonical_urdf_bytes(xml: bytes) -> bytes:
             last = stop
     out += data[last:]
     return bytes(out)
+
+
+def portable_xml(xml: bytes, top: Path, package_paths: Mapping[str, str | Path]) -> bytes:
+    """``xml`` (a xacro expansion of ``top``) with this machine's folders put back as the xacro that named
+    them: each package folder as ``$(find pkg)``, the top file's folder as ``$(dirname)``.
+
+    ``$(find pkg)`` in a mesh or any other attribute expands to an absolute path, so the same robot
+    would fingerprint differently in every clone of the project and `check` could never pass in CI.
+    Only whole path components are replaced (the folder followed by ``/``, a quote, ``<`` or space).
+    """
+    folders = {os.path.normpath(os.path.abspath(os.fspath(d))): f"$(find {pkg})" for pkg, d in package_paths.items()}
+    folders.setdefault(os.path.normpath(os.path.dirname(os.path.abspath(os.fspath(top)))), "$(dirname)")
+    for folder in sorted(folders, key=len, reverse=True):  # the most specific first
+        if folder == os.sep:
+            continue
+        escaped = xml_escape(folder, {'"': "&quot;"}).encode("utf-8")
+        pattern = re.compile(re.escape(escaped) + rb"(?=[/\\\"'<\s])")
+        xml = pattern.sub(folders[folder].encode("utf-8").replace(b"\\", b"\\\\"), xml)
+    return xml
 
 
 # ---------------------------------------------------------------- line numbers
@@ -250,7 +271,7 @@ _Tag = Callable[[str], str]  # a local tag name -> the tag in the document's nam
 # per joint: (parent element, child element, mimic element)
 _JointRefs = tuple[etree._Element, etree._Element, etree._Element | None]
 
-def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
+def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx, canonical: bytes | None = None) -> UrdfRobot:
     ns = etree.QName(root).namespace  # URDF has no namespace; a default xmlns on <robot> is tolerated
 
     def q(local: str) -> str:
@@ -310,7 +331,7 @@ def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
         joints=tuple(joints),
         links=tuple(links),
         ros2_control=_ros2_control(root, q, ctx),
-        canonical_xml=canonical_urdf_bytes(data),
+        canonical_xml=canonical_urdf_bytes(data) if canonical is None else canonical,
     )
 
 
@@ -605,7 +626,8 @@ def load_urdf(path: str | Path, *, xacro_args: Mapping[str, str] | None = None,
 
         expanded = expand_xacro(p, xacro_args or {}, package_paths or {}, display_path=shown, wording=wording)
         xctx = _Ctx(shown, expanded=True, wording=wording)
-        return _robot_from_root(_parse(expanded, xctx), expanded, xctx)
+        canonical = portable_xml(canonical_urdf_bytes(expanded), p, package_paths or {})
+        return _robot_from_root(_parse(expanded, xctx), expanded, xctx, canonical)
     if root is None:
         root = _parse(data, ctx)
     return _robot_from_root(root, data, ctx)

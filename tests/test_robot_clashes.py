@@ -135,4 +135,4 @@ def test_a_robot_file_on_a_shared_file_is_a_clash(h1_2):
     assert clash.value == "include/robot_hardware_interface/common/types.hpp"
     error = clash_error(Project(h1_2), clash)
     assert ("would write generated/robot_hardware_interface/include/robot_hardware_interface/common/types.hpp, "
-            "which rhi-gen's shared files also writes") in str(error)
+            "which is one of rhi-gen's shared files") in str(error)

@@ -94,7 +94,7 @@ def clash_error(project: Project, clash: Clash) -> ProjectError:
     r, other = clash.robot, clash.other
     shown = project.relative(r.yaml_path)
     lines = r.config.key_lines
-    others = project.relative(other.yaml_path) if other is not None else "rhi-gen's shared files"
+    others = project.relative(other.yaml_path) if other is not None else "rhi-gen"
     if clash.kind == "robot name":
         return ProjectError(f"robot name {clash.value!r} is also used by {others}", file=shown,
                             line=lines.get("robot"), key="robot",
@@ -105,8 +105,15 @@ def clash_error(project: Project, clash: Clash) -> ProjectError:
         return ProjectError(f"plugin class {clash.value} is also generated for {others}", file=shown,
                             line=lines.get(key), key=key,
                             fix="set class_prefix: <Name> in one of the two YAMLs so each robot has its own class")
-    return ProjectError(f"would write generated/{PACKAGE_NAME}/{clash.value}, which {others} also writes",
+    return ProjectError(f"would write generated/{PACKAGE_NAME}/{clash.value}, {path_owner(project, clash)}",
                         file=shown, line=lines.get("robot"), key="robot", fix="rename the robot (or its vendor)")
+
+
+def path_owner(project: Project, clash: Clash) -> str:
+    """Who else writes the clashing file, as the end of a sentence."""
+    if clash.other is None:
+        return "which is one of rhi-gen's shared files"
+    return f"which {project.relative(clash.other.yaml_path)} also writes"
 
 
 def check_unique(project: Project, robots: Sequence[LoadedRobot]) -> None:

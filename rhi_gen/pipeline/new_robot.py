@@ -16,7 +16,7 @@ from ..project import PACKAGE_NAME, Project, robot_yamls, validate_names
 from ..write.changes import FileChange, compare
 from .existing_tags import existing_tag_warning
 from .generate import plan_generation
-from .load import Clash, LoadedRobot, find_clash, load_robots
+from .load import Clash, LoadedRobot, find_clash, load_robots, path_owner
 from .outside_description import DescriptionCopy, plan_copy
 
 
@@ -33,7 +33,7 @@ class NewRobotPlan:
 def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:
     """The new robot clashes with one already in the project: in the words of `rhi-gen new`."""
     m = clash.robot.model
-    others = project.relative(clash.other.yaml_path) if clash.other is not None else "rhi-gen's shared files"
+    others = project.relative(clash.other.yaml_path) if clash.other is not None else "rhi-gen"
     if clash.kind == "robot name":
         return ProjectError(f"robot name {m.robot!r} is already used by {others} (robot names share "
                             "description/, config/ and test/)", key="--robot", fix="choose another --robot name")
@@ -45,8 +45,8 @@ def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> 
                             "already generates", key="--robot",
                             fix="choose another --robot name, or keep it and give this robot its own class with "
                                 "--class-prefix NAME (written to its YAML as class_prefix:)")
-    return ProjectError(f"robot {m.vendor}/{m.robot} would write generated/{PACKAGE_NAME}/{clash.value}, which "
-                        f"{others} also writes", key="--robot", fix="choose another --robot name")
+    return ProjectError(f"robot {m.vendor}/{m.robot} would write generated/{PACKAGE_NAME}/{clash.value}, "
+                        f"{path_owner(project, clash)}", key="--robot", fix="choose another --robot name")
 
 
 def _yaml_text(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_path: Path, yaml_dir: Path,

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from . import __version__
-from .errors import ProjectError, RhiGenError
+from .errors import InputWarning, ProjectError, RhiGenError
 from .transports import DEFAULT as DEFAULT_TRANSPORT
 from .transports import NAMES as TRANSPORT_NAMES
 
@@ -40,6 +40,12 @@ RobotsArg = Annotated[list[str] | None, typer.Argument(
 
 def _err(text: str) -> None:
     typer.echo(text, err=True)
+
+
+def _warn(warnings: Sequence[InputWarning]) -> None:
+    """Warnings go to stderr after the command succeeded: one line each, the command still exits 0."""
+    for w in warnings:
+        _err(f"warning: {w}")
 
 
 def _parse_pairs(values: Sequence[str] | None, option: str) -> dict[str, str]:
@@ -82,6 +88,9 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
         xacro_arg: XacroArgOpt = None,
         package_path: PackagePathOpt = None,
         force: Annotated[bool, typer.Option("--force", help="Overwrite an existing robot YAML.")] = False,
+        class_prefix: Annotated[str | None, typer.Option(
+            help="C++ class prefix (class NAMEHardwareInterface; default from --robot: my_arm -> MyArm), "
+                 "written to the YAML as class_prefix:.")] = None,
         project: ProjectOpt = None) -> None:
     """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
     from .pipeline.new_robot import plan_new_robot
@@ -90,14 +99,20 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
     proj = _project(project)
     plan = plan_new_robot(proj, vendor=vendor, robot=robot, urdf_path=urdf, transport=transport,
                           xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
-                          package_paths=_parse_pairs(package_path, "--package-path"), force=force)
+                          package_paths=_parse_pairs(package_path, "--package-path"), force=force,
+                          class_prefix=class_prefix)
     apply(proj.root, plan.changes)
     m = plan.robot.model
     typer.echo(f"wrote {plan.yaml_relpath}: {len(m.joints)} joints, {m.motor_count} motors, "
                f"transport {m.transport}, {m.float_type}")
-    counts = _print_changes([c for c in plan.changes if c.path != plan.yaml_relpath], verbose=False)
+    inputs = {plan.yaml_relpath}
+    if plan.copy is not None:
+        typer.echo(plan.copy.note(plan.yaml_relpath))
+        inputs.add(plan.copy.rel)
+    counts = _print_changes([c for c in plan.changes if c.path not in inputs], verbose=False)
     typer.echo(_summary(counts))
     typer.echo(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
+    _warn(plan.warnings)
 
 
 def _use_colour() -> bool:
@@ -139,7 +154,8 @@ def _version_line(old: str, new: str) -> str:
 @app.command()
 def generate(robots: RobotsArg = None,
              dry_run: Annotated[bool, typer.Option("--dry-run", help="Show what would change, write nothing.")] = False,
-             verbose: Annotated[bool, typer.Option("--verbose", "-v", help="Also list unchanged files.")] = False,
+             verbose: Annotated[bool, typer.Option(
+                 "--verbose", "-v", help="Also list unchanged files and each robot YAML as it is loaded.")] = False,
              force: Annotated[bool, typer.Option("--force", help=FORCE_HELP)] = False,
              project: ProjectOpt = None) -> None:
     """(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.
@@ -147,18 +163,19 @@ def generate(robots: RobotsArg = None,
     User-region contents are carried over byte for byte; a file edited outside its regions blocks
     the whole run (exit 2, nothing written) unless --force.
     """
+    from .pipeline.existing_tags import existing_tag_warnings
     from .pipeline.generate import plan_generation
     from .pipeline.load import load_selected
     from .write.backups import BACKUP_DIR, BACKUP_MARKERS
     from .write.transaction import apply
 
     proj = _project(project)
-    loaded, only = load_selected(proj, robots, progress=_err)
+    loaded, only = load_selected(proj, robots, progress=typer.echo if verbose else None)
     plan = plan_generation(proj, loaded, only, force=force)
     if plan.blocked and not force:
-        if len(plan.blocked) > 1:
+        if len(plan.blocked) > 1:  # the details on stdout; stderr gets the one error line
             for b in plan.blocked:
-                _err(f"blocked: {b.note()}")
+                typer.echo(f"blocked: {b.note()}")
         raise plan.blocked_error()
     counts = _print_changes([*plan.files, plan.manifest_change], verbose=verbose)
     if not dry_run:
@@ -170,6 +187,7 @@ def generate(robots: RobotsArg = None,
     names = ", ".join(f"{r.model.vendor}/{r.model.robot} ({len(r.model.joints)} joints)" for r in loaded)
     typer.echo(f"robots: {names}")
     typer.echo(_summary(counts, dry_run=dry_run))
+    _warn(existing_tag_warnings(loaded if only is None else only))
 
 
 @app.command()
@@ -182,7 +200,7 @@ def diff(robots: RobotsArg = None, project: ProjectOpt = None) -> None:
     from .pipeline.load import load_selected
 
     proj = _project(project)
-    loaded, only = load_selected(proj, robots, progress=_err)
+    loaded, only = load_selected(proj, robots)
     plan = plan_generation(proj, loaded, only)
     colour = _use_colour()
     if plan.other_version:
@@ -250,12 +268,13 @@ def inspect(urdf: Annotated[Path, typer.Option(help="URDF or .xacro file.")],
             xacro_arg: XacroArgOpt = None,
             package_path: PackagePathOpt = None) -> None:
     """Show actuated joints, types, limits, mimic joints and the suggested joint map."""
+    from .inputs import wording
     from .inputs.inspect_report import inspect_text
     from .inputs.urdf_loader import load_urdf
 
     robot_model = load_urdf(urdf, xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
                             package_paths={k: Path(v) for k, v in _parse_pairs(package_path, "--package-path").items()},
-                            display_path=str(urdf))
+                            display_path=str(urdf), wording=wording.CLI)
     sys.stdout.write(inspect_text(robot_model, vendor=vendor, robot=robot))
 
 
@@ -300,14 +319,25 @@ def main(argv: list[str] | None = None) -> int:
         names = {cls.__name__ for cls in type(exc).__mro__}
         if "Abort" in names:
             return 130
-        if "ClickException" in names:
+        if "NoArgsIsHelpError" in names:  # `rhi-gen` alone: the help was printed
             exc.show()  # type: ignore[attr-defined]
+            return 2
+        if "ClickException" in names:
+            _err(_usage_line(exc))
             return 2
         if os.environ.get("RHI_GEN_DEBUG"):
             raise
         _err(f"internal error: {type(exc).__name__}: {exc} (a bug in rhi-gen; rerun with RHI_GEN_DEBUG=1 "
              "and report it)")
         return 3
+
+
+def _usage_line(exc: Exception) -> str:
+    """A usage error (missing or unknown option, no such command) as one line, like every other error."""
+    message = " ".join(str(exc.format_message()).split()).rstrip(".")  # type: ignore[attr-defined]
+    ctx = getattr(exc, "ctx", None)
+    command = getattr(ctx, "command_path", None) or "rhi-gen"
+    return f"error: {message} -> see `{command} --help`"
 
 
 def entry() -> None:

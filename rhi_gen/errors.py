@@ -5,7 +5,38 @@ clear line (file, line or key, what to do) and never a traceback.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
+
+
+def one_line(message: str, *, file: str | None = None, line: int | None = None, key: str | None = None,
+             fix: str | None = None) -> str:
+    """``file:line: key: message -> fix``, the shape of every error and warning rhi-gen prints."""
+    where = ""
+    if file:
+        where = file
+        if line:
+            where += f":{line}"
+        where += ": "
+    text = f"{where}{f'{key}: ' if key else ''}{message}"
+    if fix:
+        text += f" -> {fix}"
+    # One line, always: a message built from hostile input must not break the terminal output.
+    return " ".join(text.replace("\r", " ").split("\n"))
+
+
+@dataclass(frozen=True)
+class InputWarning:
+    """Input rhi-gen accepts but the user must know about; ``str()`` is the one line shown (after
+    ``warning: ``), in the shape of an error. Commands print it and still succeed (exit 0)."""
+    message: str
+    file: str | None = None
+    line: int | None = None
+    key: str | None = None
+    fix: str | None = None
+
+    def __str__(self) -> str:
+        return one_line(self.message, file=self.file, line=self.line, key=self.key, fix=self.fix)
 
 
 class RhiGenError(Exception):
@@ -23,18 +54,7 @@ class RhiGenError(Exception):
         super().__init__(self.render())
 
     def render(self) -> str:
-        where = ""
-        if self.file:
-            where = self.file
-            if self.line:
-                where += f":{self.line}"
-            where += ": "
-        key = f"{self.key}: " if self.key else ""
-        text = f"{where}{key}{self.message}"
-        if self.fix:
-            text += f" -> {self.fix}"
-        # One line, always: a message built from hostile input must not break the terminal output.
-        return " ".join(text.replace("\r", " ").split("\n"))
+        return one_line(self.message, file=self.file, line=self.line, key=self.key, fix=self.fix)
 
 
 class InputError(RhiGenError):

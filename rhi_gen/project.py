@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import ProjectError
-from .model.naming import identifier_problem, vendor_problem
+from .model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, vendor_problem
 
 PACKAGE_NAME = "robot_hardware_interface"
 
@@ -27,10 +27,11 @@ class Project:
         return self.generated_dir / PACKAGE_NAME
 
     def relative(self, path: Path) -> str:
+        """``path`` relative to the project root (POSIX), or its absolute path when it lies outside."""
         try:
             return path.resolve().relative_to(self.root.resolve()).as_posix()
         except ValueError:
-            return str(path)
+            return str(path.resolve())
 
     def yaml_path(self, vendor: str, robot: str) -> Path:
         return self.robots_dir / vendor / f"{robot}.yaml"
@@ -89,9 +90,13 @@ def select_yamls(project: Project, names: list[str] | None) -> list[Path]:
     return chosen
 
 
-def validate_names(vendor: str, robot: str) -> None:
+def validate_names(vendor: str, robot: str, class_prefix: str | None = None) -> None:
     """For `new`: refuse names that would escape robots/ or break C++ before touching disk."""
     for problem, key in ((vendor_problem(vendor), "--vendor"), (identifier_problem(robot, "robot"), "--robot")):
         if problem:
             raise ProjectError(problem, key=key, fix="choose another name: lowercase letters, digits and "
                                "underscores, not a C++ keyword or a reserved name (e.g. my_company, my_arm)")
+    if class_prefix is not None and (not CLASS_PREFIX_RE.match(class_prefix) or class_prefix.lower() in CPP_KEYWORDS):
+        # the rule vendor_config applies to class_prefix:, checked here so the error names the option
+        raise ProjectError(f"{class_prefix!r} must be a C++ identifier starting with an uppercase letter "
+                           "(letters and digits only)", key="--class-prefix", fix="e.g. H12 or MyArm")

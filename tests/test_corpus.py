@@ -28,6 +28,8 @@ import pytest
 import yaml
 from lxml import etree
 
+from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, is_xacro
+from rhi_gen.inputs.xacro_expand import expand_xacro
 from tests.cpp_build import syntax_check_driver
 from tests.test_hostile_inputs import run_cli, snapshot
 
@@ -120,6 +122,12 @@ def corpus() -> list[Description]:
     return [Description(label, path, robot_name(path.name.split(".")[0], taken)) for label, path in found]
 
 
+def joint_names(path: Path, *, expand: bool = False) -> list[str]:
+    """The top-level <joint> names of a URDF (of a xacro's expansion when ``expand``), read with lxml."""
+    data = expand_xacro(path, {}, {}) if expand else path.read_bytes()
+    return [j.get("name") for j in etree.fromstring(data).findall("joint")]
+
+
 def check_generated(root: Path, d: Description, outcome: Outcome) -> None:
     """What `new` wrote follows ros2_control's rules for this URDF."""
     yaml_path = root / "robots" / "corpus" / f"{d.robot}.yaml"
@@ -134,8 +142,14 @@ def check_generated(root: Path, d: Description, outcome: Outcome) -> None:
     mapped = list(config["joint_map"])
     # the URDF as ros2_control's parser sees it (an independent read, lxml only): movable joints
     # without <mimic> get interfaces, mimic joints get none
-    if (yaml_path.parent / config["urdf"]).resolve() != d.path.resolve():
-        outcome.problems.append(f"the YAML's urdf: {config['urdf']!r} does not lead to {d.path}")
+    # the description lies outside the project: `new` wrote it, expanded, next to the YAML
+    copy = yaml_path.parent / config["urdf"]
+    if copy != yaml_path.with_suffix(".urdf") or not copy.is_file():
+        outcome.problems.append(f"the YAML's urdf: {config['urdf']!r} is not the copy {d.robot}.urdf")
+    elif not is_xacro(d.path) and copy.read_bytes() != canonical_urdf_bytes(d.path.read_bytes()):
+        outcome.problems.append(f"{copy.name} is not a copy of {d.path}")
+    elif is_xacro(d.path) and joint_names(copy) != joint_names(d.path, expand=True):
+        outcome.problems.append(f"{copy.name} does not hold the joints of {d.path} expanded")
     urdf = etree.parse(str(d.path)) if not d.path.name.endswith(".xacro") else None
     if urdf is not None:
         joints = urdf.getroot().findall("joint")

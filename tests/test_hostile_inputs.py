@@ -47,8 +47,8 @@ class CliResult:
 
     @property
     def error_lines(self) -> list[str]:
-        """stderr without the "loading <yaml>" progress lines of `generate`."""
-        return [line for line in self.err.splitlines() if line.strip() and not line.startswith("loading ")]
+        """Every line on stderr: for bad input that must be exactly the one error line (no progress lines)."""
+        return [line for line in self.err.splitlines() if line.strip()]
 
 
 def run_cli(*args: str | os.PathLike) -> CliResult:
@@ -195,7 +195,7 @@ def test_new_with_a_missing_urdf(tmp_path):
 def test_missing_xacro_include(tmp_path):
     xacro = HOSTILE / "missing_include.urdf.xacro"
     new_rejected(tmp_path / "proj", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
-                 file=str(xacro), words=("cannot open", "arm_macros.xacro", "xacro:include"))
+                 file=str(xacro), line=3, words=("cannot open", "arm_macros.xacro", "xacro:include"))
 
 
 def test_generate_without_robots(tmp_path):
@@ -217,21 +217,31 @@ def test_generate_an_unknown_robot(project):
 def test_missing_xacro_arg_through_generate(project):
     shutil.copy(HOSTILE / "needs_arg.urdf.xacro", project / "robots/acme/arm.urdf.xacro")
     edit_yaml(project, "urdf: arm.urdf", "urdf: arm.urdf.xacro")
-    generate_rejected(project, file="robots/acme/arm.urdf.xacro",
+    generate_rejected(project, file="robots/acme/arm.urdf.xacro", line=4,
                       words=("xacro arg 'prefix' is not set", "xacro_args: {prefix: <value>}"))
 
 
 def test_missing_xacro_arg_through_new(tmp_path):
     xacro = HOSTILE / "needs_arg.urdf.xacro"
     new_rejected(tmp_path / "proj", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
-                 file=str(xacro), words=("xacro arg 'prefix' is not set",))
-    # the fix works: given the arg, the same file generates
+                 file=str(xacro), line=4, words=("xacro arg 'prefix' is not set", "--xacro-arg prefix=<value>"))
+    # the fix works: given the arg, the same file generates (expanded into the project: it lies outside)
     result = run_cli("new", "--vendor", "acme", "--robot", "arm", "--urdf", xacro,
                      "--xacro-arg", "prefix=left_", "--project", tmp_path / "proj")
     assert result.code == 0, result.err
     written = yaml.safe_load((tmp_path / "proj" / YAML_REL).read_text())
-    assert written["xacro_args"] == {"prefix": "left_"}
+    assert written["urdf"] == "arm.urdf" and "xacro_args" not in written
+    assert "prefix:=left_" in (tmp_path / "proj" / YAML_REL).read_text()  # in the provenance comment
     assert list(written["joint_map"]) == ["left_shoulder_pan"]
+    # inside the project the xacro stays a xacro, and the arg is recorded
+    inside = tmp_path / "proj2" / "robots" / "acme" / "arm.urdf.xacro"
+    inside.parent.mkdir(parents=True)
+    shutil.copy(xacro, inside)
+    result = run_cli("new", "--vendor", "acme", "--robot", "arm", "--urdf", inside,
+                     "--xacro-arg", "prefix=left_", "--project", tmp_path / "proj2")
+    assert result.code == 0, result.err
+    written = yaml.safe_load((tmp_path / "proj2" / YAML_REL).read_text())
+    assert written["urdf"] == "arm.urdf.xacro" and written["xacro_args"] == {"prefix": "left_"}
 
 
 def test_xacro_undefined_property(tmp_path):

@@ -231,10 +231,12 @@ def test_several_blocked_files_are_all_listed(project, capsys):
         (project / rel).write_text((project / rel).read_text() + "# appended by hand\n")
     rename_joint(project)
     before = tree(project)
-    code, _, err = cli(capsys, project, "generate")
+    code, out, err = cli(capsys, project, "generate")
     assert code == 2 and tree(project) == before
-    assert f"blocked: {G1_HPP}: edited outside" in err and f"blocked: {CMAKE}: edited outside" in err
-    assert "2 generated files hold hand-written code" in err
+    # each file and its reason on stdout; stderr is the one error line naming both
+    assert f"blocked: {G1_HPP}: edited outside" in out and f"blocked: {CMAKE}: edited outside" in out
+    assert err.count("\n") == 1 and "2 generated files hold hand-written code" in err
+    assert G1_HPP in err and CMAKE in err
 
 
 def test_force_overwrites_and_keeps_numbered_backups(project, capsys):
@@ -351,9 +353,10 @@ def test_files_without_a_manifest_record_are_not_overwritten_blindly(project, ca
     (project / MANIFEST).unlink()
     rename_joint(project)
     before = tree(project)
-    code, _, err = cli(capsys, project, "generate")
+    code, out, err = cli(capsys, project, "generate")
     assert code == 2 and tree(project) == before
-    assert "there is no generated/.rhi-gen-manifest" in err and "--force" in err
+    # each unrecorded file and why on stdout, the one error line on stderr
+    assert "there is no generated/.rhi-gen-manifest" in out and err.count("\n") == 1 and "--force" in err
 
 
 # ---------------------------------------------------------------- check: stale inputs as well as file diffs

@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 
 from rhi_gen.errors import RhiGenError, UrdfError
 from rhi_gen.model import JointLimits, Mimic
-from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes
+from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes, portable_xml
 from rhi_gen.inputs.xacro_expand import expand_xacro
 
 REPO = Path(__file__).resolve().parents[1]
@@ -285,26 +285,27 @@ def test_xacro_expansions_in_parallel_threads_do_not_mix():
 
 XACRO_ERRORS = [
     # (fixture, package_paths, args, shown file, line, substrings)
-    ("unknown_pkg.urdf.xacro", {"mypkg": MYPKG}, {}, "robots/unknown_pkg.urdf.xacro", None,
+    ("unknown_pkg.urdf.xacro", {"mypkg": MYPKG}, {}, "robots/unknown_pkg.urdf.xacro", 3,  # the $(find) line
      ["unknown package 'nosuchpkg'", "add package_paths: {nosuchpkg: <dir>} to the vendor YAML"]),
-    ("needs_arg.urdf.xacro", {}, {}, "robots/needs_arg.urdf.xacro", None,
+    ("needs_arg.urdf.xacro", {}, {}, "robots/needs_arg.urdf.xacro", 3,  # the $(arg) line
      ["xacro arg 'base_name' is not set", "xacro_args: {base_name: <value>}"]),
     ("broken_include.urdf.xacro", {}, {}, "robots/parts/broken_part.xacro", 4,
      ["malformed XML: mismatched tag"]),
-    ("missing_include.urdf.xacro", {}, {}, "robots/missing_include.urdf.xacro", None,
+    ("missing_include.urdf.xacro", {}, {}, "robots/missing_include.urdf.xacro", 3,  # the <xacro:include> line
      ["cannot open robots/parts/does_not_exist.xacro", "No such file"]),
-    ("package_url.urdf.xacro", {}, {}, "robots/package_url.urdf.xacro", None,
-     ["package://mypkg/urdf/leg.xacro", "$(find pkg)"]),
+    ("package_url.urdf.xacro", {}, {}, "robots/package_url.urdf.xacro", 3,
+     ["package://mypkg/urdf/leg.xacro", "write $(find mypkg)/urdf/leg.xacro instead",
+      "package_paths: {mypkg: <dir>}"]),
     ("unknown_macro.urdf.xacro", {}, {}, "robots/unknown_macro.urdf.xacro", None,
      ["unknown macro name: xacro:no_such_macro"]),
     ("malformed_top.urdf.xacro", {}, {}, "robots/malformed_top.urdf.xacro", 4,
      ["malformed XML: Opening and ending tag mismatch"]),
     ("duplicate_after_expansion.urdf.xacro", {}, {}, "robots/duplicate_after_expansion.urdf.xacro",
      13, ["duplicate link name 'left_wheel'", "xacro-expanded"]),
-    ("robot.urdf.xacro", {}, {}, "robots/robot.urdf.xacro", None,
+    ("robot.urdf.xacro", {}, {}, "robots/robot.urdf.xacro", 7,
      ["unknown package 'mypkg'", "package_paths: {mypkg: <dir>}"]),
-    ("robot.urdf.xacro", {"mypkg": MYPKG / "nope"}, {}, "robots/robot.urdf.xacro", None,
-     ["not a directory"]),
+    ("robot.urdf.xacro", {"mypkg": MYPKG / "nope"}, {}, "robots/robot.urdf.xacro", 7,
+     ["not a directory", "package_paths: {mypkg: <dir>}"]),
 ]
 
 
@@ -606,3 +607,41 @@ def test_actuated_joints_match_yourdfpy(path):
     assert [j.name for j in robot.actuated_joints] == expected
     assert [j.name for j in robot.joints] == [j.name for j in theirs.robot.joints]
     assert list(robot.links) == [link.name for link in theirs.robot.links]
+
+
+MESH_XACRO = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="meshy">
+  <link name="base_link"><visual><geometry><mesh filename="file://$(find mypkg)/meshes/base.stl"/></geometry></visual></link>
+  <link name="l1"><visual><geometry><mesh filename="${xacro.abs_filename('meshes/l1.stl')}"/></geometry></visual></link>
+  <joint name="j1" type="continuous"><parent link="base_link"/><child link="l1"/></joint>
+</robot>
+"""
+
+
+def test_xacro_hash_is_machine_independent_with_find_and_dirname_in_meshes(tmp_path):
+    """$(find pkg) or xacro.abs_filename() in a mesh expand to this machine's folders: the fingerprint
+    must not see them (else no clone of the project at another path passes `rhi-gen check`)."""
+    results = []
+    for where in ("a", "deeper/b b&c"):
+        root = tmp_path / where
+        (root / "desc").mkdir(parents=True)
+        (root / "mypkg").mkdir()
+        (root / "desc" / "robot.urdf.xacro").write_text(MESH_XACRO)
+        robot = load_urdf(root / "desc" / "robot.urdf.xacro", package_paths={"mypkg": root / "mypkg"})
+        assert [j.name for j in robot.joints] == ["j1"]
+        results.append(robot.canonical_xml)
+    assert results[0] == results[1]
+    xml = results[0]
+    assert b'filename="file://$(find mypkg)/meshes/base.stl"' in xml
+    assert b'filename="$(dirname)/meshes/l1.stl"' in xml
+    assert str(tmp_path).encode() not in xml
+
+
+def test_portable_xml_replaces_whole_folders_only(tmp_path):
+    pkg, other = tmp_path / "ws" / "mypkg", tmp_path / "ws" / "mypkg2"
+    xml = (f'<robot name="r"><link name="a"><visual><geometry><mesh filename="{pkg}/a.stl"/></geometry></visual>'
+           f'</link><link name="b"><visual><geometry><mesh filename="{other}/b.stl"/></geometry></visual></link>'
+           f'<!-- {pkg} --></robot>').encode()
+    out = portable_xml(xml, tmp_path / "top" / "r.urdf.xacro", {"mypkg": pkg})
+    assert b'filename="$(find mypkg)/a.stl"' in out and f'filename="{other}/b.stl"'.encode() in out
+    assert b"<!-- $(find mypkg) -->" in out

@@ -28,8 +28,14 @@ def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | Non
                    f"{_fmt(lim.upper if lim else None):>9} {_fmt(lim.effort if lim else None):>8} "
                    f"{_fmt(lim.velocity if lim else None):>8}  {'; '.join(note)}".rstrip())
     for block in urdf.ros2_control:
+        names = [j.name for j in block.joints]
+        listed = f" ({', '.join(names[:3])}{f' and {len(names) - 3} more' if len(names) > 3 else ''})" if names else ""
         out.append(f"existing <ros2_control name={block.name!r}> plugin {block.plugin or '-'}: "
-                   f"{len(block.joints)} joints")
+                   f"{len(block.joints)} joints{listed}")
+    if urdf.ros2_control:
+        out.append("note: `rhi-gen new` writes its own ros2_control macro for the mapped joints: replace the "
+                   "existing tag with it, or keep the tag and do not include the macro (README: \"A description "
+                   "that already has <ros2_control>\")")
     known = transports.known_robot(vendor, robot) if vendor and robot else None
     order = transports.suggest_order([j.name for j in actuated], known)
     source = f"the {known.vendor} profile ({known.note})" if known else "URDF order"

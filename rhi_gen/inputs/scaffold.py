@@ -6,7 +6,7 @@ normal validator, so `new` can never write a YAML that `generate` would reject.
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from .. import transports
@@ -26,8 +26,9 @@ def _limits_comment(joint: UrdfJoint) -> str:
 
 def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str,
                  transport: str | None = None, xacro_args: Mapping[str, str] | None = None,
-                 package_paths: Mapping[str, str] | None = None) -> str:
-    """The text of a new vendor YAML for ``urdf``."""
+                 package_paths: Mapping[str, str] | None = None, class_prefix: str | None = None,
+                 urdf_comment: Sequence[str] = ()) -> str:
+    """The text of a new vendor YAML for ``urdf``; ``urdf_comment``: comment lines above ``urdf:``."""
     known = transports.known_robot(vendor, robot)
     chosen = transports.for_vendor(vendor) if transport is None else transports.get(transport, key="--transport")
     if known is not None and known.transport != chosen.name:
@@ -67,11 +68,14 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
     lines += [
         f"vendor: {vendor}",
         f"robot: {robot}",
+        *urdf_comment,
         f"urdf: {yaml_string(urdf_relative)}",
         f"transport: {chosen.name}",
         f"motor_count: {motor_count}",
         f"float_type: {chosen.default_float_type}",
     ]
+    if class_prefix is not None:
+        lines.append(f"class_prefix: {class_prefix}")
     if xacro_args:
         lines.append("xacro_args:")
         lines += [f"  {yaml_string(k)}: {yaml_string(v)}" for k, v in xacro_args.items()]

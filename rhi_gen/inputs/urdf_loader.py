@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import bisect
 import difflib
+import os
 import re
 import stat
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
+from xml.sax.saxutils import escape as xml_escape
 
 from lxml import etree
 
@@ -32,8 +34,9 @@ from ..model import (
     UrdfJoint,
     UrdfRobot,
 )
+from .wording import YAML, Wording
 
-__all__ = ["JOINT_TYPES", "canonical_urdf_bytes", "load_urdf", "parse_urdf_bytes"]
+__all__ = ["JOINT_TYPES", "canonical_urdf_bytes", "is_xacro", "load_urdf", "parse_urdf_bytes"]
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 _LIMITED_TYPES = ("revolute", "prismatic")  # urdfdom rejects these without <limit>
@@ -97,6 +100,25 @@ def canonical_urdf_bytes(xml: bytes) -> bytes:
     return bytes(out)
 
 
+def portable_xml(xml: bytes, top: Path, package_paths: Mapping[str, str | Path]) -> bytes:
+    """``xml`` (a xacro expansion of ``top``) with this machine's folders put back as the xacro that named
+    them: each package folder as ``$(find pkg)``, the top file's folder as ``$(dirname)``.
+
+    ``$(find pkg)`` in a mesh or any other attribute expands to an absolute path, so the same robot
+    would fingerprint differently in every clone of the project and `check` could never pass in CI.
+    Only whole path components are replaced (the folder followed by ``/``, a quote, ``<`` or space).
+    """
+    folders = {os.path.normpath(os.path.abspath(os.fspath(d))): f"$(find {pkg})" for pkg, d in package_paths.items()}
+    folders.setdefault(os.path.normpath(os.path.dirname(os.path.abspath(os.fspath(top)))), "$(dirname)")
+    for folder in sorted(folders, key=len, reverse=True):  # the most specific first
+        if folder == os.sep:
+            continue
+        escaped = xml_escape(folder, {'"': "&quot;"}).encode("utf-8")
+        pattern = re.compile(re.escape(escaped) + rb"(?=[/\\\"'<\s])")
+        xml = pattern.sub(folders[folder].encode("utf-8").replace(b"\\", b"\\\\"), xml)
+    return xml
+
+
 # ---------------------------------------------------------------- line numbers
 _SCAN = re.compile(
     rb"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE(?:[^\[>]|\[.*?\])*>|<(?=[^/!?])", re.S)
@@ -141,9 +163,10 @@ class _Lines:
 
 # ---------------------------------------------------------------- errors
 class _Ctx:
-    def __init__(self, source: str, expanded: bool) -> None:
+    def __init__(self, source: str, expanded: bool, wording: Wording = YAML) -> None:
         self.source = source
         self.expanded = expanded
+        self.wording = wording
         self.lines: _Lines | None = None
 
     def line(self, el: etree._Element | None) -> int | None:
@@ -179,7 +202,7 @@ def _parser() -> etree.XMLParser:
 
 def _parse(data: bytes, ctx: _Ctx) -> etree._Element:
     if not data.strip():
-        raise ctx.err("file is empty", fix="point urdf: at a URDF or xacro file with content")
+        raise ctx.err("file is empty", fix=f"point {ctx.wording.urdf_key} at a URDF or xacro file with content")
     try:
         root = etree.fromstring(data, _parser())
     except etree.XMLSyntaxError as e:
@@ -191,7 +214,7 @@ def _parse(data: bytes, ctx: _Ctx) -> etree._Element:
         line = e.lineno or (int(m.group(1)) if m else None)
         if b"\x00" in data and not data.startswith((b"\xff\xfe", b"\xfe\xff")):
             raise ctx.err("not a text file (binary data), so not a URDF", line=None,
-                          fix="point urdf: at the .urdf or .xacro file") from None
+                          fix=f"point {ctx.wording.urdf_key} at the .urdf or .xacro file") from None
         if "encoding" in message.lower() or "utf-8" in message.lower():
             fix = ("save the file as UTF-8 (or declare its real encoding in "
                    "<?xml version=\"1.0\" encoding=\"...\"?>)")
@@ -248,7 +271,7 @@ _Tag = Callable[[str], str]  # a local tag name -> the tag in the document's nam
 # per joint: (parent element, child element, mimic element)
 _JointRefs = tuple[etree._Element, etree._Element, etree._Element | None]
 
-def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
+def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx, canonical: bytes | None = None) -> UrdfRobot:
     ns = etree.QName(root).namespace  # URDF has no namespace; a default xmlns on <robot> is tolerated
 
     def q(local: str) -> str:
@@ -308,7 +331,7 @@ def _robot_from_root(root: etree._Element, data: bytes, ctx: _Ctx) -> UrdfRobot:
         joints=tuple(joints),
         links=tuple(links),
         ros2_control=_ros2_control(root, q, ctx),
-        canonical_xml=canonical_urdf_bytes(data),
+        canonical_xml=canonical_urdf_bytes(data) if canonical is None else canonical,
     )
 
 
@@ -538,13 +561,14 @@ def parse_urdf_bytes(xml: bytes, *, source: str) -> UrdfRobot:
     return _robot_from_root(_parse(xml, ctx), xml, ctx)
 
 
-def _read(path: Path, shown: str) -> bytes:
-    where = "check the urdf: path in the vendor YAML (relative paths are relative to the YAML)"
+def _read(path: Path, shown: str, wording: Wording) -> bytes:
+    where = f"check {wording.urdf_path}"
+    inside = f"point {wording.urdf_key} at the .urdf or .xacro file inside it"
     try:
         st = path.stat()
         if stat.S_ISDIR(st.st_mode):
             raise UrdfError("is a directory, not a URDF or xacro file", file=shown,
-                            fix="point urdf: at the .urdf or .xacro file inside it")
+                            fix=inside)
         if not stat.S_ISREG(st.st_mode):
             raise UrdfError("is not a regular file", file=shown, fix=where)
         return path.read_bytes()
@@ -554,7 +578,7 @@ def _read(path: Path, shown: str) -> bytes:
         raise UrdfError("file not found", file=shown, fix=where) from None
     except IsADirectoryError:
         raise UrdfError("is a directory, not a URDF or xacro file", file=shown,
-                        fix="point urdf: at the .urdf or .xacro file inside it") from None
+                        fix=inside) from None
     except PermissionError:
         raise UrdfError("cannot read the file (permission denied)", file=shown,
                         fix="make the file readable (chmod a+r)") from None
@@ -564,20 +588,34 @@ def _read(path: Path, shown: str) -> bytes:
         raise UrdfError(f"invalid path ({e})", file=shown, fix=where) from None
 
 
+def is_xacro(path: str | Path) -> bool:
+    """Whether ``load_urdf`` runs xacro on ``path``: its name ends in ``.xacro`` or its root declares the
+    xacro namespace. False for a file that cannot be read or parsed (load_urdf reports those)."""
+    p = Path(path)
+    if p.name.lower().endswith(".xacro"):
+        return True
+    try:
+        data = p.read_bytes()
+        return b"xacro" in data and _declares_xacro(etree.fromstring(data, _parser()))
+    except (OSError, ValueError, etree.LxmlError):
+        return False
+
+
 def load_urdf(path: str | Path, *, xacro_args: Mapping[str, str] | None = None,
               package_paths: Mapping[str, str | Path] | None = None,
-              display_path: str | None = None) -> UrdfRobot:
+              display_path: str | None = None, wording: Wording = YAML) -> UrdfRobot:
     """Load a URDF or xacro file.
 
     ``xacro_args`` and ``package_paths`` (ROS package name -> directory for ``$(find pkg)``) are
     used only when the file is a xacro: its name ends in ``.xacro`` or its root declares the xacro
     namespace. ``display_path`` is how the file is named in error messages and in
-    ``UrdfRobot.source`` (default: ``path`` as given).
+    ``UrdfRobot.source`` (default: ``path`` as given). ``wording`` says how a fix names the inputs:
+    vendor YAML keys (``wording.YAML``, the default) or command-line options (``wording.CLI``).
     """
     p = Path(path)
     shown = display_path if display_path is not None else str(path)
-    data = _read(p, shown)
-    ctx = _Ctx(shown, expanded=False)
+    data = _read(p, shown, wording)
+    ctx = _Ctx(shown, expanded=False, wording=wording)
     is_xacro = p.name.lower().endswith(".xacro")
     root = None
     if is_xacro or b"xacro" in data:
@@ -586,9 +624,10 @@ def load_urdf(path: str | Path, *, xacro_args: Mapping[str, str] | None = None,
     if is_xacro:
         from .xacro_expand import expand_xacro
 
-        expanded = expand_xacro(p, xacro_args or {}, package_paths or {}, display_path=shown)
-        xctx = _Ctx(shown, expanded=True)
-        return _robot_from_root(_parse(expanded, xctx), expanded, xctx)
+        expanded = expand_xacro(p, xacro_args or {}, package_paths or {}, display_path=shown, wording=wording)
+        xctx = _Ctx(shown, expanded=True, wording=wording)
+        canonical = portable_xml(canonical_urdf_bytes(expanded), p, package_paths or {})
+        return _robot_from_root(_parse(expanded, xctx), expanded, xctx, canonical)
     if root is None:
         root = _parse(data, ctx)
     return _robot_from_root(root, data, ctx)

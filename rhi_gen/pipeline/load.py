@@ -5,13 +5,15 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .. import transports
 from ..errors import ConfigError, ProjectError
 from ..inputs import package_info
 from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import load_config
 from ..model import PackageInfo, RobotModel, UrdfRobot, VendorConfig
 from ..model.build import build_model
-from ..project import Project, check_layout, robot_yamls, select_yamls
+from ..project import PACKAGE_NAME, Project, check_layout, robot_yamls, select_yamls
+from ..render.package import COMMON_FILES, PACKAGE_FILES, TEST_FILES, robot_paths
 
 
 @dataclass(frozen=True)
@@ -54,28 +56,86 @@ def load_robots(project: Project, yaml_paths: Sequence[Path] | None = None) -> l
     return robots
 
 
-def check_unique(project: Project, robots: Sequence[LoadedRobot]) -> None:
-    """Robot names share description/ and config/, class names share a plugin file: both must be unique."""
-    seen: dict[str, LoadedRobot] = {}
+@dataclass(frozen=True)
+class Clash:
+    """Two robots (or a robot and rhi-gen's shared files) that would generate the same thing."""
+    kind: str                   # "robot name" | "plugin class" | "path"
+    value: str                  # 'arm' | 'unitree::H12HardwareInterface' | a package path
+    robot: LoadedRobot          # the robot that clashes (the later one)
+    other: LoadedRobot | None   # the robot it clashes with; None: rhi-gen's shared files
+
+
+def shared_paths() -> frozenset[str]:
+    """Package paths rhi-gen writes once for all robots (a robot's own file must never be one)."""
+    paths = {out for _, out in (*COMMON_FILES, *TEST_FILES, *PACKAGE_FILES)}
+    for transport in transports.TRANSPORTS.values():
+        paths |= {out for _, out in transport.shared_files}
+    return frozenset(paths)
+
+
+def find_clash(robots: Sequence[LoadedRobot]) -> Clash | None:
+    """The first clash in ``robots`` order: a robot name used twice (description/, config/ and test/
+    are per robot name), a plugin class generated twice (one plugin file lists them all), or a
+    package file written twice. None when every robot can live in the one package."""
+    names: dict[str, LoadedRobot] = {}
     classes: dict[str, LoadedRobot] = {}
+    paths: dict[str, LoadedRobot | None] = dict.fromkeys(shared_paths())
     for r in robots:
-        other = seen.get(r.model.robot)
-        if other is not None:
-            raise ProjectError(f"robot name {r.model.robot!r} is also used by {project.relative(other.yaml_path)}",
-                               file=project.relative(r.yaml_path), key="robot",
-                               fix="robot names share description/ and config/ folders; make them unique")
-        seen[r.model.robot] = r
-        key = f"{r.model.vendor}::{r.model.class_name}"
-        if key in classes:
-            raise ProjectError(f"class {key} is also generated for {project.relative(classes[key].yaml_path)}",
-                               file=project.relative(r.yaml_path), key="class_prefix",
-                               fix="set a distinct class_prefix")
-        classes[key] = r
+        m = r.model
+        if m.robot in names:
+            return Clash("robot name", m.robot, r, names[m.robot])
+        names[m.robot] = r
+        cls = f"{m.vendor}::{m.class_name}"
+        if cls in classes:
+            return Clash("plugin class", cls, r, classes[cls])
+        classes[cls] = r
+        for path in robot_paths(m.vendor, m.robot):
+            if path in paths:
+                return Clash("path", path, r, paths[path])
+            paths[path] = r
+    return None
 
 
-def load_selected(project: Project, names: Sequence[str] | None, progress: Callable[[str], None] = lambda _: None,
+def clash_error(project: Project, clash: Clash) -> ProjectError:
+    """A clash between robots of the project, in the words of their vendor YAMLs."""
+    r, other = clash.robot, clash.other
+    shown = project.relative(r.yaml_path)
+    lines = r.config.key_lines
+    others = project.relative(other.yaml_path) if other is not None else "rhi-gen"
+    if clash.kind == "robot name":
+        return ProjectError(f"robot name {clash.value!r} is also used by {others}", file=shown,
+                            line=lines.get("robot"), key="robot",
+                            fix="rename one of the two robots (robot: and the file name): robot names share "
+                                "description/, config/ and test/")
+    if clash.kind == "plugin class":
+        key = "class_prefix" if "class_prefix" in lines else "robot"
+        return ProjectError(f"plugin class {clash.value} is also generated for {others}", file=shown,
+                            line=lines.get(key), key=key,
+                            fix="set class_prefix: <Name> in one of the two YAMLs so each robot has its own class")
+    return ProjectError(f"would write generated/{PACKAGE_NAME}/{clash.value}, {path_owner(project, clash)}",
+                        file=shown, line=lines.get("robot"), key="robot", fix="rename the robot (or its vendor)")
+
+
+def path_owner(project: Project, clash: Clash) -> str:
+    """Who else writes the clashing file, as the end of a sentence."""
+    if clash.other is None:
+        return "which is one of rhi-gen's shared files"
+    return f"which {project.relative(clash.other.yaml_path)} also writes"
+
+
+def check_unique(project: Project, robots: Sequence[LoadedRobot]) -> None:
+    """Every robot must fit in the one package next to the others (see find_clash)."""
+    clash = find_clash(robots)
+    if clash is not None:
+        raise clash_error(project, clash)
+
+
+def load_selected(project: Project, names: Sequence[str] | None, progress: Callable[[str], None] | None = None,
                   ) -> tuple[list[LoadedRobot], list[LoadedRobot] | None]:
-    """Every robot (shared files need them all) and, when ``names`` are given, the chosen ones."""
+    """Every robot (shared files need them all) and, when ``names`` are given, the chosen ones.
+
+    ``progress`` (``generate --verbose``) hears of each YAML as it is loaded; by default nothing is said.
+    """
     every = robot_yamls(project)
     if not every:
         raise ProjectError("no robots found", file=project.relative(project.robots_dir),
@@ -83,7 +143,8 @@ def load_selected(project: Project, names: Sequence[str] | None, progress: Calla
     chosen = set(select_yamls(project, list(names) if names else None))
     loaded = []
     for path in every:
-        progress(f"loading {project.relative(path)}")
+        if progress is not None:
+            progress(f"loading {project.relative(path)}")
         loaded.append(load_robot(project, path))
     check_unique(project, loaded)
     only = [r for r in loaded if r.yaml_path in chosen] if names else None

@@ -4,16 +4,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import ProjectError, WriteBlockedError
+from ..errors import InputWarning, ProjectError, WriteBlockedError
+from ..inputs import wording
 from ..inputs.scaffold import relative_urdf_path, suggest_yaml
-from ..inputs.urdf_loader import load_urdf
+from ..inputs.urdf_loader import is_xacro, load_urdf
 from ..inputs.vendor_config import config_from_data
 from ..inputs.yaml_source import parse_yaml_text
+from ..model import UrdfRobot
 from ..model.build import build_model
-from ..project import Project, robot_yamls, validate_names
+from ..project import PACKAGE_NAME, Project, robot_yamls, validate_names
 from ..write.changes import FileChange, compare
+from .existing_tags import existing_tag_warning
 from .generate import plan_generation
-from .load import LoadedRobot, load_robots
+from .load import Clash, LoadedRobot, find_clash, load_robots, path_owner
+from .outside_description import DescriptionCopy, plan_copy
 
 
 @dataclass(frozen=True)
@@ -21,13 +25,51 @@ class NewRobotPlan:
     yaml_relpath: str
     yaml_text: str
     robot: LoadedRobot
-    changes: list[FileChange]  # relative to the project root: the YAML and generated/ files
+    changes: list[FileChange]  # relative to the project root: the YAML, the description's copy, generated/ files
+    warnings: tuple[InputWarning, ...] = ()  # accepted, but the user must know (printed after success)
+    copy: DescriptionCopy | None = None      # the description lay (or read files) outside the project
+
+
+def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:
+    """The new robot clashes with one already in the project: in the words of `rhi-gen new`."""
+    m = clash.robot.model
+    others = project.relative(clash.other.yaml_path) if clash.other is not None else "rhi-gen"
+    if clash.kind == "robot name":
+        return ProjectError(f"robot name {m.robot!r} is already used by {others} (robot names share "
+                            "description/, config/ and test/)", key="--robot", fix="choose another --robot name")
+    if clash.kind == "plugin class":
+        if class_prefix is not None:
+            return ProjectError(f"plugin class {clash.value} is already generated for {others}",
+                                key="--class-prefix", fix="choose another --class-prefix")
+        return ProjectError(f"robot {m.robot!r} would generate plugin class {clash.value}, which {others} "
+                            "already generates", key="--robot",
+                            fix="choose another --robot name, or keep it and give this robot its own class with "
+                                "--class-prefix NAME (written to its YAML as class_prefix:)")
+    return ProjectError(f"robot {m.vendor}/{m.robot} would write generated/{PACKAGE_NAME}/{clash.value}, "
+                        f"{path_owner(project, clash)}", key="--robot", fix="choose another --robot name")
+
+
+def _yaml_text(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_path: Path, yaml_dir: Path,
+               copy: DescriptionCopy | None, transport: str | None, xacro_args: dict[str, str],
+               package_paths: dict[str, str], class_prefix: str | None) -> str:
+    """The suggested YAML: naming the description where it is (paths relative to the YAML), or its copy."""
+    if copy is not None:  # already expanded: no xacro_args or package_paths to record
+        return suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=copy.file_name, transport=transport,
+                            class_prefix=class_prefix, urdf_comment=copy.yaml_comment())
+    return suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=relative_urdf_path(urdf_path, yaml_dir),
+                        transport=transport, xacro_args=xacro_args, class_prefix=class_prefix,
+                        package_paths={k: relative_urdf_path(Path(v), yaml_dir) for k, v in package_paths.items()})
 
 
 def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path, transport: str | None,
-                   xacro_args: dict[str, str], package_paths: dict[str, str], force: bool) -> NewRobotPlan:
-    """Everything `rhi-gen new` will write, computed before anything is written."""
-    validate_names(vendor, robot)
+                   xacro_args: dict[str, str], package_paths: dict[str, str], force: bool,
+                   class_prefix: str | None = None) -> NewRobotPlan:
+    """Everything `rhi-gen new` will write, computed before anything is written.
+
+    Refuses (ProjectError, nothing written) a robot that clashes with one of the project: same robot
+    name, same plugin class, or a generated file another robot writes (pipeline.load.find_clash).
+    """
+    validate_names(vendor, robot, class_prefix)
     yaml_path = project.yaml_path(vendor, robot)
     yaml_rel = project.relative(yaml_path)
     if yaml_path.exists() and not force:
@@ -38,21 +80,21 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                            key="--urdf", fix="give the path of a .urdf or .xacro file")
     urdf = load_urdf(urdf_path, xacro_args=xacro_args,
                      package_paths={k: Path(v) for k, v in package_paths.items()},
-                     display_path=str(urdf_path))
-    rel_pkg = {k: relative_urdf_path(Path(v), yaml_path.parent) for k, v in package_paths.items()}
-    text = suggest_yaml(vendor=vendor, robot=robot, urdf=urdf,
-                        urdf_relative=relative_urdf_path(urdf_path, yaml_path.parent), transport=transport,
-                        xacro_args=xacro_args, package_paths=rel_pkg)
+                     display_path=str(urdf_path), wording=wording.CLI)
+    copy = plan_copy(project, vendor=vendor, robot=robot, urdf_path=urdf_path, urdf=urdf, xacro_args=xacro_args,
+                     package_paths=package_paths, force=force)
+    text = _yaml_text(vendor=vendor, robot=robot, urdf=urdf, urdf_path=urdf_path, yaml_dir=yaml_path.parent,
+                      copy=copy, transport=transport, xacro_args=xacro_args, package_paths=package_paths,
+                      class_prefix=class_prefix)
     # The model is built from the in-memory YAML, through the normal validator: nothing is on disk yet.
     data, lines = parse_yaml_text(text, yaml_rel)
     config = config_from_data(data, lines, yaml_rel, yaml_path.parent)
     model = build_model(config, urdf, yaml_path=yaml_path, project_root=project.root)
     new = LoadedRobot(yaml_path, config, urdf, model)
     others = load_robots(project, [p for p in robot_yamls(project) if p.resolve() != yaml_path.resolve()])
-    clash = next((r for r in others if r.model.robot == robot), None)
+    clash = find_clash([*others, new])
     if clash is not None:
-        raise ProjectError(f"robot name {robot!r} is already used by {project.relative(clash.yaml_path)}",
-                           key="--robot", fix="choose another robot name")
+        raise clash_error(project, clash, class_prefix=class_prefix)
     # Only the new robot's files and the shared ones: other drivers stay as they are, user regions of
     # the shared files (CMakeLists.txt) are carried over and hand edits block as in `generate`.
     generation = plan_generation(project, [*others, new], only=[new])
@@ -62,4 +104,7 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                                 fix="move the edits into user regions, or run `rhi-gen generate --force` first "
                                     "(keeps a backup), then rerun `rhi-gen new`")
     prefixed = [FileChange(f"generated/{c.path}", c.status, c.old, c.new) for c in generation.changes]
-    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, {yaml_rel: text.encode("utf-8")}), *prefixed])
+    warning = existing_tag_warning(urdf, model, xacro=is_xacro(urdf_path))
+    inputs = {yaml_rel: text.encode("utf-8"), **({copy.rel: copy.data} if copy is not None else {})}
+    return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, inputs), *prefixed],
+                        warnings=(warning,) if warning is not None else (), copy=copy)

@@ -91,6 +91,9 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
         class_prefix: Annotated[str | None, typer.Option(
             help="C++ class prefix (class NAMEHardwareInterface; default from --robot: my_arm -> MyArm), "
                  "written to the YAML as class_prefix:.")] = None,
+        transport_option: Annotated[list[str] | None, typer.Option(
+            "--transport-option", help="KEY=VALUE written under transport_options: (e.g. family=go for a "
+                                       "Unitree robot rhi-gen does not know), repeatable.")] = None,
         project: ProjectOpt = None) -> None:
     """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
     from .pipeline.new_robot import plan_new_robot
@@ -100,7 +103,8 @@ def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and
     plan = plan_new_robot(proj, vendor=vendor, robot=robot, urdf_path=urdf, transport=transport,
                           xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
                           package_paths=_parse_pairs(package_path, "--package-path"), force=force,
-                          class_prefix=class_prefix)
+                          class_prefix=class_prefix,
+                          transport_options=_parse_pairs(transport_option, "--transport-option"))
     apply(proj.root, plan.changes)
     m = plan.robot.model
     typer.echo(f"wrote {plan.yaml_relpath}: {len(m.joints)} joints, {m.motor_count} motors, "

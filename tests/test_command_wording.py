@@ -9,6 +9,8 @@ file's line. Every rejection is the whole contract: exit 2, one line, nothing wr
 """
 from __future__ import annotations
 
+import builtins
+import errno
 import os
 import shutil
 from pathlib import Path
@@ -184,10 +186,19 @@ def test_include_of_a_directory(xacro_copy):
                      file=str(top), line=6, words=(f"cannot open {xacro_copy / 'pkgs'} (Is a directory)",))
 
 
-@pytest.mark.skipif(hasattr(os, "geteuid") and os.geteuid() == 0, reason="root reads unreadable files")
-def test_unreadable_include(xacro_copy):
+def test_unreadable_include(xacro_copy, monkeypatch):
     macros = xacro_copy / "xacro" / "macros.xacro"
     macros.chmod(0)
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        # root opens a mode-0 file: make open() answer what the kernel answers everyone else
+        real_open = builtins.open
+
+        def denying_open(file, *args, **kwargs):
+            if os.fspath(file) == str(macros):
+                raise PermissionError(errno.EACCES, os.strerror(errno.EACCES), str(macros))
+            return real_open(file, *args, **kwargs)
+
+        monkeypatch.setattr(builtins, "open", denying_open)
     try:
         top = xacro_copy / "xacro" / "robot.urdf.xacro"
         inspect_rejected("--urdf", top, "--package-path", f"mypkg={xacro_copy / 'pkgs' / 'mypkg'}",

@@ -588,8 +588,10 @@ def test_mimic_continuous_prismatic_and_an_existing_tag_follow_ros2_control(tmp_
         assert cmd is not None, name
         return (cmd.findtext("param[@name='min']"), cmd.findtext("param[@name='max']"))
 
-    assert position_limits("left_wheel_joint") == (None, None)  # continuous: unlimited
-    assert position_limits("right_wheel_joint") == (None, None)
+    for wheel in ("left_wheel_joint", "right_wheel_joint"):  # continuous: velocity-commanded, no position target
+        assert joints[wheel].find("command_interface[@name='position']") is None, wheel
+        assert joints[wheel].find("command_interface[@name='velocity']") is not None, wheel
+        assert joints[wheel].find("state_interface[@name='position']") is not None, wheel
     assert tuple(map(float, position_limits("lift_joint"))) == (0.0, 0.6)  # prismatic: metres
     assert tuple(map(float, position_limits("wrist_joint"))) == (-2.9, 2.9)
     syntax_check_driver(root / "generated" / PACKAGE, "acme", "mobile")

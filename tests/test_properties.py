@@ -34,7 +34,7 @@ from tests.test_hostile_inputs import ANY_LINE, assert_rejected, run_cli, snapsh
 PACKAGE = "robot_hardware_interface"
 HOSTILE = Path(__file__).resolve().parent / "fixtures" / "hostile"
 TRANSPORTS = ("generic_topics", "engineai_topics", "agibot_topics", "unitree_dds")
-UNITREE_SLOTS = 35
+UNITREE_SLOTS = {"hg": 35, "go": 20}  # motor slots per unitree message family
 # Every character rhi-gen accepts in a joint name (model/naming.py's policy, restated independently).
 JOINT_ALPHABET = string.ascii_letters + string.digits + "_./-:+[]()#@"
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
@@ -109,6 +109,7 @@ class RobotSpec:
     imu: dict | None = None
     parameters: dict | None = None
     qos: dict | None = None
+    family: str = ""                # unitree_dds: hg | go
 
     @property
     def actuated(self) -> list[str]:
@@ -147,6 +148,8 @@ class RobotSpec:
             options["groups"] = [{"name": n, "size": s} for n, s in self.groups]
         if self.qos is not None and self.transport != "unitree_dds":
             options["qos"] = self.qos
+        if self.family:
+            options["family"] = self.family
         if options:
             data["transport_options"] = options
         data["joint_map"] = dict(self.joint_map)
@@ -189,11 +192,12 @@ def robot_specs(draw, vendor: str, robot: str) -> RobotSpec:
     actuated = [j.name for j in joints if j.actuated]
     mapped = draw(st.lists(st.sampled_from(actuated), min_size=1, max_size=len(actuated), unique=True))
     unmapped = [n for n in actuated if n not in mapped]
-    transport = draw(st.sampled_from(TRANSPORTS if len(mapped) <= UNITREE_SLOTS else TRANSPORTS[:3]))
+    transport = draw(st.sampled_from(TRANSPORTS if len(mapped) <= UNITREE_SLOTS["go"] else TRANSPORTS[:3]))
+    family = draw(st.sampled_from(sorted(UNITREE_SLOTS))) if transport == "unitree_dds" else ""
     spare = draw(st.integers(0, 4))
     motor_count = len(mapped) + spare
     if transport == "unitree_dds":
-        motor_count = min(motor_count, UNITREE_SLOTS)
+        motor_count = min(motor_count, UNITREE_SLOTS[family])
     indices = draw(st.permutations(range(motor_count)))[:len(mapped)]
     joint_map = dict(zip(mapped, indices))
 
@@ -227,7 +231,7 @@ def robot_specs(draw, vendor: str, robot: str) -> RobotSpec:
     return RobotSpec(vendor=vendor, robot=robot, robot_name=draw(xml_text), links=links, joints=joints,
                      transport=transport, motor_count=motor_count, joint_map=joint_map, unmapped=unmapped,
                      float_type=draw(st.sampled_from([None, "float", "double"])), groups=groups, imu=imu,
-                     parameters=parameters, qos=qos)
+                     parameters=parameters, qos=qos, family=family)
 
 
 @st.composite
@@ -278,7 +282,13 @@ def check_robot_outputs(root: Path, spec: RobotSpec) -> None:
         if spec.imu is not None and "frame_id" in spec.imu:
             assert frame == spec.imu["frame_id"]
     controllers = yaml.safe_load((pkg / "config" / f"{spec.robot}_controllers.yaml").read_text())
-    assert controllers["forward_position_controller"]["ros__parameters"]["joints"] == mapped_in_urdf_order
+    wheels = {j.name for j in spec.joints if j.type == "continuous"}  # velocity-commanded
+    for name, expected in (("forward_position_controller", [n for n in mapped_in_urdf_order if n not in wheels]),
+                           ("forward_velocity_controller", [n for n in mapped_in_urdf_order if n in wheels])):
+        if expected:
+            assert controllers[name]["ros__parameters"]["joints"] == expected
+        else:
+            assert name not in controllers
     if imu_on:
         assert controllers["imu_sensor_broadcaster"]["ros__parameters"]["frame_id"] == frame
 

@@ -182,7 +182,7 @@ def test_g1_yaml_matches_sdk_order():
     assert cfg["motor_count"] == 29 == len(G1_SDK_ORDER)
     assert cfg["joint_map"] == {name: i for i, name in enumerate(G1_SDK_ORDER)}
     assert cfg["transport_options"] == {
-        "lowcmd_topic": "rt/lowcmd", "lowstate_topic": "rt/lowstate", "sdk_slots": 35,
+        "family": "hg", "lowcmd_topic": "rt/lowcmd", "lowstate_topic": "rt/lowstate", "sdk_slots": 35,
         "domain_id": 0, "mode_pr": 0, "release_motion_control": False,
     }
     assert cfg["imu"] == {"enabled": True, "frame_id": "imu_in_pelvis"}

@@ -69,7 +69,7 @@ def rename_joint(root: Path, old: str = "left_knee_joint", new: str = "left_knee
     urdf.write_text(text.replace(f'name="{old}"', f'name="{new}"'))
     yml = root / "robots/unitree/g1.yaml"
     text, n = re.subn(rf"^  {old}:", f"  {new}:", yml.read_text(), flags=re.M)
-    assert n == 1
+    assert n == 2  # its joint_map entry and its default_gains entry
     yml.write_text(text)
 
 

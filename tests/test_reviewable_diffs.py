@@ -82,7 +82,7 @@ def respell(text: str) -> str:
     text = "# a new header comment\n\n" + text.replace("vendor: unitree", "vendor: 'unitree'  # quoted now")
     text = text.replace("  state_decimation: 1\n", "  state_decimation: 1   # every frame\n\n")
     text = re.sub(r"^transport_options:\n((?:  .*\n)+)", "", text, flags=re.M)  # moved to the end, as flow
-    return text + ("transport_options: {lowcmd_topic: rt/lowcmd, lowstate_topic: \"rt/lowstate\", sdk_slots: 35,"
+    return text + ("transport_options: {family: hg, lowcmd_topic: rt/lowcmd, lowstate_topic: \"rt/lowstate\", sdk_slots: 35,"
                    " domain_id: 0, mode_pr: 0, release_motion_control: false}\n")
 
 

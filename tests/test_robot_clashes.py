@@ -57,12 +57,13 @@ def test_the_class_prefix_fix_works(h1_2):
 
 
 def test_the_other_robot_name_fix_works(h1_2):
-    new(h1_2, "unitree", "h1_2b")
+    new(h1_2, "unitree", "h1_2b", "--transport-option", "family=hg")
     assert run_cli("check", "--project", h1_2).code == 0
 
 
 def test_a_class_prefix_that_clashes_names_the_option(h1_2):
     new_rejected(h1_2, "--vendor", "unitree", "--robot", "h2", "--urdf", ARM, "--class-prefix", "H12",
+                 "--transport-option", "family=hg",
                  file="--class-prefix", words=(("plugin class unitree::H12HardwareInterface is already generated "
                                                 "for robots/unitree/h1_2.yaml"), "choose another --class-prefix"))
 

@@ -98,9 +98,18 @@ def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
 
 
 def test_unitree_motor_count_above_slots(tmp_path):
-    text = BASE.replace("transport: generic_topics", "transport: unitree_dds").replace("motor_count: 3", "motor_count: 36")
+    text = BASE.replace("transport: generic_topics", "transport: unitree_dds").replace("motor_count: 3", "motor_count: 36") + (
+        "transport_options: {family: hg}\n")
     err = error_of(tmp_path, text)
     assert err.key == "motor_count" and "35 motor slots" in str(err)
+
+
+def test_unknown_unitree_robot_must_name_its_family(tmp_path):
+    text = BASE.replace("transport: generic_topics", "transport: unitree_dds")
+    err = error_of(tmp_path, text)
+    assert err.key == "transport_options" and "family: hg" in str(err) and "go (" in str(err)
+    go = text + "transport_options: {family: go}\n"
+    assert "20 motor slots" in str(error_of(tmp_path, go.replace("motor_count: 3", "motor_count: 21")))
 
 
 def test_agibot_groups_must_sum_to_motor_count(tmp_path):

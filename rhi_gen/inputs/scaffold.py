@@ -6,6 +6,7 @@ normal validator, so `new` can never write a YAML that `generate` would reject.
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
@@ -14,6 +15,7 @@ from ..errors import ConfigError, UrdfError
 from ..model import MAX_MOTORS, UrdfJoint, UrdfRobot
 from ..model.naming import joint_name_problem
 from ..render.literals import yaml_string
+from ..transports import KnownRobot
 
 
 def _limits_comment(joint: UrdfJoint) -> str:
@@ -27,12 +29,18 @@ def _limits_comment(joint: UrdfJoint) -> str:
 def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str,
                  transport: str | None = None, xacro_args: Mapping[str, str] | None = None,
                  package_paths: Mapping[str, str] | None = None, class_prefix: str | None = None,
-                 urdf_comment: Sequence[str] = ()) -> str:
-    """The text of a new vendor YAML for ``urdf``; ``urdf_comment``: comment lines above ``urdf:``."""
+                 urdf_comment: Sequence[str] = (), transport_options: Mapping[str, str] | None = None) -> str:
+    """The text of a new vendor YAML for ``urdf``; ``urdf_comment``: comment lines above ``urdf:``;
+    ``transport_options``: ``--transport-option KEY=VALUE`` pairs, written over the suggested options."""
     known = transports.known_robot(vendor, robot)
     chosen = transports.for_vendor(vendor) if transport is None else transports.get(transport, key="--transport")
     if known is not None and known.transport != chosen.name:
         known = None  # the vendor order belongs to the vendor's own transport
+    given = dict(transport_options or {})
+    for key in given:
+        if key not in chosen.option_keys:
+            raise ConfigError(f"{chosen.name} has no option {key!r}", key="--transport-option",
+                              fix=f"use one of {', '.join(chosen.option_keys)}")
     actuated = list(urdf.actuated_joints)
     if not actuated:
         raise ConfigError("has no actuated joints (revolute, continuous or prismatic without <mimic>)",
@@ -49,13 +57,16 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
                           fix="split the robot into several descriptions, or make the joints that no motor "
                               "drives fixed")
     by_name = {j.name: j for j in actuated}
-    order = transports.suggest_order([j.name for j in actuated], known)
-    motor_count = len(order)
-    if chosen.motor_slots is not None and motor_count > chosen.motor_slots:
-        raise ConfigError(f"has {motor_count} actuated joints but {chosen.slots_holder} has {chosen.motor_slots} "
+    slots = transports.suggest_slots([j.name for j in actuated], known)
+    order = [name for name, _ in slots]
+    motor_count = max(slot for _, slot in slots) + 1
+    slots_count, holder = chosen.slots_for(known, given)
+    if slots_count is not None and motor_count > slots_count:
+        raise ConfigError(f"has {motor_count} actuated joints but {holder} has {slots_count} "
                           "motor slots", file=urdf.source,
                           fix=f"use --transport {transports.DEFAULT}, or map a subset and list the rest under "
                               "unmapped_joints")
+    chosen.check_new(vendor, robot, known, given)
 
     lines = [
         f"# Vendor YAML for {vendor}/{robot}, written by `rhi-gen new`.",
@@ -92,14 +103,43 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         "  state_decimation: 1",
         "  state_timeout_ms: 100",
     ]
-    lines += ["transport_options:", *chosen.suggest_options(order, known)]
+    lines += ["transport_options:", *_with_given(chosen.suggest_options(order, known, given), given)]
     group_of = chosen.joint_labels(order, known)
     lines.append("joint_map:")
-    for index, name in enumerate(order):
+    for index, (name, slot) in enumerate(slots):
         label = f"{group_of[index]}, " if group_of else ""
-        lines.append(f"  {yaml_string(name)}: {index}  # {label}{_limits_comment(by_name[name])}")
+        lines.append(f"  {yaml_string(name)}: {slot}  # {label}{_limits_comment(by_name[name])}")
     lines.append("unmapped_joints: []")
+    if chosen.carries_gains:
+        lines += _default_gains_lines(vendor, robot, known, order)
     return "\n".join(lines) + "\n"
+
+
+def _with_given(suggested: list[str], given: Mapping[str, str]) -> list[str]:
+    """The suggested ``transport_options`` lines with each ``--transport-option`` written over its key."""
+    out = [line for line in suggested if line.split(":", 1)[0].strip() not in given]
+    return [f"  {key}: {_scalar(value)}  # --transport-option" for key, value in given.items()] + out
+
+
+def _scalar(value: str) -> str:
+    """A command-line value as YAML: a plain number or boolean as typed, anything else quoted."""
+    plain = re.fullmatch(r"-?\d+(\.\d+)?|true|false", value)
+    return value if plain else yaml_string(value)
+
+
+def _default_gains_lines(vendor: str, robot: str, known: KnownRobot | None, mapped: Sequence[str]) -> list[str]:
+    """default_gains: a known robot's (from the vendor's own examples), or a statement that there are none."""
+    head = ["# Gains while a controller claims a joint's position or velocity but not its stiffness /",
+            "# damping (joint_trajectory_controller, forward_position_controller)."]
+    gains = [g for g in known.default_gains if g[0] in mapped] if known is not None else []
+    if not gains:
+        why = known.gains_note if known is not None and known.gains_note else \
+            f"rhi-gen knows no gains for {vendor}/{robot}"
+        return [*head, f"# None here: {why}.",
+                "# A position-only controller leaves the robot limp until you add, per joint,",
+                "#   some_joint: {stiffness: 40.0, damping: 1.0}", "default_gains: {}"]
+    return [*head, f"# From {known.gains_note if known is not None else ''}.", "default_gains:",
+            *(f"  {yaml_string(n)}: {{stiffness: {kp!r}, damping: {kd!r}}}" for n, kp, kd in gains)]
 
 
 def relative_urdf_path(urdf: Path, yaml_dir: Path) -> str:

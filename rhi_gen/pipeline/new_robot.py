@@ -4,7 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import InputWarning, ProjectError, WriteBlockedError
+from ..errors import ConfigError, InputWarning, ProjectError, WriteBlockedError
 from ..inputs import wording
 from ..inputs.scaffold import relative_urdf_path, suggest_yaml
 from ..inputs.urdf_loader import is_xacro, load_urdf
@@ -51,19 +51,30 @@ def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> 
 
 def _yaml_text(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_path: Path, yaml_dir: Path,
                copy: DescriptionCopy | None, transport: str | None, xacro_args: dict[str, str],
-               package_paths: dict[str, str], class_prefix: str | None) -> str:
+               package_paths: dict[str, str], class_prefix: str | None, transport_options: dict[str, str]) -> str:
     """The suggested YAML: naming the description where it is (paths relative to the YAML), or its copy."""
     if copy is not None:  # already expanded: no xacro_args or package_paths to record
         return suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=copy.file_name, transport=transport,
-                            class_prefix=class_prefix, urdf_comment=copy.yaml_comment())
+                            class_prefix=class_prefix, urdf_comment=copy.yaml_comment(),
+                            transport_options=transport_options)
     return suggest_yaml(vendor=vendor, robot=robot, urdf=urdf, urdf_relative=relative_urdf_path(urdf_path, yaml_dir),
                         transport=transport, xacro_args=xacro_args, class_prefix=class_prefix,
+                        transport_options=transport_options,
                         package_paths={k: relative_urdf_path(Path(v), yaml_dir) for k, v in package_paths.items()})
+
+
+def _in_command_words(exc: ConfigError, given: dict[str, str]) -> ConfigError:
+    """A bad ``--transport-option`` value, named as the option (the YAML it would go to is not written)."""
+    key = (exc.key or "").removeprefix("transport_options.").split(".")[0]
+    if key not in given:
+        return exc
+    return ConfigError(f"{key}={given[key]}: {exc.message}", key="--transport-option", fix=exc.fix)
 
 
 def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path, transport: str | None,
                    xacro_args: dict[str, str], package_paths: dict[str, str], force: bool,
-                   class_prefix: str | None = None) -> NewRobotPlan:
+                   class_prefix: str | None = None,
+                   transport_options: dict[str, str] | None = None) -> NewRobotPlan:
     """Everything `rhi-gen new` will write, computed before anything is written.
 
     Refuses (ProjectError, nothing written) a robot that clashes with one of the project: same robot
@@ -85,10 +96,13 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
                      package_paths=package_paths, force=force)
     text = _yaml_text(vendor=vendor, robot=robot, urdf=urdf, urdf_path=urdf_path, yaml_dir=yaml_path.parent,
                       copy=copy, transport=transport, xacro_args=xacro_args, package_paths=package_paths,
-                      class_prefix=class_prefix)
+                      class_prefix=class_prefix, transport_options=transport_options or {})
     # The model is built from the in-memory YAML, through the normal validator: nothing is on disk yet.
     data, lines = parse_yaml_text(text, yaml_rel)
-    config = config_from_data(data, lines, yaml_rel, yaml_path.parent)
+    try:
+        config = config_from_data(data, lines, yaml_rel, yaml_path.parent)
+    except ConfigError as exc:
+        raise _in_command_words(exc, transport_options or {}) from None
     model = build_model(config, urdf, yaml_path=yaml_path, project_root=project.root)
     new = LoadedRobot(yaml_path, config, urdf, model)
     others = load_robots(project, [p for p in robot_yamls(project) if p.resolve() != yaml_path.resolve()])

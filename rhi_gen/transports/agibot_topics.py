@@ -7,7 +7,7 @@ sensor_msgs/Imu on /aima/hal/imu/torso/state. A joint's SDK index is (group offs
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from ..errors import ConfigError
@@ -63,7 +63,8 @@ class AgibotTopics(Transport):
             sdk_slots=motor_count,
         )
 
-    def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
         lines = ["  groups:"]
         for name, size in _suggested_groups(order, known):
             lines += [f"    - name: {name}", f"      size: {size}",

@@ -11,7 +11,7 @@ passes to it) in ``templates/robot/glue/<name>.j2``, found by name.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -106,8 +106,18 @@ class Transport(ABC):
         return tuple(i for i in full if self.carries_gains or i not in ("stiffness", "damping"))
 
     @abstractmethod
-    def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
-        """The YAML lines under ``transport_options:`` that `rhi-gen new` writes (indented two spaces)."""
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
+        """The YAML lines under ``transport_options:`` that `rhi-gen new` writes (indented two spaces);
+        ``given``: the ``--transport-option`` values (written over these lines by the caller)."""
+
+    def slots_for(self, known: KnownRobot | None, given: Mapping[str, str]) -> tuple[int | None, str]:
+        """(motor slots, what has them) for a new robot: ``motor_slots`` unless the options change it."""
+        return self.motor_slots, self.slots_holder
+
+    def check_new(self, vendor: str, robot: str, known: KnownRobot | None, given: Mapping[str, str]) -> None:
+        """Refuse (ConfigError, in `rhi-gen new`'s words) a new robot this transport cannot guess for."""
+        return None  # every transport but unitree_dds can guess: nothing to refuse
 
     def joint_labels(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
         """Per motor slot, a label for the joint_map comment `rhi-gen new` writes (none by default)."""

@@ -6,7 +6,7 @@ feed_forward_torque, torque, stiffness, damping, parallel_parser_type), /hardwar
 """
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from ..inputs.validator import Validator
@@ -54,7 +54,8 @@ class EngineaiTopics(Transport):
             sdk_slots=motor_count,
         )
 
-    def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
         return [f"  command_topic: {COMMAND_TOPIC}", f"  state_topic: {STATE_TOPIC}", f"  imu_topic: {IMU_TOPIC}",
                 "  parallel_parser_type: 0  # 0 CLASSIC_PARSER, 1 RL_PARSER", qos_line(3)]
 

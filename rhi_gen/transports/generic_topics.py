@@ -5,7 +5,7 @@ on plain ROS 2 topics, so a bridge can connect any robot. JointState carries no 
 """
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from ..inputs.validator import Validator
@@ -44,7 +44,8 @@ class GenericTopics(Transport):
                           fix="give command_topic and state_topic different names")
         return result
 
-    def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
         return [f"  command_topic: {COMMAND_TOPIC}", f"  state_topic: {STATE_TOPIC}", f"  imu_topic: {IMU_TOPIC}",
                 qos_line(1)]
 

@@ -9,7 +9,7 @@ headers are shared by every Unitree driver of the package, so they are generated
 """
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -172,11 +172,34 @@ class UnitreeDds(Transport):
                           fix="remove motor_modes, or set family: go")
         return replace(options, family=family, sdk_slots=slots, motor_modes=modes)
 
-    def suggest_options(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
-        family = known.family if known else ""
+    def slots_for(self, known: KnownRobot | None, given: Mapping[str, str]) -> tuple[int | None, str]:
+        family = given.get("family") or (known.family if known is not None else "")
+        if family in FAMILIES:
+            return FAMILIES[family], f"a unitree {family} LowCmd_"
+        return self.motor_slots, self.slots_holder
+
+    def check_new(self, vendor: str, robot: str, known: KnownRobot | None, given: Mapping[str, str]) -> None:
+        """An unknown Unitree robot: the family cannot be guessed (one family's bytes are garbage to the other)."""
+        if (known is None or not known.family) and "family" not in given:
+            raise ConfigError(f"rhi-gen does not know which low-level messages {vendor}/{robot} speaks",
+                              key="--transport-option",
+                              fix="add --transport-option family=hg (" + FAMILY_ROBOTS["hg"] + ") or "
+                                  "--transport-option family=go (" + FAMILY_ROBOTS["go"] + ")")
+        if "family" in given and given["family"] not in FAMILIES:
+            raise ConfigError(f"unknown unitree message family {given['family']!r}", key="--transport-option",
+                              fix="use --transport-option family=hg or family=go")
+
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
+        family = (given or {}).get("family") or (known.family if known else "")
+        if family not in FAMILIES:
+            family = ""  # a wrong --transport-option family= is reported by the validator
         lines = [f"  family: {family}  # " + ("; ".join(f"{f}: {r}" for f, r in FAMILY_ROBOTS.items()))] \
             if family else []  # unknown robot: validation then asks for the family
-        lines += ["  lowcmd_topic: rt/lowcmd", "  lowstate_topic: rt/lowstate", "  domain_id: 0"]
+        lines += ["  lowcmd_topic: rt/lowcmd", "  lowstate_topic: rt/lowstate"]
+        if family:
+            lines.append(f"  sdk_slots: {FAMILIES[family]}  # motor slots of a {family} LowCmd_ (fixed by the family)")
+        lines.append("  domain_id: 0")
         if family == "go" and known is not None and known.motor_modes:
             lines.append(f"  motor_modes: [{', '.join(str(m) for m in known.motor_modes)}]  # MotorCmd_.mode per slot")
         if family != "go":

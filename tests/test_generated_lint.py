@@ -81,3 +81,16 @@ def test_long_names_lint_clean(long_names_package):
     result = run_uncrustify(long_names_package)
     if result.findings:
         pytest.fail("\n".join(f"--- {name}\n{diff}" for name, diff in result.diffs.items())[:20000], pytrace=False)
+
+
+def test_colcon_test_runs_these_linters(package):
+    """package.xml declares the linters as test dependencies and CMakeLists.txt hands them to
+    ament_lint_auto inside BUILD_TESTING, before ament_package() (whose hook registers the tests)."""
+    from lxml import etree
+
+    test_depends = [e.text for e in etree.parse(str(package / "package.xml")).getroot().iter("test_depend")]
+    assert {"ament_lint_auto", "ament_cmake_cpplint", "ament_cmake_uncrustify"} <= set(test_depends)
+    cmake = (package / "CMakeLists.txt").read_text()
+    testing = cmake.index("if(BUILD_TESTING)")
+    call = cmake.index("ament_lint_auto_find_test_dependencies()")
+    assert testing < cmake.index("find_package(ament_lint_auto QUIET)") < call < cmake.index("ament_package()")

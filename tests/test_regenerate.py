@@ -552,3 +552,21 @@ def test_diff_is_coloured_on_a_terminal_only(project, capsys):
     assert "\x1b[" not in _run_on_tty(args, {**env, "NO_COLOR": "1"})
     piped = subprocess.run([sys.executable, "-m", "rhi_gen.cli", *args], capture_output=True, text=True, env=env)
     assert piped.returncode == 1 and "\x1b[" not in piped.stdout and "renamed     joint 3" in piped.stdout
+
+
+def test_code_in_a_region_retired_by_the_shared_core_names_the_hook_that_takes_it(project, capsys):
+    """A driver written before the shared core kept SDK set-up in regions such as 'on_activate';
+    regenerating must neither drop that code nor leave the user guessing where it goes now."""
+    src = project / "generated/robot_hardware_interface/src/unitree/g1.cpp"
+    src.write_text(src.read_text().replace(
+        "}  // namespace unitree\n",
+        "// rhi-gen:begin-user-region on_activate\n  startArmBrakes();\n// rhi-gen:end-user-region on_activate\n"
+        "}  // namespace unitree\n"))
+    before = tree(project)
+    rename_joint(project)
+    inputs = tree(project)
+    code, _, err = cli(capsys, project, "generate")
+    assert code == 2 and len(err.splitlines()) == 1, err
+    assert "generated/robot_hardware_interface/src/unitree/g1.cpp:" in err and "'on_activate'" in err
+    assert "override on_activate_hook()" in err and "'callbacks' region" in err and "--force" in err
+    assert tree(project) == inputs and inputs != before  # nothing written

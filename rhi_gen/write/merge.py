@@ -13,6 +13,14 @@ from .regions import FIX_MARKERS, OrphanedRegion, splice, user_code_regions
 FIX_FORCE = "or rerun with --force to overwrite it (the current file is kept in generated/.rhi-gen-backup/)"
 FIX_TEMPLATE_BUG = "this is a bug in rhi-gen's templates; please report it"
 
+# Driver regions of rhi-gen before the shared driver core, and the SystemDriver hook their code moves to.
+RETIRED_REGIONS = {
+    "parameters": "on_init_hook(const hardware_interface::HardwareInfo & info)",
+    "sdk_init": "on_init_hook(const hardware_interface::HardwareInfo & info)",
+    "on_activate": "on_activate_hook()",
+    "on_deactivate": "on_deactivate_hook()",
+}
+
 
 @dataclass(frozen=True)
 class Blocked:
@@ -70,9 +78,15 @@ def _edit_problem(rel: str, old_text: str, recorded: dict[str, str], have_manife
 def _orphan_problem(rel: str, orphans: list[OrphanedRegion], why: str) -> Blocked:
     names = ", ".join(f"{o.name!r} (line {o.line})" for o in orphans)
     plural = "s" if len(orphans) > 1 else ""
+    retired = [o for o in orphans if o.name in RETIRED_REGIONS and rel.endswith(".cpp")]
+    fix = f"move the code into another user region or empty the region, {FIX_FORCE}"
+    if retired:
+        hooks = "; ".join(f"{o.name!r} -> override {RETIRED_REGIONS[o.name]}" for o in retired)
+        fix = (f"the driver logic moved into robot_hardware_interface::SystemDriver, whose hooks take this code "
+               f"({hooks}): declare the override in the header's 'members' region, define it in this file's "
+               f"'callbacks' region, empty the old region, then rerun; {FIX_FORCE}")
     return Blocked(rel, "orphaned", f"user region{plural} {names} hold{'' if plural else 's'} code but {why}",
-                   f"move the code into another user region or empty the region, {FIX_FORCE}",
-                   line=orphans[0].line)
+                   fix, line=orphans[0].line)
 
 
 def merge_existing(rel: str, rendered: str, old_bytes: bytes, recorded: dict[str, str],

@@ -14,7 +14,7 @@ from types import MappingProxyType
 
 from ..errors import ConfigError
 from ..model.naming import suggest
-from . import agibot_topics, engineai_topics, generic_topics, unitree_dds
+from . import agibot_topics, custom, engineai_topics, generic_topics, unitree_dds
 from .base import (
     COMMON_DEPENDENCIES,
     PLAIN_CMAKE,
@@ -27,7 +27,7 @@ from .base import (
 )
 
 _ALL: tuple[Transport, ...] = (unitree_dds.TRANSPORT, agibot_topics.TRANSPORT, engineai_topics.TRANSPORT,
-                               generic_topics.TRANSPORT)
+                               generic_topics.TRANSPORT, custom.TRANSPORT)
 TRANSPORTS: Mapping[str, Transport] = MappingProxyType({t.name: t for t in _ALL})
 NAMES: tuple[str, ...] = tuple(TRANSPORTS)
 DEFAULT = generic_topics.NAME  # for a vendor rhi-gen has no transport of its own for

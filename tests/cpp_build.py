@@ -128,6 +128,9 @@ def syntax_check_driver(package_dir: Path, vendor: str, robot: str, flags: Seque
 # =====================================================================================================
 HARNESS_DIR = REPO / "tests" / "cpp" / "harness"
 HARNESS_ROBOTS = HARNESS_DIR / "robots"
+# The toy motor bus of the custom transport's worked example, and its filled user regions.
+TOY_BUS_DIR = REPO / "tests" / "cpp" / "toy_bus"
+TOY_BUS_REGIONS = TOY_BUS_DIR / "regions.cpp.in"
 PACKAGE = "robot_hardware_interface"
 ENV_C = {**os.environ, "LC_ALL": "C", "LANG": "C"}
 
@@ -149,6 +152,7 @@ TRANSPORT_MACROS = {
     "agibot_topics": "RHI_TRANSPORT_AGIBOT_TOPICS",
     "engineai_topics": "RHI_TRANSPORT_ENGINEAI_TOPICS",
     "generic_topics": "RHI_TRANSPORT_GENERIC_TOPICS",
+    "custom": "RHI_TRANSPORT_CUSTOM",
 }
 
 
@@ -460,7 +464,7 @@ class CppBuilder:
         self._standins = _tree_digest(STANDINS, (".hpp", ".h"))  # every distro's headers
         self._message_flags = message_include_flags()
         self._messages = messages_digest()
-        self._harness = _tree_digest(HARNESS_DIR)
+        self._harness = _tree_digest(HARNESS_DIR) + _tree_digest(TOY_BUS_DIR, (".hpp", ".in"))
         self._lock = threading.Lock()
         self._inflight: dict[str, threading.Event] = {}
         self._results: dict[str, CompileResult] = {}
@@ -570,7 +574,7 @@ def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
     """driver_harness.cpp for one robot against ``distro``'s stand-ins (no driver needed)."""
     m = rb.model
     return builder.compile(HARNESS_DIR / "driver_harness.cpp", FLAVOURS[flavour],
-                           [rb.data_dir, HARNESS_DIR, *DISTROS[distro].include_dirs],
+                           [rb.data_dir, HARNESS_DIR, TOY_BUS_DIR, *DISTROS[distro].include_dirs],
                            digest_parts=[rb.data_header, builder._harness],
                            name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro)
 
@@ -588,7 +592,10 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
     pkg = package_digest(rb.package_dir)
     tag = f"{m.vendor}_{m.robot}_{flavour}_{distro}"
     driver_src = driver_source(rb.package_dir, m.vendor, m.robot)
-    steps = [builder.compile(driver_src, flags, [pkg_include, *standins], digest_parts=[pkg],
+    # A custom-transport driver's filled regions include the toy bus (tests/cpp/toy_bus/).
+    toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
+    steps = [builder.compile(driver_src, flags, [pkg_include, *toy_bus, *standins],
+                             digest_parts=[pkg, builder._harness if toy_bus else ""],
                              name=f"driver_{tag}", distro=distro)]
     steps.append(compile_harness_object(builder, rb, flavour, distro))
     if m.transport == "unitree_dds":
@@ -706,14 +713,37 @@ class RenderedPackage:
         return next(b for b in self.builds if b.label == label)
 
 
+def fill_custom_regions(loaded_robots, package_dir: Path, regions: Path = TOY_BUS_REGIONS) -> list[Path]:
+    """Fill the user regions of every custom-transport robot's source with ``regions`` (the toy bus),
+    through rhi-gen's own splice, as a regeneration over a filled file does. Returns the files filled."""
+    from rhi_gen.write.regions import splice
+
+    filled = []
+    for loaded in loaded_robots:
+        m = loaded.model
+        if m.transport != "custom":
+            continue
+        path = driver_source(package_dir, m.vendor, m.robot)
+        text, orphans = splice(path.read_text(encoding="utf-8"), regions.read_text(encoding="utf-8"), str(path))
+        assert not orphans, f"{regions.name} has regions the generated {path.name} lacks: {orphans}"
+        path.write_text(text, encoding="utf-8")
+        filled.append(path)
+    return filled
+
+
 def render_test_package(root: Path, *, only: Sequence[str] | None = None, template_dir: Path | None = None,
-                        extra_robots: bool = True) -> RenderedPackage:
-    """Project (robots/ + test robots) -> rendered package -> robot_data.hpp per robot, under root."""
+                        extra_robots: bool = True, fill_custom: bool = True) -> RenderedPackage:
+    """Project (robots/ + test robots) -> rendered package -> robot_data.hpp per robot, under root.
+
+    ``fill_custom``: custom-transport robots get the toy bus filled into their user regions (without
+    it they are as generated: they compile, and refuse to activate)."""
     project = make_test_project(root / "project", extra_robots=extra_robots, only=only)
     loaded = load_models(project)
     package_dir = root / "generated" / PACKAGE
     factory = template_env_factory(template_dir) if template_dir is not None else None
     render_package_to(loaded, package_dir, factory)
+    if fill_custom:
+        fill_custom_regions(loaded, package_dir)
     builds = prepare_robot_builds(loaded, package_dir, root / "work")
     return RenderedPackage(project, package_dir, loaded, builds)
 

@@ -33,7 +33,7 @@ import pytest
 
 from rhi_gen.transports import TRANSPORTS
 from tests import vendor_msgs
-from tests.cpp_build import (PACKAGE, WARNING_FLAGS, build_harness,
+from tests.cpp_build import (PACKAGE, WARNING_FLAGS, build_harness, render_test_package,
                              crc_header, expand_description, message_include_flags, plugin_types,
                              project_robot_labels, require_compiler, run_binary_retrying, run_parallel,
                              session_builder, session_reference_package, standin_flags, yaml_joint_map)
@@ -106,7 +106,7 @@ def test_every_robot_of_the_project_gets_a_harness(reference):
     for label in ("unitree/g1", "agibot/x2", "engineai/pm01"):
         assert label in ROBOTS, f"reference robot {label} is missing from robots/"
     transports = {b.model.transport for b in reference.builds}
-    assert transports == {"unitree_dds", "agibot_topics", "engineai_topics", "generic_topics"}, transports
+    assert transports == {"unitree_dds", "agibot_topics", "engineai_topics", "generic_topics", "custom"}, transports
 
 
 # ------------------------------------------------------------------------------------ headers alone
@@ -241,6 +241,33 @@ def test_no_torn_frames_with_real_threads(harness_runs, reference, label, distro
     m = re.search(r"torn states (\d+), torn commands (\d+), bad CRCs (\d+)", run.stdout)
     assert m, f"{label} ({flavour}): the threaded scenario did not report:\n{run.stdout[-3000:]}"
     assert m.groups() == ("0", "0", "0"), f"{label} ({flavour}): {m.group(0)}"
+
+
+# ------------------------------------------------------------------------------------ custom, unfilled
+CUSTOM_ROBOTS = [label for label in ROBOTS if label == "odri/solo12"]
+
+
+@pytest.mark.parametrize("distro", ["humble", "rolling"])
+@pytest.mark.parametrize("label", CUSTOM_ROBOTS)
+def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro, tmp_path_factory):
+    """A custom-transport driver as generated (regions not filled in) compiles with -Werror, loads,
+    initialises, and refuses on_activate with exactly one error line naming the region and file;
+    it starts no writer and sends nothing (driver_harness.cpp, RHI_CUSTOM_EXPECT_UNFILLED)."""
+    package = render_test_package(tmp_path_factory.mktemp("unfilled"), only=[label], fill_custom=False)
+    b = package.build(label)
+    source = (package.package_dir / "src" / b.model.vendor / f"{b.model.robot}.cpp").read_text()
+    assert source.count("#define RHI_CUSTOM_NOT_FILLED_IN_") == 3, "three function regions, each marked"
+    b.data_header += "#define RHI_CUSTOM_EXPECT_UNFILLED 1\n"
+    (b.data_dir / "robot_data.hpp").write_text(b.data_header, encoding="utf-8")
+    link, steps = build_harness(session_builder(tmp_path_factory), b, "plain", distro=distro)
+    failed = [s for s in steps if not s.ok]
+    assert not failed and link.ok, f"the unfilled driver does not build ({distro}):\n{(failed or [link])[0].stderr[:6000]}"
+    run = run_binary_retrying(link.path)
+    assert run.returncode == 0 and run.failed == 0 and run.sections.get("unfilled", (0, 0))[0] > 0, run.describe()
+    refused = [line for line in run.stdout.splitlines() if line.startswith("refused: ")]
+    assert refused == [f"refused: custom transport: region 'transport_connect' of src/{b.model.vendor}/"
+                       f"{b.model.robot}.cpp is not filled in: refusing to activate (write the SDK calls there and "
+                       "delete its RHI_CUSTOM_NOT_FILLED_IN line)"], refused
 
 
 # ------------------------------------------------------------------------------------ report

@@ -31,11 +31,15 @@ import yaml
 
 from rhi_gen.cli import main
 from tests import vendor_msgs
-from tests.cpp_build import ENV_C, REPO, WARNING_FLAGS, message_include_flags, project_robot_labels, \
-    require_compiler, run_compiler, standin_flags
+from tests.cpp_build import DISTROS, ENV_C, HARNESS_ROBOTS, REPO, WARNING_FLAGS, message_include_flags, \
+    project_robot_labels, require_compiler, run_compiler, standin_flags
 
 PACKAGE = "robot_hardware_interface"
 LABELS = project_robot_labels(extra_robots=False)  # vendor/robot of robots/*/*.yaml
+# The harness's custom-transport robots, as generated (user regions not filled in): their gtest must
+# run without hardware and without an SDK on every supported distro.
+CUSTOM_LABELS = sorted(f"{y.parent.name}/{y.stem}" for y in HARNESS_ROBOTS.glob("*/*.yaml")
+                       if yaml.safe_load(y.read_text(encoding="utf-8"))["transport"] == "custom")
 GMOCK_LIBS = ("-lgmock_main", "-lgmock", "-lgtest")
 
 
@@ -73,6 +77,11 @@ def package_dir(tmp_path_factory) -> Path:
     """robots/ rendered into a temporary project (generated/ of the repository is not touched)."""
     project = tmp_path_factory.mktemp("gtest_project")
     shutil.copytree(REPO / "robots", project / "robots")
+    for label in CUSTOM_LABELS:
+        vendor, robot = label.split("/")
+        (project / "robots" / vendor).mkdir(exist_ok=True)
+        for path in (HARNESS_ROBOTS / vendor).glob(f"{robot}.*"):
+            shutil.copy2(path, project / "robots" / vendor / path.name)
     assert main(["generate", "--project", str(project)]) == 0
     return project / "generated" / PACKAGE
 
@@ -82,6 +91,8 @@ def package_dir(tmp_path_factory) -> Path:
 # the plugin through pluginlib and rejects joints missing from the URDF); Jazzy and Kilted share
 # Rolling's path and are covered by the driver harness (tests/test_cpp_drivers.py).
 GTEST_DISTROS = ("humble", "rolling")
+JOBS = [(label, distro) for label in LABELS for distro in GTEST_DISTROS] + \
+    [(label, distro) for label in CUSTOM_LABELS for distro in DISTROS]
 
 
 def _flags(package: Path, distro: str) -> list[str]:
@@ -91,7 +102,10 @@ def _flags(package: Path, distro: str) -> list[str]:
 
 def _skip_reason(label: str) -> str | None:
     """Set when the robot's transport needs vendor messages that cannot be generated (no ../shared)."""
-    transport = yaml.safe_load((REPO / "robots" / f"{label}.yaml").read_text(encoding="utf-8"))["transport"]
+    path = REPO / "robots" / f"{label}.yaml"
+    if not path.is_file():
+        path = HARNESS_ROBOTS / f"{label}.yaml"
+    transport = yaml.safe_load(path.read_text(encoding="utf-8"))["transport"]
     return vendor_msgs.skip_reason(transport)
 
 
@@ -146,17 +160,16 @@ def results(package_dir, tmp_path_factory) -> dict[tuple[str, str], GtestResult]
         return job, result
 
     with ThreadPoolExecutor(max_workers=2) as pool:
-        return dict(pool.map(one, [(label, distro) for label in LABELS for distro in GTEST_DISTROS]))
+        return dict(pool.map(one, JOBS))
 
 
 def test_every_robot_has_a_gtest(package_dir):
     assert LABELS, "no robots under robots/"
     made = sorted(p.name for p in (package_dir / "test").glob("test_*_hardware_interface.cpp"))
-    assert made == sorted(_source(package_dir, label).name for label in LABELS)
+    assert made == sorted(_source(package_dir, label).name for label in LABELS + CUSTOM_LABELS)
 
 
-@pytest.mark.parametrize("distro", GTEST_DISTROS)
-@pytest.mark.parametrize("label", LABELS)
+@pytest.mark.parametrize(("label", "distro"), JOBS, ids=[f"{label}-{distro}" for label, distro in JOBS])
 def test_gtest_compiles(results, label, distro):
     require_toolchain()
     if _skip_reason(label):
@@ -164,8 +177,7 @@ def test_gtest_compiles(results, label, distro):
     assert results[(label, distro)].syntax_error is None, results[(label, distro)].syntax_error
 
 
-@pytest.mark.parametrize("distro", GTEST_DISTROS)
-@pytest.mark.parametrize("label", LABELS)
+@pytest.mark.parametrize(("label", "distro"), JOBS, ids=[f"{label}-{distro}" for label, distro in JOBS])
 def test_gtest_runs_against_the_standin(results, label, distro):
     """No GTEST_SKIP on any supported distro: every test of the suite runs and passes."""
     require_toolchain()

@@ -2,7 +2,9 @@
 zero ament_cpplint and zero ament_uncrustify findings (ROS 2 default configuration, tests/ament_lint.py).
 
 The package holds the reference robots of robots/ plus the harness's generic_topics robot
-(tests/cpp/harness/robots/acme/scara), so every transport's templates are linted. To see and fix the
+(tests/cpp/harness/robots/acme/scara) and custom robot (odri/solo12, regions as generated), so every
+transport's templates are linted; the custom robot is linted again with the README's toy-bus regions
+filled in. To see and fix the
 findings by hand: tests/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.ament_lint DIR`.
 """
 from __future__ import annotations
@@ -14,7 +16,7 @@ import pytest
 
 from rhi_gen.cli import main
 from tests.ament_lint import Finding, run_cpplint, run_uncrustify
-from tests.cpp_build import PACKAGE, make_test_project
+from tests.cpp_build import PACKAGE, fill_custom_regions, load_models, make_test_project
 
 
 @pytest.fixture(scope="module")
@@ -33,7 +35,8 @@ def _report(findings: list[Finding], shown: int = 60) -> str:
 
 def test_every_transport_is_linted(package):
     drivers = {p.relative_to(package / "src").as_posix() for p in (package / "src").glob("*/*.cpp")}
-    assert {"unitree/g1.cpp", "agibot/x2.cpp", "engineai/pm01.cpp", "acme/scara.cpp"} <= drivers, drivers
+    assert {"unitree/g1.cpp", "agibot/x2.cpp", "engineai/pm01.cpp", "acme/scara.cpp", "odri/solo12.cpp"} <= drivers, \
+        drivers
 
 
 def test_cpplint_finds_nothing(package):
@@ -49,6 +52,24 @@ def test_uncrustify_finds_nothing(package):
                 "(ament_uncrustify --reformat fixes them):")
         diffs = [f"--- {name}\n{diff}" for name, diff in list(result.diffs.items())[:3]]
         pytest.fail("\n".join([head, *diffs])[:20000], pytrace=False)
+
+
+@pytest.fixture(scope="module")
+def filled_custom_package(tmp_path_factory) -> Path:
+    """The custom robot with the toy bus filled into its regions (the README's worked example)."""
+    project = make_test_project(tmp_path_factory.mktemp("lint_custom") / "project", only=["odri/solo12"])
+    assert main(["generate", "--project", str(project)]) == 0
+    package = project / "generated" / PACKAGE
+    assert fill_custom_regions(load_models(project), package)
+    return package
+
+
+def test_filled_custom_regions_pass_both_linters(filled_custom_package):
+    findings = run_cpplint(filled_custom_package)
+    result = run_uncrustify(filled_custom_package)
+    problems = findings + result.findings
+    if problems:
+        pytest.fail(_report(problems) + "\n" + "\n".join(result.diffs.values())[:6000], pytrace=False)
 
 
 LONG = "a_very_long_joint_name_as_xacro_prefixes_make_them_left_arm_shoulder_pitch_joint_of_the_robot"

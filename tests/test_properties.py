@@ -33,7 +33,7 @@ from tests.test_hostile_inputs import ANY_LINE, assert_rejected, run_cli, snapsh
 
 PACKAGE = "robot_hardware_interface"
 HOSTILE = Path(__file__).resolve().parent / "fixtures" / "hostile"
-TRANSPORTS = ("generic_topics", "engineai_topics", "agibot_topics", "unitree_dds")
+TRANSPORTS = ("generic_topics", "engineai_topics", "agibot_topics", "unitree_dds", "custom")
 UNITREE_SLOTS = {"hg": 35, "go": 20}  # motor slots per unitree message family
 # Every character rhi-gen accepts in a joint name (model/naming.py's policy, restated independently).
 JOINT_ALPHABET = string.ascii_letters + string.digits + "_./-:+[]()#@"
@@ -146,7 +146,7 @@ class RobotSpec:
         options: dict = {}
         if self.transport == "agibot_topics":
             options["groups"] = [{"name": n, "size": s} for n, s in self.groups]
-        if self.qos is not None and self.transport != "unitree_dds":
+        if self.qos is not None and self.transport not in ("unitree_dds", "custom"):
             options["qos"] = self.qos
         if self.family:
             options["family"] = self.family
@@ -192,7 +192,8 @@ def robot_specs(draw, vendor: str, robot: str) -> RobotSpec:
     actuated = [j.name for j in joints if j.actuated]
     mapped = draw(st.lists(st.sampled_from(actuated), min_size=1, max_size=len(actuated), unique=True))
     unmapped = [n for n in actuated if n not in mapped]
-    transport = draw(st.sampled_from(TRANSPORTS if len(mapped) <= UNITREE_SLOTS["go"] else TRANSPORTS[:3]))
+    transport = draw(st.sampled_from(TRANSPORTS if len(mapped) <= UNITREE_SLOTS["go"]
+                                     else tuple(t for t in TRANSPORTS if t != "unitree_dds")))
     family = draw(st.sampled_from(sorted(UNITREE_SLOTS))) if transport == "unitree_dds" else ""
     spare = draw(st.integers(0, 4))
     motor_count = len(mapped) + spare

@@ -17,7 +17,7 @@ TEMPLATES = Path(__file__).resolve().parents[1] / "rhi_gen" / "templates"
 
 
 def test_registry_names_match_the_modules():
-    assert transports.NAMES == ("unitree_dds", "agibot_topics", "engineai_topics", "generic_topics")
+    assert transports.NAMES == ("unitree_dds", "agibot_topics", "engineai_topics", "generic_topics", "custom")
     assert all(transports.get(name).name == name for name in transports.NAMES)
     assert transports.DEFAULT in transports.NAMES
 

@@ -5,6 +5,10 @@ REGION_BEGIN = "rhi-gen:begin-user-region"
 REGION_END = "rhi-gen:end-user-region"
 
 
-def user_region(name: str, style: str = "//", indent: str = "") -> str:
-    """An empty named region (template global); write/regions.py carries its body across regenerations."""
-    return f"{indent}{style} {REGION_BEGIN} {name}\n{indent}{style} {REGION_END} {name}"
+def user_region(name: str, style: str = "//", indent: str = "", body: str = "") -> str:
+    """A named region (template global), empty unless ``body`` (its lines, each ending in a newline)
+    gives the content a freshly generated file starts with; write/regions.py carries the body across
+    regenerations, so once the file exists the body on disk wins."""
+    if body and not body.endswith("\n"):
+        raise ValueError(f"user region {name!r}: a default body must end with a newline")
+    return f"{indent}{style} {REGION_BEGIN} {name}\n{body}{indent}{style} {REGION_END} {name}"

@@ -3,8 +3,10 @@
 Adding a transport: write ``transports/<name>.py`` (a ``Transport`` subclass, see base.py, and a
 ``TRANSPORT`` instance), add it to ``_ALL`` below, and write its templates
 ``templates/transport/<name>.hpp.j2`` (the C++ logic) and ``templates/robot/glue/<name>.j2`` (what a
-robot's source passes to it). Validation, defaults, `rhi-gen new`, the
-package's dependency lists and the CLI's help all read the registry.
+robot's source passes to it). A glue template may also define ``definitions(N, T)``: C++ the
+robot's source emits before ``using Transport`` (custom: the transport class holding the user's SDK
+regions). Validation, defaults, `rhi-gen new`, the package's dependency lists and the CLI's help all
+read the registry.
 """
 from __future__ import annotations
 
@@ -14,7 +16,7 @@ from types import MappingProxyType
 
 from ..errors import ConfigError
 from ..model.naming import suggest
-from . import agibot_topics, engineai_topics, generic_topics, unitree_dds
+from . import agibot_topics, custom, engineai_topics, generic_topics, unitree_dds
 from .base import (
     COMMON_DEPENDENCIES,
     PLAIN_CMAKE,
@@ -27,7 +29,7 @@ from .base import (
 )
 
 _ALL: tuple[Transport, ...] = (unitree_dds.TRANSPORT, agibot_topics.TRANSPORT, engineai_topics.TRANSPORT,
-                               generic_topics.TRANSPORT)
+                               generic_topics.TRANSPORT, custom.TRANSPORT)
 TRANSPORTS: Mapping[str, Transport] = MappingProxyType({t.name: t for t in _ALL})
 NAMES: tuple[str, ...] = tuple(TRANSPORTS)
 DEFAULT = generic_topics.NAME  # for a vendor rhi-gen has no transport of its own for

@@ -47,6 +47,8 @@
 #include "transport_engineai_topics.hpp"
 #elif defined(RHI_TRANSPORT_GENERIC_TOPICS)
 #include "transport_generic_topics.hpp"
+#elif defined(RHI_TRANSPORT_CUSTOM)
+#include "transport_custom.hpp"
 #else
 #error "robot_data.hpp names no known transport"
 #endif
@@ -72,6 +74,9 @@ constexpr const char* kFloatName = sizeof(SdkFloat) == sizeof(float) ? "float" :
 
 void fresh_process() {
   rhi_fake::reset_all();
+#if defined(RHI_TRANSPORT_CUSTOM)
+  Transport::reset_bus();
+#endif
   rclcpp::init(0, nullptr);
 }
 
@@ -341,8 +346,8 @@ void test_main_scenario() {
     uint64_t period = 0;
     CHECK(t.writer_period_us(period), "one command writer runs after on_activate");
     CHECK_EQ(period, kDescriptionPeriodUs, "command writer period [us] from the description");
-#if defined(RHI_TRANSPORT_UNITREE_DDS)
-    CHECK(t.network_interface() == kDescriptionNetworkInterface, "DDS network interface from the description (%s)",
+#if defined(RHI_TRANSPORT_UNITREE_DDS) || defined(RHI_TRANSPORT_CUSTOM)
+    CHECK(t.network_interface() == kDescriptionNetworkInterface, "SDK network interface from the description (%s)",
           kDescriptionNetworkInterface);
 #endif
   }
@@ -906,7 +911,7 @@ void test_parameters() {
       uint64_t period = 0;
       CHECK(rig.t.writer_period_us(period), "one command writer");
       CHECK_EQ(period, kDefaultPeriodUs, "default command_writer_period_us");
-#if defined(RHI_TRANSPORT_UNITREE_DDS)
+#if defined(RHI_TRANSPORT_UNITREE_DDS) || defined(RHI_TRANSPORT_CUSTOM)
       CHECK(rig.t.network_interface() == kDefaultNetworkInterface, "default network_interface %s",
             kDefaultNetworkInterface);
 #endif
@@ -929,7 +934,7 @@ void test_parameters() {
       uint64_t period = 0;
       CHECK(rig.t.writer_period_us(period), "one command writer");
       CHECK_EQ(period, 5000U, "command_writer_period_us override");
-#if defined(RHI_TRANSPORT_UNITREE_DDS)
+#if defined(RHI_TRANSPORT_UNITREE_DDS) || defined(RHI_TRANSPORT_CUSTOM)
       CHECK(rig.t.network_interface() == "rhi_test0", "network_interface override");
 #endif
       check_decimation(rig, decimation, 10);
@@ -1268,6 +1273,42 @@ void test_threads(int duration_ms) {
   CHECK_EQ(crc_errors.load(), 0U, "commands with a wrong CRC");
 }
 
+#if defined(RHI_CUSTOM_EXPECT_UNFILLED)
+// The custom transport as generated, before anyone fills its regions: it initialises and exports
+// its interfaces, then refuses to activate with exactly one error line naming the first unfilled
+// region and its file; no writer runs and nothing is sent.
+void test_unfilled_refuses_activation() {
+  rhi_check::Section section("unfilled");
+  fresh_process();
+  Rig rig;
+  if (!setup(rig, make_hardware_info())) {
+    teardown(rig);
+    return;
+  }
+  rhi_fake::logs::clear();
+  const CallbackReturn r = rig.hw->on_activate(kInactive);
+  CHECK(r == CallbackReturn::ERROR, "on_activate of the unfilled custom transport returned %d, not ERROR",
+        static_cast<int>(r));
+  CHECK_EQ(rhi_fake::logs::count(Severity::Error), 1U, "error lines logged by the refused activation");
+  CHECK_EQ(rhi_fake::logs::count(Severity::Fatal), 0U, "fatal lines logged by the refused activation");
+  CHECK_EQ(rhi_fake::logs::count_containing("custom transport: region 'transport_connect' of src/", Severity::Error),
+           1U, "the error line names the unfilled region and its source file");
+  for (const auto& line : rhi_fake::logs::lines()) {
+    if (line.severity == Severity::Error) {
+      std::printf("refused: %s\n", line.text.c_str());
+    }
+  }
+  CHECK(rhi_fake::ros::wait_spinning_executors(0, std::chrono::seconds(1)), "no executor thread runs");
+  for (int i = 0; i < 5; ++i) {
+    rig.t.tick_writer();
+  }
+  CHECK_EQ(rig.t.sent_messages(), 0U, "messages sent by the refused driver");
+  CHECK(!toy_bus::Bus::instance().isOpen(), "the bus was never opened");
+  rig.ifs = Interfaces{};
+  rig.hw.reset();
+}
+#endif
+
 }  // namespace
 
 // --only=threads (or a comma list of interfaces,main,parameters,decimation,crc,threads) runs just
@@ -1293,6 +1334,10 @@ int main(int argc, char** argv) {
   std::printf("robot %s: transport %s, %zu SDK slots, %zu mapped joints, SDK float type %s, plugin %s\n",
               kRobotLabel, Transport::kName, N, kJointCount, kFloatName, kPluginType);
   try {
+#if defined(RHI_CUSTOM_EXPECT_UNFILLED)
+    test_unfilled_refuses_activation();
+    only = "none";  // the other scenarios need a filled transport
+#endif
     if (selected(only, "interfaces")) test_interfaces();
     if (selected(only, "main")) test_main_scenario();
     if (selected(only, "parameters")) test_parameters();

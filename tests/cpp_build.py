@@ -315,6 +315,7 @@ def yaml_unitree_family(yaml_path: Path, vendor: str, robot: str) -> tuple[str, 
     """unitree_dds message family and go motor modes as the vendor YAML writes them; a YAML that
     omits them gets the known robot's (SDK_FACTS.md: the family follows the robot), else hg / 0x01."""
     import yaml
+
     from rhi_gen.transports.unitree_dds import FAMILIES, KNOWN_ROBOTS
 
     data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
@@ -622,7 +623,8 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
         family = unitree_family(m)
         header = crc_header(rb.package_dir, family)
         if header is None:
-            steps.append(CompileResult(False, Path("crc_probe"), [], f"no unitree_{family}*.hpp in the generated package"))
+            steps.append(CompileResult(False, Path("crc_probe"), [],
+                                       f"no unitree_{family}*.hpp in the generated package"))
         else:
             rel = header.relative_to(pkg_include).as_posix()
             probe_flags = (*flags, f'-DRHI_CRC_HEADER="{rel}"', f"-DRHI_UNITREE_FAMILY_{family.upper()}=1")

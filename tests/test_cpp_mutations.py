@@ -3,9 +3,10 @@
 Each mutation copies rhi_gen/templates/ to a temporary folder, changes one thing (the pattern must
 match exactly where expected, so a template rewrite cannot silently turn a mutation into a no-op),
 renders the reference G1 (unitree_dds hg, float, CRC) and PM01 (a ROS topic transport, double), or
-the harness's go2w test robot (unitree_dds go family) for the go mutations, with that template folder (render_package's env_factory: make_environment()'s settings, FileSystemLoader
-on the copy), builds tests/cpp/harness/driver_harness.cpp against the result (plain flavour) and runs
-it. The run must fail, with failed checks in the section that guards the broken property. The
+the harness's go2w test robot (unitree_dds go family) for the go mutations, with that template
+folder (render_package's env_factory: make_environment()'s settings, FileSystemLoader on the copy),
+builds tests/cpp/harness/driver_harness.cpp against the result (plain flavour) and runs it. The run
+must fail, with failed checks in the section that guards the broken property. The
 DataBuffer mutation builds tests/cpp/harness/data_buffer_stress.cpp instead. A control run of the
 unmodified copy must pass, so the failures come from the mutations, not from the machinery.
 """

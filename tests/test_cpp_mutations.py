@@ -77,6 +77,9 @@ MUTATIONS = (
              robots=("unitree/g1",)),
     Mutation("crc_skips_lowstate_field", "LowState_ CRC skips MotorState_.reserve[3]", "transport/unitree_hg.hpp.j2",
              r"\{76, 52, kMotorSlots, 56\}", "{76, 48, kMotorSlots, 56}", ("crc", "safety"), robots=("unitree/g1",)),
+    Mutation("crc_hashes_lowstate_padding", "hg LowState_ CRC hashes the 2 padding bytes after mode_machine",
+             "transport/unitree_hg.hpp.j2", r"\{8, 2, 1, 0\}", "{8, 4, 1, 0}", ("crc", "safety"),
+             robots=("unitree/g1",)),
     # unitree go family (Go2, Go2-W, B2, B2-W, H1), on the harness's go2w test robot.
     Mutation("go_crc_hashes_padding", "go LowState_ CRC hashes the 3 padding bytes after imu_state.temperature",
              "transport/unitree_go.hpp.j2", r"\{24, 53, 1, 0\}", "{24, 56, 1, 0}", ("crc", "safety"),

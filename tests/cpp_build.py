@@ -315,6 +315,23 @@ def yaml_modes_and_gains(yaml_path: Path) -> tuple[dict[str, str], dict[str, tup
     return modes, gains
 
 
+def yaml_unitree_family(yaml_path: Path, vendor: str, robot: str) -> tuple[str, tuple[int, ...]]:
+    """unitree_dds message family and go motor modes as the vendor YAML writes them; a YAML that
+    omits them gets the known robot's (SDK_FACTS.md: the family follows the robot), else hg / 0x01."""
+    import yaml
+
+    from rhi_gen.transports.unitree_dds import FAMILIES, KNOWN_ROBOTS
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    opts = data.get("transport_options") or {}
+    known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
+    family = str(opts.get("family") or (known.family if known else "hg"))
+    if family != "go":
+        return family, ()
+    modes = tuple(int(m) for m in opts.get("motor_modes") or (known.motor_modes if known else ()))
+    return family, modes or (1,) * FAMILIES["go"]
+
+
 def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     """robot_data.hpp for one robot (namespace rhi_data, see tests/cpp/harness/harness_common.hpp)."""
     model = loaded.model
@@ -353,6 +370,10 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     ]
     if model.transport != "unitree_dds":
         lines.append("#define RHI_TRANSPORT_ROS 1")
+    family, motor_modes = ("", ())
+    if model.transport == "unitree_dds":
+        family, motor_modes = yaml_unitree_family(loaded.yaml_path, model.vendor, model.robot)
+        lines.append(f"#define RHI_UNITREE_FAMILY_{family.upper()} 1  // message family (transport_options.family)")
     lines += [
         "namespace rhi_data {",
         f"using SdkFloat = {model.float_type};",
@@ -395,6 +416,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr char kImuTopic[] = {_c_string(opts.imu_topic)};",
         f"inline constexpr uint8_t kModePr = {opts.mode_pr};",
         f"inline constexpr uint8_t kParallelParserType = {opts.parallel_parser_type};",
+        "// unitree go: MotorCmd_.mode of every LowCmd_ slot (the YAML's motor_modes, else the known robot's)",
+        f"inline constexpr uint8_t kMotorModes[] = {{{', '.join(str(m) for m in motor_modes) or '0'}}};",
         "// parameter defaults: the vendor YAML's parameters (spec defaults where it gives none)",
         f"inline constexpr uint64_t kDefaultPeriodUs = {params.command_writer_period_us};",
         f"inline constexpr uint32_t kDefaultDecimation = {params.state_decimation};",
@@ -559,10 +582,15 @@ def prepare_robot_builds(loaded_robots, package_dir: Path, work_dir: Path) -> li
     return builds
 
 
-def crc_header(package_dir: Path) -> Path | None:
-    """The generated header of the unitree hg messages (their CRC), wherever the templates put it."""
-    found = sorted((package_dir / "include").rglob("unitree_hg*.hpp"))
+def crc_header(package_dir: Path, family: str = "hg") -> Path | None:
+    """The generated header of one unitree message family (its CRC), wherever the templates put it."""
+    found = sorted((package_dir / "include").rglob(f"unitree_{family}*.hpp"))
     return found[0] if found else None
+
+
+def unitree_family(model) -> str:
+    """The message family of a unitree_dds robot as the loaded model has it."""
+    return getattr(model.transport_options, "family", "") or "hg"
 
 
 def package_digest(package_dir: Path) -> str:
@@ -599,12 +627,15 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
                              name=f"driver_{tag}", distro=distro)]
     steps.append(compile_harness_object(builder, rb, flavour, distro))
     if m.transport == "unitree_dds":
-        header = crc_header(rb.package_dir)
+        family = unitree_family(m)
+        header = crc_header(rb.package_dir, family)
         if header is None:
-            steps.append(CompileResult(False, Path("crc_probe"), [], "no *crc*.hpp in the generated package"))
+            steps.append(CompileResult(False, Path("crc_probe"), [],
+                                       f"no unitree_{family}*.hpp in the generated package"))
         else:
             rel = header.relative_to(pkg_include).as_posix()
-            steps.append(builder.compile(HARNESS_DIR / "crc_probe.cpp", (*flags, f'-DRHI_CRC_HEADER="{rel}"'),
+            probe_flags = (*flags, f'-DRHI_CRC_HEADER="{rel}"', f"-DRHI_UNITREE_FAMILY_{family.upper()}=1")
+            steps.append(builder.compile(HARNESS_DIR / "crc_probe.cpp", probe_flags,
                                          [pkg_include, *standins], digest_parts=[pkg],
                                          name=f"crcprobe_{tag}", distro=distro))
     failed = [s for s in steps if not s.ok]

@@ -113,8 +113,8 @@ def test_every_robot_of_the_project_gets_a_harness(reference):
 def _headers_alone(reference) -> list[Path]:
     include = reference.package_dir / "include" / PACKAGE
     headers = sorted((include / "common").glob("*.hpp"))
-    crc = crc_header(reference.package_dir)
-    return headers + ([crc] if crc else [])
+    crcs = [crc_header(reference.package_dir, family) for family in ("hg", "go")]
+    return headers + [crc for crc in crcs if crc]
 
 
 def test_common_headers_compile_on_their_own(reference, tmp_path):

@@ -2,10 +2,11 @@
 
 Each mutation copies rhi_gen/templates/ to a temporary folder, changes one thing (the pattern must
 match exactly where expected, so a template rewrite cannot silently turn a mutation into a no-op),
-renders the reference G1 (unitree_dds, float, CRC) and PM01 (a ROS topic transport, double) with
-that template folder (render_package's env_factory: make_environment()'s settings, FileSystemLoader
-on the copy), builds tests/cpp/harness/driver_harness.cpp against the result (plain flavour) and runs
-it. The run must fail, with failed checks in the section that guards the broken property. The
+renders the reference G1 (unitree_dds hg, float, CRC) and PM01 (a ROS topic transport, double), or
+the harness's go2w test robot (unitree_dds go family) for the go mutations, with that template
+folder (render_package's env_factory: make_environment()'s settings, FileSystemLoader on the copy),
+builds tests/cpp/harness/driver_harness.cpp against the result (plain flavour) and runs it. The run
+must fail, with failed checks in the section that guards the broken property. The
 DataBuffer mutation builds tests/cpp/harness/data_buffer_stress.cpp instead. A control run of the
 unmodified copy must pass, so the failures come from the mutations, not from the machinery.
 """
@@ -25,6 +26,8 @@ from tests.cpp_build import (REPO, build_harness, compile_data_buffer_stress, re
 
 TEMPLATES = REPO / "rhi_gen" / "templates"
 ROBOTS = ("unitree/g1", "engineai/pm01")
+GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message family
+CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS)  # every robot a mutation runs on passes unmodified
 THREADS_MS = 100
 
 BROKEN_DOUBLE_BUFFER = (REPO / "tests/cpp/harness/mutants/double_buffer.inc").read_text()
@@ -74,6 +77,19 @@ MUTATIONS = (
              robots=("unitree/g1",)),
     Mutation("crc_skips_lowstate_field", "LowState_ CRC skips MotorState_.reserve[3]", "transport/unitree_hg.hpp.j2",
              r"\{76, 52, kMotorSlots, 56\}", "{76, 48, kMotorSlots, 56}", ("crc", "safety"), robots=("unitree/g1",)),
+    Mutation("crc_hashes_lowstate_padding", "hg LowState_ CRC hashes the 2 padding bytes after mode_machine",
+             "transport/unitree_hg.hpp.j2", r"\{8, 2, 1, 0\}", "{8, 4, 1, 0}", ("crc", "safety"),
+             robots=("unitree/g1",)),
+    # unitree go family (Go2, Go2-W, B2, B2-W, H1), on the harness's go2w test robot.
+    Mutation("go_crc_hashes_padding", "go LowState_ CRC hashes the 3 padding bytes after imu_state.temperature",
+             "transport/unitree_go.hpp.j2", r"\{24, 53, 1, 0\}", "{24, 56, 1, 0}", ("crc", "safety"),
+             robots=GO_ROBOTS),
+    Mutation("go_head_bytes", "go LowCmd_.head[0] is 0xEF instead of 0xFE", "transport/unitree_go.hpp.j2",
+             r"(kHead0 = )0xFE;", r"\g<1>0xEF;", ("commands",), robots=GO_ROBOTS),
+    Mutation("go_motor_modes_ignored", "go LowCmd_ slots get mode 0x01 where motor_modes says 0 (stop)",
+             "transport/unitree_go.hpp.j2", r"motor\.mode\(\) = motor_modes\[slot\];",
+             "motor.mode() = static_cast<uint8_t>(motor_modes[slot] | 0x01U);",
+             ("commands",), robots=GO_ROBOTS),
     Mutation("imu_quaternion_order", "read() exports x as orientation.w", "common/driver_core.hpp.j2",
              r"(imu_data_\.ori_\[3\] = static_cast<double>\(imu->quat\[)0(\]\))", r"\g<1>1\2", ("imu",)),
     Mutation("decimation", "state decimation off by one", "common/driver_core.hpp.j2",
@@ -129,7 +145,7 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
     root = tmp_root / name
     start = time.monotonic()
     templates = _mutated_templates(root, mutation)
-    robots = mutation.robots if mutation else ROBOTS
+    robots = mutation.robots if mutation else CONTROL_ROBOTS
     package = render_test_package(root, only=robots or ROBOTS[:1], template_dir=templates,
                                   extra_robots=any(label not in ROBOTS for label in robots))  # the harness's test robots
     outcomes = []

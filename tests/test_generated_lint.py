@@ -1,10 +1,10 @@
 """A freshly generated package passes the ROS 2 linters `colcon test` runs (ament_lint_auto):
 zero ament_cpplint and zero ament_uncrustify findings (ROS 2 default configuration, tests/ament_lint.py).
 
-The package holds the reference robots of robots/ plus the harness's generic_topics robot
-(tests/cpp/harness/robots/acme/scara) and custom robot (odri/solo12, regions as generated), so every
-transport's templates are linted; the custom robot is linted again with the README's toy-bus regions
-filled in. To see and fix the
+The package holds the reference robots of robots/ plus the harness's test robots (generic_topics
+tests/cpp/harness/robots/acme/scara, unitree go family robots/unitree/go2w, custom odri/solo12 with
+its regions as generated), so every transport's templates, both unitree message families included,
+are linted; the custom robot is linted again with the README's toy-bus regions filled in. To see and fix the
 findings by hand: tests/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.ament_lint DIR`.
 """
 from __future__ import annotations
@@ -35,7 +35,8 @@ def _report(findings: list[Finding], shown: int = 60) -> str:
 
 def test_every_transport_is_linted(package):
     drivers = {p.relative_to(package / "src").as_posix() for p in (package / "src").glob("*/*.cpp")}
-    assert {"unitree/g1.cpp", "agibot/x2.cpp", "engineai/pm01.cpp", "acme/scara.cpp", "odri/solo12.cpp"} <= drivers, \
+    assert {"unitree/g1.cpp", "unitree/go2w.cpp", "agibot/x2.cpp", "engineai/pm01.cpp", "acme/scara.cpp",
+            "odri/solo12.cpp"} <= drivers, \
         drivers
 
 

@@ -1,17 +1,24 @@
 // Exposes the generated CRC header's functions to driver_harness.cpp, which checks them against
-// SDK_FACTS.md's test vectors and the independent reference (hg_crc_reference.hpp).
-// Compiled against the generated package; RHI_CRC_HEADER names the header (set by cpp_build.py).
+// SDK_FACTS.md's test vectors and the independent references (hg_crc_reference.hpp,
+// go_crc_reference.hpp). Compiled against the generated package; RHI_CRC_HEADER names the header
+// of the robot's message family and RHI_UNITREE_FAMILY_GO / _HG the family (set by cpp_build.py).
 #include <cstdint>
 
 #include RHI_CRC_HEADER
 
-uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg);
-uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg);
+#if defined(RHI_UNITREE_FAMILY_GO)
+#define RHI_PROBE_NS unitree_go
+#else
+#define RHI_PROBE_NS unitree_hg
+#endif
 
-uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg) {
-  return robot_hardware_interface::unitree_hg::lowCmdCrc(msg);
+uint32_t rhi_probe_low_cmd_crc(const ::RHI_PROBE_NS::msg::dds_::LowCmd_& msg);
+uint32_t rhi_probe_low_state_crc(const ::RHI_PROBE_NS::msg::dds_::LowState_& msg);
+
+uint32_t rhi_probe_low_cmd_crc(const ::RHI_PROBE_NS::msg::dds_::LowCmd_& msg) {
+  return robot_hardware_interface::RHI_PROBE_NS::lowCmdCrc(msg);
 }
 
-uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg) {
-  return robot_hardware_interface::unitree_hg::lowStateCrc(msg);
+uint32_t rhi_probe_low_state_crc(const ::RHI_PROBE_NS::msg::dds_::LowState_& msg) {
+  return robot_hardware_interface::RHI_PROBE_NS::lowStateCrc(msg);
 }

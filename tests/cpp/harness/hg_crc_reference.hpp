@@ -2,8 +2,8 @@
 // templates, the way unitree_ros2 does it (example/src/src/common/motor_crc_hg.cpp):
 //   1. copy every field into a plain mirror struct whose padding was zeroed first,
 //   2. run the SDK's Crc32Core over all 32-bit words but the trailing crc.
-// Crc32Core below is the SDK's bitwise algorithm verbatim (SDK_FACTS.md, section A "CRC"):
-// init 0xFFFFFFFF, polynomial 0x04C11DB7, 32-bit words MSB first, no reflection, no final XOR.
+// Crc32Core (crc32_core_reference.hpp) is the SDK's bitwise algorithm (SDK_FACTS.md, section A
+// "CRC"): init 0xFFFFFFFF, polynomial 0x04C11DB7, 32-bit words MSB first, no reflection, no final XOR.
 #pragma once
 
 #include <cstddef>
@@ -13,31 +13,9 @@
 #include <unitree/idl/hg/LowCmd_.hpp>
 #include <unitree/idl/hg/LowState_.hpp>
 
-namespace rhi_ref {
+#include "crc32_core_reference.hpp"
 
-inline uint32_t Crc32Core(const uint32_t* ptr, uint32_t len) {
-  uint32_t xbit = 0;
-  uint32_t data = 0;
-  uint32_t CRC32 = 0xFFFFFFFF;
-  const uint32_t dwPolynomial = 0x04c11db7;
-  for (uint32_t i = 0; i < len; i++) {
-    xbit = 1U << 31;
-    data = ptr[i];
-    for (uint32_t bits = 0; bits < 32; bits++) {
-      if (CRC32 & 0x80000000U) {
-        CRC32 <<= 1;
-        CRC32 ^= dwPolynomial;
-      } else {
-        CRC32 <<= 1;
-      }
-      if (data & xbit) {
-        CRC32 ^= dwPolynomial;
-      }
-      xbit >>= 1;
-    }
-  }
-  return CRC32;
-}
+namespace rhi_ref {
 
 // Mirrors of the IDL structs (natural alignment, as the SDK's on x86-64 / aarch64).
 struct MotorCmdRaw {
@@ -91,13 +69,6 @@ static_assert(sizeof(MotorCmdRaw) == 28, "MotorCmd layout");
 static_assert(sizeof(LowCmdRaw) == 1004 && offsetof(LowCmdRaw, crc) == 1000, "LowCmd layout");
 static_assert(sizeof(ImuStateRaw) == 56 && sizeof(MotorStateRaw) == 56, "IMU/MotorState layout");
 static_assert(sizeof(LowStateRaw) == 2092 && offsetof(LowStateRaw, crc) == 2088, "LowState layout");
-
-template <typename Raw>
-inline uint32_t crc_of_raw(const Raw& raw) {
-  uint32_t words[sizeof(Raw) / 4];
-  std::memcpy(words, &raw, sizeof(Raw));
-  return Crc32Core(words, static_cast<uint32_t>(sizeof(Raw) / 4 - 1));
-}
 
 inline uint32_t low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg) {
   LowCmdRaw raw;

@@ -1,16 +1,27 @@
-// Fake robot side of the unitree_dds transport: LowState_ frames in (with a correct CRC computed
-// by the independent reference, every field non-zero), LowCmd_ out.
+// Fake robot side of the unitree_dds transport, "hg" message family (G1, H1-2; SDK_FACTS.md section
+// A): LowState_ frames in (every field non-zero, padding bytes garbage, a correct CRC computed by
+// the independent reference over the zero-padded image), LowCmd_ out. The go family has its own
+// fake (transport_unitree_go.hpp, selected by RHI_UNITREE_FAMILY_GO) with the same interface.
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <unitree/idl/hg/LowCmd_.hpp>
 #include <unitree/idl/hg/LowState_.hpp>
 
+#include "check.hpp"
 #include "harness_common.hpp"
 #include "hg_crc_reference.hpp"
 #include "rhi_fake/unitree.hpp"
+
+// crc_probe.cpp: the generated CRC header's functions (compiled against the generated package).
+uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg);
+uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg);
 
 namespace rhi_test {
 
@@ -21,13 +32,15 @@ public:
   static constexpr const char* kName = "unitree_dds";
   static constexpr bool kImuInState = true;
   static constexpr bool kHasGains = true;
+  static constexpr bool kEchoesModeMachine = true;  // LowCmd_.mode_machine echoes LowState_'s
   static constexpr size_t kSdkSlots = 35;
   static_assert(N <= kSdkSlots, "more motors than LowCmd_ slots");
 
-  // Fill the member LowState_ (no allocation): every field non-zero, so a CRC that skips any
-  // field disagrees with the reference.
+  // Fill the member LowState_ (no allocation): padding bytes garbage, every field non-zero, so a
+  // CRC that skips any field, or hashes the padding, disagrees with the reference.
   void prepare_state(const StateFrame& f, bool corrupt_crc = false) {
     LowState& m = state_msg_;
+    rhi_ref::fill_garbage(m);  // every field is set below: only the padding keeps it
     m.version()[0] = 0x01020304U;
     m.version()[1] = 0xA0B0C0D0U;
     m.mode_pr() = kModePr;
@@ -119,6 +132,38 @@ public:
     rhi_fake::unitree::last_written<LowCmd>(kCommandTopic, cmd_msg_);
     return cmd_msg_;
   }
+  int echoed_mode_machine() { return last_raw_command().mode_machine(); }
+
+  // The hg-specific fields of the last LowCmd_: mode_pr from the YAML, mode_machine echoed from
+  // the state, CRC = reference, driven slots enabled (mode 1), unused slots all zero.
+  void check_raw_command(const StateFrame& state) {
+    const LowCmd& raw = last_raw_command();
+    CHECK_EQ(raw.mode_pr(), kModePr, "LowCmd_.mode_pr from the YAML");
+    CHECK_EQ(raw.mode_machine(), state.mode_machine, "LowCmd_.mode_machine copied from LowState_");
+    CHECK_EQ(raw.crc(), rhi_ref::low_cmd_crc(raw), "LowCmd_.crc = reference Crc32Core over the message");
+    for (size_t slot = 0; slot < kSdkSlots; ++slot) {
+      const bool mapped = slot < N && joint_of_slot(slot) != nullptr;
+      const auto& mc = raw.motor_cmd()[slot];
+      CHECK_EQ(mc.mode(), mapped ? 1 : 0, "LowCmd_.motor_cmd[%zu].mode (1 = enabled)", slot);
+      if (!mapped) {
+        const bool zero = mc.q() == 0.0F && mc.dq() == 0.0F && mc.tau() == 0.0F && mc.kp() == 0.0F && mc.kd() == 0.0F;
+        CHECK(zero, "LowCmd_.motor_cmd[%zu] of an unused slot is all zero", slot);
+      }
+    }
+  }
+
+  // Fields changed after the CRC was computed (one per field class): the driver must drop the frame.
+  static std::vector<std::pair<const char*, std::function<void(LowState&)>>> tamper_fields() {
+    return {
+        {"tick", [](LowState& m) { m.tick() += 1; }},
+        {"motor_state[0].q", [](LowState& m) { m.motor_state()[0].q() += 0.25F; }},
+        {"motor_state[N-1].tau_est", [](LowState& m) { m.motor_state()[N - 1].tau_est() += 1.0F; }},
+        {"motor_state[34].reserve[3]", [](LowState& m) { m.motor_state()[34].reserve()[3] ^= 1U; }},
+        {"imu_state.quaternion[0]", [](LowState& m) { m.imu_state().quaternion()[0] = 0.0F; }},
+        {"wireless_remote[39]", [](LowState& m) { m.wireless_remote()[39] ^= 1U; }},
+        {"reserve[3]", [](LowState& m) { m.reserve()[3] ^= 1U; }},
+    };
+  }
 
   // The configured command period, as the transport sees it (recurrent thread interval).
   bool writer_period_us(uint64_t& out) const {
@@ -137,5 +182,124 @@ private:
   LowState state_msg_{};
   LowCmd cmd_msg_{};
 };
+
+// Section crc (no driver): the reference reproduces SDK_FACTS.md's hg vectors, the generated
+// lowCmdCrc / lowStateCrc (crc_probe.cpp) agree with it on those, on every field, on frames with
+// garbage padding and on random frames.
+inline void check_crc_functions() {
+  using LowCmd = Transport::LowCmd;
+  using LowState = Transport::LowState;
+  // The reference reproduces the test vectors of SDK_FACTS.md.
+  static const uint32_t zeros[522] = {};
+  CHECK_EQ(rhi_ref::Crc32Core(zeros, 250), 0xFE172F9FU, "reference: 250 zero words");
+  CHECK_EQ(rhi_ref::Crc32Core(zeros, 522), 0xD64BB04AU, "reference: 522 zero words");
+  LowCmd vector_cmd{};
+  vector_cmd.mode_machine() = 5;
+  for (auto& m : vector_cmd.motor_cmd()) {
+    m.mode() = 1;
+  }
+  CHECK_EQ(rhi_ref::low_cmd_crc(vector_cmd), 0x77176F39U, "reference: LowCmd mode_machine=5, every mode=1");
+  // The generated CRC agrees with them.
+  CHECK_EQ(rhi_probe_low_cmd_crc(LowCmd{}), 0xFE172F9FU, "generated: zero LowCmd_");
+  CHECK_EQ(rhi_probe_low_state_crc(LowState{}), 0xD64BB04AU, "generated: zero LowState_");
+  CHECK_EQ(rhi_probe_low_cmd_crc(vector_cmd), 0x77176F39U, "generated: LowCmd mode_machine=5, every mode=1");
+
+  // Every field counts: changing any one changes the CRC, and generated = reference.
+  LowCmd base;
+  rhi_ref::fill_garbage(base);  // padding garbage; every field is set below
+  base.mode_pr() = 0;
+  base.mode_machine() = 5;
+  base.crc() = 0;
+  for (size_t i = 0; i < 35; ++i) {
+    auto& m = base.motor_cmd()[i];
+    m.mode() = 1;
+    m.q() = 0.1F * i;
+    m.dq() = -0.2F * i;
+    m.tau() = 0.3F;
+    m.kp() = 40.0F + i;
+    m.kd() = 1.5F;
+    m.reserve() = 7U + i;
+  }
+  base.reserve() = {1U, 2U, 3U, 4U};
+  const std::vector<std::pair<const char*, std::function<void(LowCmd&)>>> cmd_fields = {
+      {"mode_pr", [](LowCmd& m) { m.mode_pr() = 1; }},
+      {"mode_machine", [](LowCmd& m) { m.mode_machine() = 6; }},
+      {"motor_cmd[0].mode", [](LowCmd& m) { m.motor_cmd()[0].mode() = 0; }},
+      {"motor_cmd[0].q", [](LowCmd& m) { m.motor_cmd()[0].q() += 1.0F; }},
+      {"motor_cmd[17].dq", [](LowCmd& m) { m.motor_cmd()[17].dq() += 1.0F; }},
+      {"motor_cmd[28].tau", [](LowCmd& m) { m.motor_cmd()[28].tau() += 1.0F; }},
+      {"motor_cmd[5].kp", [](LowCmd& m) { m.motor_cmd()[5].kp() += 1.0F; }},
+      {"motor_cmd[6].kd", [](LowCmd& m) { m.motor_cmd()[6].kd() += 1.0F; }},
+      {"motor_cmd[34].q", [](LowCmd& m) { m.motor_cmd()[34].q() = 3.0F; }},
+      {"motor_cmd[9].reserve", [](LowCmd& m) { m.motor_cmd()[9].reserve() ^= 0x80000000U; }},
+      {"reserve[0]", [](LowCmd& m) { m.reserve()[0] ^= 1U; }},
+      {"reserve[3]", [](LowCmd& m) { m.reserve()[3] ^= 0x100U; }},
+  };
+  const uint32_t base_crc = rhi_probe_low_cmd_crc(base);
+  CHECK(rhi_ref::raw_image_crc(base) != rhi_ref::low_cmd_crc(base), "the LowCmd_ under test carries garbage padding");
+  CHECK_EQ(base_crc, rhi_ref::low_cmd_crc(base), "generated = reference for a LowCmd_ with every field set");
+  for (const auto& [field, change] : cmd_fields) {
+    LowCmd m = base;
+    change(m);
+    CHECK(rhi_probe_low_cmd_crc(m) != base_crc, "LowCmd_ CRC covers %s", field);
+    CHECK_EQ(rhi_probe_low_cmd_crc(m), rhi_ref::low_cmd_crc(m), "generated = reference after changing %s", field);
+  }
+  LowCmd with_crc = base;
+  with_crc.crc() = 0xDEADBEEFU;
+  CHECK_EQ(rhi_probe_low_cmd_crc(with_crc), base_crc, "the crc field itself is not part of the CRC");
+
+  Transport filler;
+  filler.prepare_state(distinct_state(0));
+  const LowState& state_base = filler.prepared();  // the fake's frame itself: its padding is garbage
+  CHECK(rhi_ref::raw_image_crc(state_base) != rhi_ref::low_state_crc(state_base),
+        "the fake robot's LowState_ carries garbage padding");
+  const std::vector<std::pair<const char*, std::function<void(LowState&)>>> state_fields = {
+      {"version[1]", [](LowState& m) { m.version()[1] ^= 1U; }},
+      {"mode_pr", [](LowState& m) { m.mode_pr() ^= 1U; }},
+      {"mode_machine", [](LowState& m) { m.mode_machine() ^= 1U; }},
+      {"tick", [](LowState& m) { m.tick() += 1U; }},
+      {"imu_state.quaternion[3]", [](LowState& m) { m.imu_state().quaternion()[3] += 1.0F; }},
+      {"imu_state.gyroscope[0]", [](LowState& m) { m.imu_state().gyroscope()[0] += 1.0F; }},
+      {"imu_state.accelerometer[2]", [](LowState& m) { m.imu_state().accelerometer()[2] += 1.0F; }},
+      {"imu_state.rpy[1]", [](LowState& m) { m.imu_state().rpy()[1] += 1.0F; }},
+      {"imu_state.temperature", [](LowState& m) { m.imu_state().temperature() += 1; }},
+      {"motor_state[0].mode", [](LowState& m) { m.motor_state()[0].mode() ^= 1U; }},
+      {"motor_state[1].q", [](LowState& m) { m.motor_state()[1].q() += 1.0F; }},
+      {"motor_state[2].dq", [](LowState& m) { m.motor_state()[2].dq() += 1.0F; }},
+      {"motor_state[3].ddq", [](LowState& m) { m.motor_state()[3].ddq() += 1.0F; }},
+      {"motor_state[4].tau_est", [](LowState& m) { m.motor_state()[4].tau_est() += 1.0F; }},
+      {"motor_state[5].temperature[1]", [](LowState& m) { m.motor_state()[5].temperature()[1] += 1; }},
+      {"motor_state[6].vol", [](LowState& m) { m.motor_state()[6].vol() += 1.0F; }},
+      {"motor_state[7].sensor[1]", [](LowState& m) { m.motor_state()[7].sensor()[1] ^= 1U; }},
+      {"motor_state[8].motorstate", [](LowState& m) { m.motor_state()[8].motorstate() ^= 1U; }},
+      {"motor_state[34].reserve[3]", [](LowState& m) { m.motor_state()[34].reserve()[3] ^= 1U; }},
+      {"wireless_remote[39]", [](LowState& m) { m.wireless_remote()[39] ^= 1U; }},
+      {"reserve[3]", [](LowState& m) { m.reserve()[3] ^= 1U; }},
+  };
+  const uint32_t state_crc = rhi_probe_low_state_crc(state_base);
+  CHECK_EQ(state_crc, rhi_ref::low_state_crc(state_base), "generated = reference for a LowState_ with every field set");
+  for (const auto& [field, change] : state_fields) {
+    LowState m;
+    std::memcpy(static_cast<void*>(&m), &state_base, sizeof(m));  // keeps the garbage padding
+    change(m);
+    CHECK(rhi_probe_low_state_crc(m) != state_crc, "LowState_ CRC covers %s", field);
+    CHECK_EQ(rhi_probe_low_state_crc(m), rhi_ref::low_state_crc(m), "generated = reference after changing %s", field);
+  }
+
+  // Random frames, padding included: generated = reference on every one.
+  std::mt19937 rng(0x4860F00DU);
+  int cmd_mismatch = 0, state_mismatch = 0;
+  constexpr int kRandomFrames = 100;
+  for (int k = 0; k < kRandomFrames; ++k) {
+    LowCmd c;
+    rhi_ref::fill_random(c, rng);
+    cmd_mismatch += rhi_probe_low_cmd_crc(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
+    LowState s;
+    rhi_ref::fill_random(s, rng);
+    state_mismatch += rhi_probe_low_state_crc(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
+  }
+  CHECK_EQ(cmd_mismatch, 0, "random LowCmd_ frames where generated != reference (of %d)", kRandomFrames);
+  CHECK_EQ(state_mismatch, 0, "random LowState_ frames where generated != reference (of %d)", kRandomFrames);
+}
 
 }  // namespace rhi_test

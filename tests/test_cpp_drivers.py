@@ -43,9 +43,6 @@ REPORT = Path(__file__).resolve().parent / ".cpp_report.txt"
 SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes",
                  "crc", "parameters", "decimation", "allocations", "threads")
 THREADS_MS = 300
-# The generated drivers target the Humble API today (rhi_gen/templates/driver/_ros2_control_api.j2);
-# the harness itself compiles on every distro (test_harness_compiles_on_every_distro). Add a distro
-# here once the templates support it: build_harness(..., distro=...) does the rest.
 # (distro, flavour) of every harness build: the plain flavour on every distro; the sanitizers on
 # Humble (interfaces over driver-owned doubles) and Rolling (framework-owned handles: the path of
 # Jazzy 4.34+, Kilted and Lyrical too).

@@ -24,9 +24,11 @@ path N times (client requests around the loop; the empty loop's count is subtrac
 valgrind the instruction column says "n/a".
 
 The instruction counts are the comparable figures; the nanoseconds are indicative only (shared
-machines, frequency scaling). "stand-in" is the share of the stand-in transport itself (its
-dispatch, the message copy it keeps, its publish), measured by callgrind's inclusive cost of the
-stand-in entry points; "driver" = total - stand-in is what the generated code costs.
+machines, frequency scaling). "driver" is callgrind's inclusive cost of the driver's entry point on
+the path (the std::function invoker of its SDK handler / subscription callback / wall timer; all of
+read() + write()), so it includes what the driver itself calls (the SDK or rclcpp publish of the
+command); "stand-in" = total - driver is the stand-in transport's dispatch around it (registry
+look-up, the copy of the message it keeps). "x memcpy" = instructions / the memcpy floor.
 
 Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/cpp_build.py).
 """

@@ -25,7 +25,7 @@ valgrind the instruction column says "n/a".
 
 The instruction counts are the comparable figures; the nanoseconds are indicative only (shared
 machines, frequency scaling). "driver" is callgrind's inclusive cost of the driver's entry point on
-the path (the std::function invoker of its SDK handler / subscription callback / wall timer; all of
+the path (the std::function invoker of its SDK handler / subscription callback, its wall timer; all of
 read() + write()), so it includes what the driver itself calls (the SDK or rclcpp publish of the
 command); "stand-in" = total - driver is the stand-in transport's dispatch around it (registry
 look-up, the copy of the message it keeps). "x memcpy" = instructions / the memcpy floor.
@@ -90,6 +90,7 @@ def run_times(binary: Path, iterations: int) -> dict[str, dict[str, int]]:
 # driver's share; the rest of a path is the stand-in transport (dispatch, the copy it keeps, ...).
 DRIVER_ENTRY = re.compile(
     r"^std::_Function_handler<[^,]*, robot_hardware_interface::"
+    r"|^rclcpp::GenericTimer<robot_hardware_interface::.*>::execute_callback\("
     r"|^robot_hardware_interface::.*::(onLowState|onGroupState|onJointState|writeCommand)\(")
 
 

@@ -55,6 +55,8 @@
 // crc_probe.cpp: the generated CRC header's functions (compiled against the generated package).
 uint32_t rhi_probe_low_cmd_crc(const unitree_hg::msg::dds_::LowCmd_& msg);
 uint32_t rhi_probe_low_state_crc(const unitree_hg::msg::dds_::LowState_& msg);
+uint32_t rhi_probe_low_cmd_crc_portable(const unitree_hg::msg::dds_::LowCmd_& msg);
+uint32_t rhi_probe_low_state_crc_portable(const unitree_hg::msg::dds_::LowState_& msg);
 #endif
 
 namespace {
@@ -430,6 +432,24 @@ void test_main_scenario() {
       leaked += unmapped.count(s.get()) > 0 ? 1 : 0;
     }
     CHECK_EQ(leaked, 0, "state interfaces showing a value of an unmapped SDK slot");
+#if defined(RHI_TRANSPORT_AGIBOT_TOPICS)
+    // AimDK entries are named: a publisher that changes its joint order (again and again, and
+    // back) still feeds every value to the joint it names, also when the driver caches the order.
+    if (kDefaultDecimation == 1) {
+      uint32_t frame = 40;
+      for (const size_t rotate : {1U, 1U, 3U, 0U, 2U, 0U}) {
+        const StateFrame f = distinct_state(frame++);
+        t.deliver_rotated(f, rotate);
+        hw.read(kTime, kPeriod);
+        char what[64];
+        std::snprintf(what, sizeof(what), "entries rotated by %zu", rotate);
+        check_state_interfaces(ifs, f, what);
+      }
+      t.deliver_state(s0);
+      hw.read(kTime, kPeriod);
+      check_state_interfaces(ifs, s0, "state in the original order again");
+    }
+#endif
   }
 
   {
@@ -541,6 +561,28 @@ void test_main_scenario() {
           CHECK_EQ(c.q[kJoints[k].slot], sdk(cmd.q[kJoints[k].slot]), "%s unaffected by %s's NaN", kJoints[k].name,
                    j0.name);
         }
+      }
+    }
+    // A negative gain is never forwarded either: the last joint, with a negative damping, holds
+    // its last safe target and damping; the others are unaffected.
+    if (kHasGains && kJointCount > 1) {
+      const Joint& jn = kJoints[kJointCount - 1];
+      cmd = distinct_command(3);
+      apply_command(ifs, cmd);
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+      last_command(t, good, "before a negative damping");
+      cmd.kd[jn.slot] = -0.5;
+      apply_command(ifs, cmd);
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+      if (last_command(t, c, "negative damping")) {
+        CHECK_EQ(c.kd[jn.slot], good.kd[jn.slot], "%s keeps its last safe damping, not a negative one", jn.name);
+        CHECK_EQ(c.q[jn.slot], good.q[jn.slot], "%s keeps its last safe position target", jn.name);
+        CHECK_EQ(c.dq[jn.slot], 0.0, "%s: no velocity target while held", jn.name);
+        CHECK_EQ(c.tau[jn.slot], 0.0, "%s: no feed-forward while held", jn.name);
+        CHECK_EQ(c.kp[jn.slot], 0.0, "%s: stiffness 0 while held", jn.name);
+        CHECK_EQ(c.kd[j0.slot], sdk(cmd.kd[j0.slot]), "%s unaffected by %s's negative damping", j0.name, jn.name);
       }
     }
     // Position targets beyond the URDF limits are clamped.
@@ -1054,6 +1096,10 @@ void test_crc_functions() {
   CHECK_EQ(rhi_probe_low_cmd_crc(LowCmd{}), 0xFE172F9FU, "generated: zero LowCmd_");
   CHECK_EQ(rhi_probe_low_state_crc(LowState{}), 0xD64BB04AU, "generated: zero LowState_");
   CHECK_EQ(rhi_probe_low_cmd_crc(vector_cmd), 0x77176F39U, "generated: LowCmd mode_machine=5, every mode=1");
+  // So does the portable implementation alone (the fallback of CPUs without carry-less multiply).
+  CHECK_EQ(rhi_probe_low_cmd_crc_portable(LowCmd{}), 0xFE172F9FU, "portable: zero LowCmd_");
+  CHECK_EQ(rhi_probe_low_state_crc_portable(LowState{}), 0xD64BB04AU, "portable: zero LowState_");
+  CHECK_EQ(rhi_probe_low_cmd_crc_portable(vector_cmd), 0x77176F39U, "portable: LowCmd mode_machine=5, every mode=1");
 
   // Every field counts: changing any one changes the CRC, and generated = reference.
   LowCmd base = vector_cmd;
@@ -1088,6 +1134,8 @@ void test_crc_functions() {
     change(m);
     CHECK(rhi_probe_low_cmd_crc(m) != base_crc, "LowCmd_ CRC covers %s", field);
     CHECK_EQ(rhi_probe_low_cmd_crc(m), rhi_ref::low_cmd_crc(m), "generated = reference after changing %s", field);
+    CHECK_EQ(rhi_probe_low_cmd_crc_portable(m), rhi_ref::low_cmd_crc(m), "portable = reference after changing %s",
+             field);
   }
   LowCmd with_crc = base;
   with_crc.crc() = 0xDEADBEEFU;
@@ -1126,6 +1174,8 @@ void test_crc_functions() {
     change(m);
     CHECK(rhi_probe_low_state_crc(m) != state_crc, "LowState_ CRC covers %s", field);
     CHECK_EQ(rhi_probe_low_state_crc(m), rhi_ref::low_state_crc(m), "generated = reference after changing %s", field);
+    CHECK_EQ(rhi_probe_low_state_crc_portable(m), rhi_ref::low_state_crc(m),
+             "portable = reference after changing %s", field);
   }
 }
 #endif

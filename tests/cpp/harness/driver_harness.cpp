@@ -431,6 +431,24 @@ void test_main_scenario() {
       leaked += unmapped.count(s.get()) > 0 ? 1 : 0;
     }
     CHECK_EQ(leaked, 0, "state interfaces showing a value of an unmapped SDK slot");
+#if defined(RHI_TRANSPORT_AGIBOT_TOPICS)
+    // AimDK entries are named: a publisher that changes its joint order (again and again, and
+    // back) still feeds every value to the joint it names, also when the driver caches the order.
+    if (kDefaultDecimation == 1) {
+      uint32_t frame = 40;
+      for (const size_t rotate : {1U, 1U, 3U, 0U, 2U, 0U}) {
+        const StateFrame f = distinct_state(frame++);
+        t.deliver_rotated(f, rotate);
+        hw.read(kTime, kPeriod);
+        char what[64];
+        std::snprintf(what, sizeof(what), "entries rotated by %zu", rotate);
+        check_state_interfaces(ifs, f, what);
+      }
+      t.deliver_state(s0);
+      hw.read(kTime, kPeriod);
+      check_state_interfaces(ifs, s0, "state in the original order again");
+    }
+#endif
   }
 
   {
@@ -532,6 +550,28 @@ void test_main_scenario() {
           CHECK_EQ(c.q[kJoints[k].slot], sdk(cmd.q[kJoints[k].slot]), "%s unaffected by %s's NaN", kJoints[k].name,
                    j0.name);
         }
+      }
+    }
+    // A negative gain is never forwarded either: the last joint, with a negative damping, holds
+    // its last safe target and damping; the others are unaffected.
+    if (kHasGains && kJointCount > 1) {
+      const Joint& jn = kJoints[kJointCount - 1];
+      cmd = distinct_command(3);
+      apply_command(ifs, cmd);
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+      last_command(t, good, "before a negative damping");
+      cmd.kd[jn.slot] = -0.5;
+      apply_command(ifs, cmd);
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+      if (last_command(t, c, "negative damping")) {
+        CHECK_EQ(c.kd[jn.slot], good.kd[jn.slot], "%s keeps its last safe damping, not a negative one", jn.name);
+        CHECK_EQ(c.q[jn.slot], good.q[jn.slot], "%s keeps its last safe position target", jn.name);
+        CHECK_EQ(c.dq[jn.slot], 0.0, "%s: no velocity target while held", jn.name);
+        CHECK_EQ(c.tau[jn.slot], 0.0, "%s: no feed-forward while held", jn.name);
+        CHECK_EQ(c.kp[jn.slot], 0.0, "%s: stiffness 0 while held", jn.name);
+        CHECK_EQ(c.kd[j0.slot], sdk(cmd.kd[j0.slot]), "%s unaffected by %s's negative damping", j0.name, jn.name);
       }
     }
     // Position targets beyond the URDF limits are clamped.

@@ -76,6 +76,23 @@ public:
     return rhi_fake::ros::deliver<StateMsg>(kGroups[0].state_topic, bad);
   }
 
+  // Every group with its entries rotated by `rotate` (entry p carries the joint of position
+  // (p + rotate) % size, its name and its values): a publisher that changed its joint order.
+  size_t deliver_rotated(const StateFrame& f, size_t rotate) {
+    prepare_state(f);
+    size_t reached = 0;
+    for (size_t g = 0; g < kGroupCount; ++g) {
+      StateMsg& m = rotated_msgs_[g];
+      m = state_msgs_[g];
+      const size_t size = kGroups[g].size;
+      for (size_t p = 0; p < size; ++p) {
+        m.joints[p] = state_msgs_[g].joints[(p + rotate) % size];
+      }
+      reached += rhi_fake::ros::deliver<StateMsg>(kGroups[g].state_topic, m) > 0 ? 1U : 0U;
+    }
+    return reached == kGroupCount ? 1U : 0U;
+  }
+
   uint64_t sent_messages() const {
     uint64_t total = 0;
     for (size_t g = 0; g < kGroupCount; ++g) {
@@ -121,6 +138,7 @@ public:
 
 private:
   std::array<StateMsg, kGroupCount> state_msgs_;
+  std::array<StateMsg, kGroupCount> rotated_msgs_;
   std::array<CommandMsg, kGroupCount> cmd_msgs_;
   bool names_ok_{true};
 };

@@ -23,6 +23,8 @@
 // crc_probe.cpp: the generated CRC header's functions (compiled against the generated package).
 uint32_t rhi_probe_low_cmd_crc(const unitree_go::msg::dds_::LowCmd_& msg);
 uint32_t rhi_probe_low_state_crc(const unitree_go::msg::dds_::LowState_& msg);
+uint32_t rhi_probe_low_cmd_crc_portable(const unitree_go::msg::dds_::LowCmd_& msg);
+uint32_t rhi_probe_low_state_crc_portable(const unitree_go::msg::dds_::LowState_& msg);
 
 namespace rhi_test {
 
@@ -325,6 +327,8 @@ inline void check_crc_functions() {
     change(m);
     CHECK(rhi_probe_low_cmd_crc(m) != base_crc, "LowCmd_ CRC covers %s", field);
     CHECK_EQ(rhi_probe_low_cmd_crc(m), rhi_ref::low_cmd_crc(m), "generated = reference after changing %s", field);
+    CHECK_EQ(rhi_probe_low_cmd_crc_portable(m), rhi_ref::low_cmd_crc(m), "portable = reference after changing %s",
+             field);
   }
   LowCmd with_crc = base;
   with_crc.crc() = 0xDEADBEEFU;
@@ -387,6 +391,8 @@ inline void check_crc_functions() {
     change(m);
     CHECK(rhi_probe_low_state_crc(m) != state_crc, "LowState_ CRC covers %s", field);
     CHECK_EQ(rhi_probe_low_state_crc(m), rhi_ref::low_state_crc(m), "generated = reference after changing %s", field);
+    CHECK_EQ(rhi_probe_low_state_crc_portable(m), rhi_ref::low_state_crc(m),
+             "portable = reference after changing %s", field);
   }
 
   // Random frames, padding included: generated = reference on every one.
@@ -397,10 +403,12 @@ inline void check_crc_functions() {
     LowCmd c;
     rhi_ref::fill_random(c, rng);
     cmd_mismatch += rhi_probe_low_cmd_crc(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
+    cmd_mismatch += rhi_probe_low_cmd_crc_portable(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
     padding_hashed += rhi_ref::raw_image_crc(c) == rhi_ref::low_cmd_crc(c) ? 1 : 0;
     LowState s;
     rhi_ref::fill_random(s, rng);
     state_mismatch += rhi_probe_low_state_crc(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
+    state_mismatch += rhi_probe_low_state_crc_portable(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
   }
   CHECK_EQ(padding_hashed, 0, "random LowCmd_ frames have non-zero padding (the test can see a padding bug)");
   CHECK_EQ(cmd_mismatch, 0, "random LowCmd_ frames where generated != reference (of %d)", kRandomFrames);

@@ -269,6 +269,25 @@ public:
     }
     holding_ = stale;
 
+    // Fresh state and a wholly valid command (the normal cycle): forwarded as it is. One
+    // branch-free pass finds any non-finite value or negative gain; only then does the per-joint
+    // pass below decide joint by joint.
+    if (!stale) {
+      unsigned invalid = 0U;
+      for (size_t i = 0; i < N; ++i) {
+        invalid |= static_cast<unsigned>(!std::isfinite(cmd->q_target[i])) |
+          static_cast<unsigned>(!std::isfinite(cmd->dq_target[i])) |
+          static_cast<unsigned>(!std::isfinite(cmd->kp[i])) |
+          static_cast<unsigned>(!std::isfinite(cmd->kd[i])) |
+          static_cast<unsigned>(!std::isfinite(cmd->tau_ff[i])) |
+          static_cast<unsigned>(cmd->kp[i] < 0) | static_cast<unsigned>(cmd->kd[i] < 0);
+      }
+      if (invalid == 0U) {
+        safe_cmd_ = *cmd;
+        return &safe_cmd_;
+      }
+    }
+
     bool rejected = false;
     for (size_t i = 0; i < N; ++i) {
       // Non-finite values or negative gains are never forwarded: that joint holds damping only.

@@ -11,10 +11,12 @@
 // topic pair per joint group, entries named; sensor_msgs/Imu for the IMU.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cinttypes>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -74,6 +76,9 @@ public:
     core_ = &core;
     node_ = node;
     const rclcpp::QoS qos = makeQos(options_.qos);
+    for (size_t slot = 0; slot < N; ++slot) {
+      name_lengths_[slot] = std::strlen(core.slotJointNames()[slot]);
+    }
     for (size_t g = 0; g < groups_.size(); ++g) {
       const AimdkJointGroup & spec = options_.groups[g];
       Group & group = groups_[g];
@@ -81,6 +86,9 @@ public:
       group.driven = 0;
       // Size the command message and name its entries once: the writer only fills in numbers.
       group.command.joints.resize(spec.size);
+      // The slot of every entry of the last state message, tried first on the next one: a
+      // publisher that keeps its order (or keeps a changed one) costs one name check per entry.
+      group.entry_slots.assign(spec.size, kNoSlot);
       for (size_t i = 0; i < spec.size; ++i) {
         const char * joint = core.slotJointNames()[spec.offset + i];
         group.command.joints[i].name = joint;
@@ -141,26 +149,42 @@ private:
     uint32_t frame_counter{0};  // decimation, per group
     int64_t state_time_ns{0};   // steady time of the group's last valid frame
     bool frames_valid{false};   // the group's last parsed frame was accepted
+    std::vector<size_t> entry_slots;  // slot of each entry of the last state message (sized once)
   };
 
-  // The motor slot of entry `position` of a group's state message. Entries are matched by
-  // position when the name agrees (or is empty: names are optional in AimDK), otherwise by name
-  // within the group. kNoSlot for a joint this driver does not drive. Compares in place.
-  size_t resolveSlot(const AimdkJointGroup & group, size_t position, const std::string & name)
-  const
+  // `name` is the joint driven in `slot` (lengths first, then the bytes; no strlen).
+  bool sameName(const std::string & name, size_t slot) const
   {
-    const auto & names = core_->slotJointNames();
-    if (position < group.size) {
-      const size_t slot = group.offset + position;
-      if (names[slot][0] != '\0' && (name.empty() || name == names[slot])) {
+    return name.size() == name_lengths_[slot] &&
+           std::memcmp(name.data(), core_->slotJointNames()[slot], name.size()) == 0;
+  }
+
+  // The motor slot of entry `position` of a group's state message. A named entry is first tried
+  // against the slot the same entry had in the group's last message (a publisher keeps its
+  // order, also a changed one), then matched by position when the name agrees (or is empty:
+  // names are optional in AimDK), otherwise by name within the group. Every match compares the
+  // full name, so a reordered publisher never feeds a value to the wrong joint. kNoSlot for a
+  // joint this driver does not drive. Compares in place.
+  size_t resolveSlot(const Group & group, size_t position, const std::string & name) const
+  {
+    const AimdkJointGroup & spec = *group.spec;
+    if (!name.empty() && position < group.entry_slots.size()) {
+      const size_t cached = group.entry_slots[position];
+      if (cached != kNoSlot && sameName(name, cached)) {
+        return cached;
+      }
+    }
+    if (position < spec.size) {
+      const size_t slot = spec.offset + position;
+      if (name_lengths_[slot] != 0U && (name.empty() || sameName(name, slot))) {
         return slot;
       }
     }
     if (name.empty()) {
       return kNoSlot;
     }
-    for (size_t slot = group.offset; slot < group.offset + group.size; ++slot) {
-      if (names[slot][0] != '\0' && name == names[slot]) {
+    for (size_t slot = spec.offset; slot < spec.offset + spec.size; ++slot) {
+      if (name_lengths_[slot] != 0U && sameName(name, slot)) {
         return slot;
       }
     }
@@ -207,7 +231,11 @@ private:
     size_t matched = 0;
     for (size_t i = 0; i < msg.joints.size(); ++i) {
       const auto & joint = msg.joints[i];
-      if (resolveSlot(spec, i, joint.name) == kNoSlot) {
+      const size_t slot = resolveSlot(group, i, joint.name);
+      if (i < group.entry_slots.size()) {
+        group.entry_slots[i] = slot;  // reused below and tried first on the next message
+      }
+      if (slot == kNoSlot) {
         continue;
       }
       if (!allFinite(joint.position, joint.velocity, joint.effort)) {
@@ -223,7 +251,8 @@ private:
     auto & state = core_->stateFrame();
     for (size_t i = 0; i < msg.joints.size(); ++i) {
       const auto & joint = msg.joints[i];
-      const size_t slot = resolveSlot(spec, i, joint.name);
+      const size_t slot =
+        i < group.entry_slots.size() ? group.entry_slots[i] : resolveSlot(group, i, joint.name);
       if (slot == kNoSlot) {
         continue;
       }
@@ -288,6 +317,7 @@ private:
   DriverCore<N, T> * core_{nullptr};
   rclcpp::Node::SharedPtr node_;
   std::vector<Group> groups_;  // sized at construction
+  std::array<size_t, N> name_lengths_{};  // strlen of each slot's joint name (0: not driven)
   size_t groups_reported_{0};  // executor thread
   uint32_t command_sequence_{0};
   typename rclcpp::Subscription<Imu>::SharedPtr imu_subscription_;

@@ -1,0 +1,195 @@
+"""Benchmark: the generated drivers' hot paths against their floors, per reference robot.
+
+Run (from the repository root):
+
+    .venv/bin/python benchmarks/bench_hot_paths.py [--iterations N] [--count-iterations N] [--robot g1]
+
+It renders the package of the reference robots of robots/ (Unitree G1 unitree_dds, AgiBot X2
+agibot_topics, EngineAI PM01 engineai_topics) into a temporary folder, compiles
+benchmarks/cpp/bench_hot_paths.cpp per robot (-O2, like the harness's `plain` flavour) against the
+C++ stand-ins and the real ROS message headers (tests/cpp_build.py), and drives each driver's REAL
+code through the harness's fake robot (tests/cpp/harness/transport_<transport>.hpp):
+
+* state       the state callback (one complete state frame delivered by the stand-in transport)
+* state_dec4  the same with state_decimation = 4 (average per delivered frame)
+* writer      one command writer cycle
+* readwrite   read() + write() of one controller cycle with a producer thread delivering state
+
+with monitoring on (enable_monitor = true), and, in the same binary, the floors over the same
+arrays: a memcpy, and the seed template's std::shared_mutex hand-off (the writer takes a unique
+lock and copies, the reader a shared lock and copies). Per path it prints the latency (median,
+p99, p99.9 in ns; steady_clock around each call, its own cost is shown as "clock") and the
+instructions per call counted by valgrind's callgrind on a mode of the binary that runs only that
+path N times (client requests around the loop; the empty loop's count is subtracted). Without
+valgrind the instruction column says "n/a".
+
+The instruction counts are the comparable figures; the nanoseconds are indicative only (shared
+machines, frequency scaling). "driver" is callgrind's inclusive cost of the driver's entry point on
+the path (the std::function invoker of its SDK handler / subscription callback, its wall timer; all of
+read() + write()), so it includes what the driver itself calls (the SDK or rclcpp publish of the
+command); "stand-in" = total - driver is the stand-in transport's dispatch around it (registry
+look-up, the copy of the message it keeps). "x memcpy" = instructions / the memcpy floor.
+
+Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/cpp_build.py).
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from tests import cpp_build  # noqa: E402
+
+BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
+ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
+DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite")
+FLOOR_OF = {"state": "state", "state_dec4": "state", "writer": "writer", "readwrite": "readwrite"}
+FLAGS = ("-O2", "-g")  # -g: function names for callgrind's per-function figures; code is the same
+
+
+def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild, distro: str) -> Path:
+    m = rb.model
+    standins = cpp_build.DISTROS[distro].include_dirs
+    pkg_include = rb.package_dir / "include"
+    tag = f"{m.vendor}_{m.robot}_{distro}"
+    driver = builder.compile(cpp_build.driver_source(rb.package_dir, m.vendor, m.robot), FLAGS,
+                             [pkg_include, *standins], digest_parts=[cpp_build.package_digest(rb.package_dir)],
+                             name=f"bench_driver_{tag}", distro=distro)
+    bench = builder.compile(BENCH_SOURCE, FLAGS, [rb.data_dir, cpp_build.HARNESS_DIR, *standins],
+                            digest_parts=[rb.data_header, builder._harness], name=f"bench_{tag}", distro=distro)
+    for step in (driver, bench):
+        if not step.ok:
+            sys.exit(f"compiling {step.command[-3:]} failed:\n{step.stderr[:4000]}")
+    linked = builder.link([driver, bench], FLAGS, f"bench_{tag}")
+    if not linked.ok:
+        sys.exit(f"linking the {rb.label} benchmark failed:\n{linked.stderr[:4000]}")
+    return linked.path
+
+
+def run_times(binary: Path, iterations: int) -> dict[str, dict[str, int]]:
+    out = subprocess.run([str(binary), "time", str(iterations)], capture_output=True, text=True,
+                         check=True, env=cpp_build.ENV_C).stdout
+    times = {}
+    for name, med, p99, p999, mx in re.findall(
+            r"^time (\S+) median (-?\d+) p99 (-?\d+) p99\.9 (-?\d+) max (-?\d+)$", out, re.M):
+        times[name] = {"median": int(med), "p99": int(p99), "p99.9": int(p999), "max": int(mx)}
+    return times
+
+
+# The driver's entry points on a path: the std::function invoker of a driver lambda (SDK handler,
+# subscription callback, wall timer) or the transport's callback itself. Their inclusive cost is the
+# driver's share; the rest of a path is the stand-in transport (dispatch, the copy it keeps, ...).
+DRIVER_ENTRY = re.compile(
+    r"^std::_Function_handler<[^,]*, robot_hardware_interface::"
+    r"|^rclcpp::GenericTimer<robot_hardware_interface::.*>::execute_callback\("
+    r"|^robot_hardware_interface::.*::(onLowState|onGroupState|onJointState|writeCommand)\(")
+
+
+def callgrind(binary: Path, path: str, iterations: int, work: Path) -> tuple[float, dict[str, int]]:
+    """Instructions per call of ``path`` (the instrumented loop), and inclusive Ir of functions."""
+    out = work / f"cg.{binary.name}.{path}"
+    for old in work.glob(out.name + "*"):
+        old.unlink()
+    subprocess.run(["valgrind", "--tool=callgrind", "--instr-atstart=no", "--separate-threads=yes",
+                    f"--callgrind-out-file={out}.%p", str(binary), "count", path, str(iterations)],
+                   capture_output=True, text=True, check=True, env=cpp_build.ENV_C)
+    # The dump of the measured loop is the one carrying the path's name; thread 1 runs the loop.
+    trigger = f"Trigger: Client Request: {path}\n"
+    dumps = [p for p in work.glob(out.name + ".*") if trigger in p.read_text(errors="replace")]
+    main = [p for p in dumps if p.name.endswith("-01")] or dumps
+    if not main:
+        raise RuntimeError(f"no callgrind dump for {path} of {binary.name}")
+    text = main[0].read_text(errors="replace")
+    total = int(re.search(r"^(?:summary|totals): (\d+)", text, re.M).group(1))
+    inclusive: dict[str, int] = {}
+    if shutil.which("callgrind_annotate"):
+        ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", str(main[0])],
+                             capture_output=True, text=True, env=cpp_build.ENV_C).stdout
+        for count, fn in re.findall(r"^\s*([\d,]+) \([^)]*\)\s+[^:\s]*:(.*?)(?: \[.*\])?$", ann, re.M):
+            inclusive[fn.strip()] = max(inclusive.get(fn.strip(), 0), int(count.replace(",", "")))
+    return total / iterations, inclusive
+
+
+def driver_share(inclusive: dict[str, int]) -> int:
+    """Inclusive Ir of the outermost driver entry point (they nest: invoker -> callback)."""
+    return max((n for fn, n in inclusive.items() if DRIVER_ENTRY.search(fn)), default=0)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--iterations", type=int, default=200_000, help="timed calls per path")
+    ap.add_argument("--count-iterations", type=int, default=2_000, help="calls per path under callgrind")
+    ap.add_argument("--robot", action="append", help="only this robot (g1, x2, pm01); repeatable")
+    ap.add_argument("--distro", default="humble", choices=sorted(cpp_build.DISTROS))
+    ap.add_argument("--no-callgrind", action="store_true", help="latency only")
+    args = ap.parse_args()
+
+    robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
+    have_valgrind = shutil.which("valgrind") is not None and not args.no_callgrind
+    cache = Path(os.environ.get("RHI_CPP_CACHE") or Path(tempfile.gettempdir()) / "rhi_bench_cache")
+    builder = cpp_build.CppBuilder(cache)
+    with tempfile.TemporaryDirectory(prefix="rhi_bench_") as tmp:
+        root = Path(tmp)
+        print(f"rendering {', '.join(robots)} into {root} ...", flush=True)
+        package = cpp_build.render_test_package(root, only=robots, extra_robots=False)
+        digest = hashlib.sha256(BENCH_SOURCE.read_bytes()).hexdigest()[:12]
+        print(f"compiling with {' '.join(FLAGS)} against the {args.distro} stand-ins (bench source {digest}) ...",
+              flush=True)
+        binaries = cpp_build.run_parallel(robots, lambda label: build(builder, package.build(label), args.distro))
+        for label, binary in zip(robots, binaries, strict=True):
+            report(label, binary, args, have_valgrind, root)
+
+
+def report(label: str, binary: Path, args, have_valgrind: bool, work: Path) -> None:
+    times = run_times(binary, args.iterations)
+    instr: dict[str, float] = {}
+    driver: dict[str, float] = {}
+    if have_valgrind:
+        noop, _ = callgrind(binary, "noop", args.count_iterations, work)
+        floors = [f"{k}_{f}" for k in ("memcpy", "shmutex") for f in ("state", "writer", "readwrite")]
+        for path in (*DRIVER_PATHS, *floors):
+            per_call, inclusive = callgrind(binary, path, args.count_iterations, work)
+            instr[path] = per_call - noop
+            if path in DRIVER_PATHS:
+                driver[path] = driver_share(inclusive) / args.count_iterations
+
+    def ins(path: str) -> str:
+        return f"{instr[path]:,.0f}" if path in instr else "n/a"
+
+    clock = times.get("clock", {}).get("median", 0)
+    print(f"\n== {label}  (ns: indicative, steady_clock around each call, its own cost ~{clock} ns included;"
+          f" instructions: callgrind, per call)")
+    head = (f"{'path':<20}{'median':>8}{'p99':>8}{'p99.9':>9}{'instr':>10}{'stand-in':>10}{'driver':>9}"
+            f"{'memcpy':>8}{'shmutex':>9}{'x memcpy':>9}")
+    print(head)
+    print("-" * len(head))
+    for path in DRIVER_PATHS:
+        t = times[path]
+        floor = FLOOR_OF[path]
+        mem, shm = f"memcpy_{floor}", f"shmutex_{floor}"
+        ratio = f"{instr[path] / instr[mem]:.1f}" if path in instr and instr.get(mem, 0) > 0 else "n/a"
+        if path == "readwrite" and path in instr:  # read() and write() are the driver's own
+            driver[path] = instr[path]
+        drv = f"{driver[path]:,.0f}" if path in driver else "n/a"
+        si = f"{instr[path] - driver[path]:,.0f}" if path in driver else "n/a"
+        print(f"{path:<20}{t['median']:>8}{t['p99']:>8}{t['p99.9']:>9}{ins(path):>10}{si:>10}{drv:>9}"
+              f"{ins(mem):>8}{ins(shm):>9}{ratio:>9}")
+    for kind in ("memcpy", "shmutex"):
+        for floor in ("state", "writer", "readwrite"):
+            path = f"{kind}_{floor}"
+            t = times[path]
+            print(f"{path:<20}{t['median']:>8}{t['p99']:>8}{t['p99.9']:>9}{ins(path):>10}")
+    sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()

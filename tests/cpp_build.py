@@ -607,6 +607,20 @@ def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
                            name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro)
 
 
+def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
+                        distro: str = DEFAULT_DISTRO) -> tuple[CompileResult, list[CompileResult]]:
+    """Only the driver object (-Werror) against ``distro``'s stand-ins: the warning-free proof for
+    a distro whose runtime path another distro's harness run already covers. Same shape as
+    build_harness: (the object's result, [it])."""
+    m = rb.model
+    toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
+    obj = builder.compile(driver_source(rb.package_dir, m.vendor, m.robot), FLAVOURS[flavour],
+                          [rb.package_dir / "include", *toy_bus, *DISTROS[distro].include_dirs],
+                          digest_parts=[package_digest(rb.package_dir)],
+                          name=f"driver_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro)
+    return obj, [obj]
+
+
 def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
                   distro: str = DEFAULT_DISTRO) -> tuple[CompileResult, list[CompileResult]]:
     """Driver object (-Werror), harness object, CRC probe (unitree) and the linked binary, all

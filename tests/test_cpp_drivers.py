@@ -10,7 +10,7 @@ the package is rendered into a temporary folder, then:
 * the driver and the harness (through rhi_fake/hw.hpp) are compiled against every distro's stand-ins
   (MATRIX: plain -O2 on Humble, Jazzy, Kilted and Rolling/Lyrical; TSan on Humble, raw-pointer
   interfaces, for one robot per transport thread kind; ASan+UBSan and TSan on Rolling,
-  framework-owned handles; on Jazzy and Kilted the driver object alone) with -Werror and linked into
+  framework-owned handles; on Kilted the driver object alone) with -Werror and linked into
   tests/cpp/harness/driver_harness.cpp, which creates it through pluginlib's registry and checks, per
   section: interfaces, safety (the three layers, re-armed on re-activation), joint_map, imu, commands
   (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
@@ -45,14 +45,14 @@ SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "comman
                  "crc", "parameters", "decimation", "allocations", "threads")
 THREADS_MS = 300
 # (distro, flavour) of every build. RUN cells build the harness and drive the robot: plain on Humble
-# (interfaces over driver-owned doubles) and Rolling (framework-owned handles: the path of Jazzy
-# 4.34+, Kilted and Lyrical too), the sanitizers on Rolling. COMPILE cells build the driver object
-# alone (-Werror against that distro's stand-ins: deprecations, removed API), since their runtime
-# path is Rolling's. TSan also runs on Humble's path, for one robot per kind of transport thread
+# (2.x: interfaces over driver-owned doubles), Jazzy (4.x) and Rolling (6.x: framework-owned handles,
+# the path of Kilted and Lyrical too), the sanitizers on Rolling. COMPILE cells build the driver
+# object alone (-Werror against Kilted's stand-ins: deprecations, removed API), since its runtime
+# path is Jazzy's and Rolling's. TSan also runs on Humble's path, for one robot per kind of transport thread
 # (an SDK recurrent thread, a ROS executor): that path is the same code for every robot.
-RUN_MATRIX = (("humble", "plain"), ("humble", "tsan"), ("rolling", "plain"), ("rolling", "asan_ubsan"),
-              ("rolling", "tsan"))
-COMPILE_MATRIX = (("jazzy", "plain"), ("kilted", "plain"))
+RUN_MATRIX = (("humble", "plain"), ("humble", "tsan"), ("jazzy", "plain"), ("rolling", "plain"),
+              ("rolling", "asan_ubsan"), ("rolling", "tsan"))
+COMPILE_MATRIX = (("kilted", "plain"),)
 MATRIX = RUN_MATRIX + COMPILE_MATRIX
 ONLY = {("humble", "tsan"): {"unitree/g1", "agibot/x2"}}  # cells not built for every robot
 
@@ -239,7 +239,7 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 
 
-@pytest.mark.parametrize("distro", ["humble", "rolling"])
+@pytest.mark.parametrize("distro", ["humble", "jazzy", "rolling"])
 @pytest.mark.parametrize("label", ROBOTS)
 def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
     _compilable_robot(reference, label)
@@ -309,7 +309,7 @@ def test_report(harness_runs, harness_binaries, reference, capsys):
             compile_s = sum(s.seconds for s in steps) + (link.seconds if link not in steps else 0.0)
             if (distro, flavour) in COMPILE_MATRIX:
                 lines.append(f"  {distro:8s} {flavour:10s} driver object {'compiles' if link.ok else 'FAILS'} "
-                             f"with -Werror ({compile_s:.1f}s; runtime path: rolling)")
+                             f"with -Werror ({compile_s:.1f}s; runtime path: jazzy, rolling)")
                 continue
             run = harness_runs.get((label, distro, flavour))
             if run is None:

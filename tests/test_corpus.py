@@ -226,10 +226,11 @@ def compile_set(tmp_path: Path, generated: list[tuple[int, Outcome]]) -> list[tu
     test's time for no new check. Every driver is still generated and checked above."""
     chosen: dict[tuple, tuple[int, Outcome]] = {}
     for index, outcome in generated:
-        chosen.setdefault(driver_shape(tmp_path, index, outcome), (index, outcome))
-    for index, outcome in generated:
-        if (index, outcome) not in chosen.values():
+        shape = driver_shape(tmp_path, index, outcome)
+        if shape in chosen:
             outcome.status_note = "generated (its shape compiled with another)"
+        else:
+            chosen[shape] = (index, outcome)
     return list(chosen.values())
 
 

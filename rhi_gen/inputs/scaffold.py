@@ -132,13 +132,13 @@ def _default_gains_lines(vendor: str, robot: str, known: KnownRobot | None, mapp
     head = ["# Gains while a controller claims a joint's position or velocity but not its stiffness /",
             "# damping (joint_trajectory_controller, forward_position_controller)."]
     gains = [g for g in known.default_gains if g[0] in mapped] if known is not None else []
-    if not gains:
+    if known is None or not gains:
         why = known.gains_note if known is not None and known.gains_note else \
             f"rhi-gen knows no gains for {vendor}/{robot}"
         return [*head, f"# None here: {why}.",
                 "# A position-only controller leaves the robot limp until you add, per joint,",
                 "#   some_joint: {stiffness: 40.0, damping: 1.0}", "default_gains: {}"]
-    return [*head, f"# From {known.gains_note if known is not None else ''}.", "default_gains:",
+    return [*head, f"# From {known.gains_note}.", "default_gains:",
             *(f"  {yaml_string(n)}: {{stiffness: {kp!r}, damping: {kd!r}}}" for n, kp, kd in gains)]
 
 

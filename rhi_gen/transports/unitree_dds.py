@@ -173,14 +173,14 @@ class UnitreeDds(Transport):
         return replace(options, family=family, sdk_slots=slots, motor_modes=modes)
 
     def slots_for(self, known: KnownRobot | None, given: Mapping[str, str]) -> tuple[int | None, str]:
-        family = given.get("family") or (known.family if known is not None else "")
-        if family in FAMILIES:
+        family = _new_family(known, given)
+        if family:
             return FAMILIES[family], f"a unitree {family} LowCmd_"
         return self.motor_slots, self.slots_holder
 
     def check_new(self, vendor: str, robot: str, known: KnownRobot | None, given: Mapping[str, str]) -> None:
         """An unknown Unitree robot: the family cannot be guessed (one family's bytes are garbage to the other)."""
-        if (known is None or not known.family) and "family" not in given:
+        if not (given.get("family") or (known.family if known is not None else "")):
             raise ConfigError(f"rhi-gen does not know which low-level messages {vendor}/{robot} speaks",
                               key="--transport-option",
                               fix="add --transport-option family=hg (" + FAMILY_ROBOTS["hg"] + ") or "
@@ -191,9 +191,7 @@ class UnitreeDds(Transport):
 
     def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
                         given: Mapping[str, str] | None = None) -> list[str]:
-        family = (given or {}).get("family") or (known.family if known else "")
-        if family not in FAMILIES:
-            family = ""  # a wrong --transport-option family= is reported by the validator
+        family = _new_family(known, given or {})
         lines = [f"  family: {family}  # " + ("; ".join(f"{f}: {r}" for f, r in FAMILY_ROBOTS.items()))] \
             if family else []  # unknown robot: validation then asks for the family
         lines += ["  lowcmd_topic: rt/lowcmd", "  lowstate_topic: rt/lowstate"]
@@ -207,6 +205,13 @@ class UnitreeDds(Transport):
         lines += ["  release_motion_control: false  # true: release the built-in motion controller first",
                   "  verify_state_crc: true"]
         return lines
+
+
+def _new_family(known: KnownRobot | None, given: Mapping[str, str]) -> str:
+    """The family `rhi-gen new` writes: ``--transport-option family=`` over a known robot's; "" when
+    there is none or it is not a family (check_new and the validator report those)."""
+    family = given.get("family") or (known.family if known is not None else "")
+    return family if family in FAMILIES else ""
 
 
 TRANSPORT = UnitreeDds()

@@ -15,6 +15,7 @@
 #include <unitree/idl/hg/LowState_.hpp>
 
 #include "check.hpp"
+#include "crc_checks.hpp"
 #include "harness_common.hpp"
 #include "hg_crc_reference.hpp"
 #include "rhi_fake/unitree.hpp"
@@ -191,6 +192,12 @@ private:
 inline void check_crc_functions() {
   using LowCmd = Transport::LowCmd;
   using LowState = Transport::LowState;
+  const auto gen_cmd = [](const LowCmd& m) { return rhi_probe_low_cmd_crc(m); };
+  const auto portable_cmd = [](const LowCmd& m) { return rhi_probe_low_cmd_crc_portable(m); };
+  const auto ref_cmd = [](const LowCmd& m) { return rhi_ref::low_cmd_crc(m); };
+  const auto gen_state = [](const LowState& m) { return rhi_probe_low_state_crc(m); };
+  const auto portable_state = [](const LowState& m) { return rhi_probe_low_state_crc_portable(m); };
+  const auto ref_state = [](const LowState& m) { return rhi_ref::low_state_crc(m); };
   // The reference reproduces the test vectors of SDK_FACTS.md.
   static const uint32_t zeros[522] = {};
   CHECK_EQ(rhi_ref::Crc32Core(zeros, 250), 0xFE172F9FU, "reference: 250 zero words");
@@ -223,7 +230,7 @@ inline void check_crc_functions() {
     m.reserve() = 7U + i;
   }
   base.reserve() = {1U, 2U, 3U, 4U};
-  const std::vector<std::pair<const char*, std::function<void(LowCmd&)>>> cmd_fields = {
+  const FieldChanges<LowCmd> cmd_fields = {
       {"mode_pr", [](LowCmd& m) { m.mode_pr() = 1; }},
       {"mode_machine", [](LowCmd& m) { m.mode_machine() = 6; }},
       {"motor_cmd[0].mode", [](LowCmd& m) { m.motor_cmd()[0].mode() = 0; }},
@@ -240,14 +247,7 @@ inline void check_crc_functions() {
   const uint32_t base_crc = rhi_probe_low_cmd_crc(base);
   CHECK(rhi_ref::raw_image_crc(base) != rhi_ref::low_cmd_crc(base), "the LowCmd_ under test carries garbage padding");
   CHECK_EQ(base_crc, rhi_ref::low_cmd_crc(base), "generated = reference for a LowCmd_ with every field set");
-  for (const auto& [field, change] : cmd_fields) {
-    LowCmd m = base;
-    change(m);
-    CHECK(rhi_probe_low_cmd_crc(m) != base_crc, "LowCmd_ CRC covers %s", field);
-    CHECK_EQ(rhi_probe_low_cmd_crc(m), rhi_ref::low_cmd_crc(m), "generated = reference after changing %s", field);
-    CHECK_EQ(rhi_probe_low_cmd_crc_portable(m), rhi_ref::low_cmd_crc(m), "portable = reference after changing %s",
-             field);
-  }
+  check_every_field_counts("LowCmd_", base, cmd_fields, gen_cmd, portable_cmd, ref_cmd);
   LowCmd with_crc = base;
   with_crc.crc() = 0xDEADBEEFU;
   CHECK_EQ(rhi_probe_low_cmd_crc(with_crc), base_crc, "the crc field itself is not part of the CRC");
@@ -257,7 +257,7 @@ inline void check_crc_functions() {
   const LowState& state_base = filler.prepared();  // the fake's frame itself: its padding is garbage
   CHECK(rhi_ref::raw_image_crc(state_base) != rhi_ref::low_state_crc(state_base),
         "the fake robot's LowState_ carries garbage padding");
-  const std::vector<std::pair<const char*, std::function<void(LowState&)>>> state_fields = {
+  const FieldChanges<LowState> state_fields = {
       {"version[1]", [](LowState& m) { m.version()[1] ^= 1U; }},
       {"mode_pr", [](LowState& m) { m.mode_pr() ^= 1U; }},
       {"mode_machine", [](LowState& m) { m.mode_machine() ^= 1U; }},
@@ -282,32 +282,13 @@ inline void check_crc_functions() {
   };
   const uint32_t state_crc = rhi_probe_low_state_crc(state_base);
   CHECK_EQ(state_crc, rhi_ref::low_state_crc(state_base), "generated = reference for a LowState_ with every field set");
-  for (const auto& [field, change] : state_fields) {
-    LowState m;
-    std::memcpy(static_cast<void*>(&m), &state_base, sizeof(m));  // keeps the garbage padding
-    change(m);
-    CHECK(rhi_probe_low_state_crc(m) != state_crc, "LowState_ CRC covers %s", field);
-    CHECK_EQ(rhi_probe_low_state_crc(m), rhi_ref::low_state_crc(m), "generated = reference after changing %s", field);
-    CHECK_EQ(rhi_probe_low_state_crc_portable(m), rhi_ref::low_state_crc(m),
-             "portable = reference after changing %s", field);
-  }
+  check_every_field_counts("LowState_", state_base, state_fields, gen_state, portable_state, ref_state);
 
   // Random frames, padding included: generated = reference on every one.
   std::mt19937 rng(0x4860F00DU);
-  int cmd_mismatch = 0, state_mismatch = 0;
   constexpr int kRandomFrames = 100;
-  for (int k = 0; k < kRandomFrames; ++k) {
-    LowCmd c;
-    rhi_ref::fill_random(c, rng);
-    cmd_mismatch += rhi_probe_low_cmd_crc(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
-    cmd_mismatch += rhi_probe_low_cmd_crc_portable(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
-    LowState s;
-    rhi_ref::fill_random(s, rng);
-    state_mismatch += rhi_probe_low_state_crc(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
-    state_mismatch += rhi_probe_low_state_crc_portable(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
-  }
-  CHECK_EQ(cmd_mismatch, 0, "random LowCmd_ frames where generated != reference (of %d)", kRandomFrames);
-  CHECK_EQ(state_mismatch, 0, "random LowState_ frames where generated != reference (of %d)", kRandomFrames);
+  check_random_frames<LowCmd>("LowCmd_", rng, kRandomFrames, gen_cmd, portable_cmd, ref_cmd);
+  check_random_frames<LowState>("LowState_", rng, kRandomFrames, gen_state, portable_state, ref_state);
 }
 
 }  // namespace rhi_test

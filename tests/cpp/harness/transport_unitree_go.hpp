@@ -16,6 +16,7 @@
 #include <unitree/idl/go2/LowState_.hpp>
 
 #include "check.hpp"
+#include "crc_checks.hpp"
 #include "go_crc_reference.hpp"
 #include "harness_common.hpp"
 #include "rhi_fake/unitree.hpp"
@@ -235,6 +236,12 @@ private:
 inline void check_crc_functions() {
   using LowCmd = Transport::LowCmd;
   using LowState = Transport::LowState;
+  const auto gen_cmd = [](const LowCmd& m) { return rhi_probe_low_cmd_crc(m); };
+  const auto portable_cmd = [](const LowCmd& m) { return rhi_probe_low_cmd_crc_portable(m); };
+  const auto ref_cmd = [](const LowCmd& m) { return rhi_ref::low_cmd_crc(m); };
+  const auto gen_state = [](const LowState& m) { return rhi_probe_low_state_crc(m); };
+  const auto portable_state = [](const LowState& m) { return rhi_probe_low_state_crc_portable(m); };
+  const auto ref_state = [](const LowState& m) { return rhi_ref::low_state_crc(m); };
   namespace go = rhi_ref::go;
   static const uint32_t zeros[294] = {};
   CHECK_EQ(rhi_ref::Crc32Core(zeros, 202), 0x4B5A4880U, "reference: 202 zero words");
@@ -293,7 +300,7 @@ inline void check_crc_functions() {
   base.gpio() = 7;
   base.reserve() = 0x11223344U;
   base.crc() = 0;
-  const std::vector<std::pair<const char*, std::function<void(LowCmd&)>>> cmd_fields = {
+  const FieldChanges<LowCmd> cmd_fields = {
       {"head[0]", [](LowCmd& m) { m.head()[0] ^= 1U; }},
       {"head[1]", [](LowCmd& m) { m.head()[1] ^= 1U; }},
       {"level_flag", [](LowCmd& m) { m.level_flag() = 0xEE; }},
@@ -322,14 +329,7 @@ inline void check_crc_functions() {
   CHECK(rhi_ref::raw_image_crc(base) != rhi_ref::low_cmd_crc(base), "the LowCmd_ under test carries garbage padding");
   CHECK_EQ(base_crc, rhi_ref::low_cmd_crc(base), "generated = reference for a LowCmd_ with every field set, "
            "garbage padding (the padding is not hashed as it is)");
-  for (const auto& [field, change] : cmd_fields) {
-    LowCmd m = base;
-    change(m);
-    CHECK(rhi_probe_low_cmd_crc(m) != base_crc, "LowCmd_ CRC covers %s", field);
-    CHECK_EQ(rhi_probe_low_cmd_crc(m), rhi_ref::low_cmd_crc(m), "generated = reference after changing %s", field);
-    CHECK_EQ(rhi_probe_low_cmd_crc_portable(m), rhi_ref::low_cmd_crc(m), "portable = reference after changing %s",
-             field);
-  }
+  check_every_field_counts("LowCmd_", base, cmd_fields, gen_cmd, portable_cmd, ref_cmd);
   LowCmd with_crc = base;
   with_crc.crc() = 0xDEADBEEFU;
   CHECK_EQ(rhi_probe_low_cmd_crc(with_crc), base_crc, "the crc field itself is not part of the CRC");
@@ -342,7 +342,7 @@ inline void check_crc_functions() {
   const uint32_t state_crc = rhi_probe_low_state_crc(state_base);
   CHECK_EQ(state_crc, rhi_ref::low_state_crc(state_base), "generated = reference for a LowState_ with every field "
            "set, garbage padding");
-  const std::vector<std::pair<const char*, std::function<void(LowState&)>>> state_fields = {
+  const FieldChanges<LowState> state_fields = {
       {"head[0]", [](LowState& m) { m.head()[0] ^= 1U; }},
       {"level_flag", [](LowState& m) { m.level_flag() ^= 1U; }},
       {"frame_reserve", [](LowState& m) { m.frame_reserve() ^= 1U; }},
@@ -385,34 +385,14 @@ inline void check_crc_functions() {
       {"fan_frequency[3]", [](LowState& m) { m.fan_frequency()[3] ^= 1U; }},
       {"reserve", [](LowState& m) { m.reserve() ^= 1U; }},
   };
-  for (const auto& [field, change] : state_fields) {
-    LowState m;
-    std::memcpy(static_cast<void*>(&m), &state_base, sizeof(m));  // keeps the garbage padding
-    change(m);
-    CHECK(rhi_probe_low_state_crc(m) != state_crc, "LowState_ CRC covers %s", field);
-    CHECK_EQ(rhi_probe_low_state_crc(m), rhi_ref::low_state_crc(m), "generated = reference after changing %s", field);
-    CHECK_EQ(rhi_probe_low_state_crc_portable(m), rhi_ref::low_state_crc(m),
-             "portable = reference after changing %s", field);
-  }
+  check_every_field_counts("LowState_", state_base, state_fields, gen_state, portable_state, ref_state);
 
   // Random frames, padding included: generated = reference on every one.
   std::mt19937 rng(0x60F00DU);
-  int cmd_mismatch = 0, state_mismatch = 0, padding_hashed = 0;
   constexpr int kRandomFrames = 200;
-  for (int k = 0; k < kRandomFrames; ++k) {
-    LowCmd c;
-    rhi_ref::fill_random(c, rng);
-    cmd_mismatch += rhi_probe_low_cmd_crc(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
-    cmd_mismatch += rhi_probe_low_cmd_crc_portable(c) != rhi_ref::low_cmd_crc(c) ? 1 : 0;
-    padding_hashed += rhi_ref::raw_image_crc(c) == rhi_ref::low_cmd_crc(c) ? 1 : 0;
-    LowState s;
-    rhi_ref::fill_random(s, rng);
-    state_mismatch += rhi_probe_low_state_crc(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
-    state_mismatch += rhi_probe_low_state_crc_portable(s) != rhi_ref::low_state_crc(s) ? 1 : 0;
-  }
-  CHECK_EQ(padding_hashed, 0, "random LowCmd_ frames have non-zero padding (the test can see a padding bug)");
-  CHECK_EQ(cmd_mismatch, 0, "random LowCmd_ frames where generated != reference (of %d)", kRandomFrames);
-  CHECK_EQ(state_mismatch, 0, "random LowState_ frames where generated != reference (of %d)", kRandomFrames);
+  CHECK_EQ(check_random_frames<LowCmd>("LowCmd_", rng, kRandomFrames, gen_cmd, portable_cmd, ref_cmd), 0,
+           "random LowCmd_ frames have non-zero padding (the test can see a padding bug)");
+  check_random_frames<LowState>("LowState_", rng, kRandomFrames, gen_state, portable_state, ref_state);
 }
 
 }  // namespace rhi_test

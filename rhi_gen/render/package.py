@@ -24,7 +24,7 @@ DEFAULT_PACKAGE = PackageInfo()
 COMMON_FILES = tuple(
     (f"common/{name}.j2", f"include/robot_hardware_interface/common/{name}")
     for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
-                 "hardware_parameters.hpp", "ros2_control_compat.hpp", "driver_core.hpp",
+                 "hardware_parameters.hpp", "ros2_control_compat.hpp", "slot_kernels.hpp", "driver_core.hpp",
                  "system_driver.hpp"))
 TEST_FILES = (("test/hardware_interface_test.hpp.j2", "test/hardware_interface_test.hpp"),)
 PACKAGE_FILES = (

@@ -447,6 +447,23 @@ void test_main_scenario() {
       t.deliver_state(s0);
       hw.read(kTime, kPeriod);
       check_state_interfaces(ifs, s0, "state in the original order again");
+      // A message naming one joint twice and another not at all is dropped whole: the duplicate
+      // never stands in for the missing joint (whose value would silently go stale).
+      const StateFrame dup = distinct_state(frame++);
+      if (t.deliver_with_duplicate(dup)) {
+        hw.read(kTime, kPeriod);
+        StateFrame expected = dup;
+        for (size_t slot = 0; slot < N; ++slot) {
+          if (t.in_first_group(slot)) {
+            expected.q[slot] = s0.q[slot];
+            expected.dq[slot] = s0.dq[slot];
+            expected.tau[slot] = s0.tau[slot];
+          }
+        }
+        check_state_interfaces(ifs, expected, "group 0 repeating entry 0 in place of entry 1");
+        t.deliver_state(s0);
+        hw.read(kTime, kPeriod);
+      }
     }
 #endif
   }

@@ -93,6 +93,26 @@ public:
     return reached == kGroupCount ? 1U : 0U;
   }
 
+  // Every group as usual, except that in group 0 entry 1 repeats entry 0 (its name and values):
+  // joint 1 of that group is missing, a duplicate stands in for it. Returns whether group 0 has
+  // a second entry at all.
+  bool deliver_with_duplicate(const StateFrame& f) {
+    prepare_state(f);
+    if (kGroups[0].size < 2) {
+      return false;
+    }
+    StateMsg& m = rotated_msgs_[0];
+    m = state_msgs_[0];
+    m.joints[1] = m.joints[0];
+    rhi_fake::ros::deliver<StateMsg>(kGroups[0].state_topic, m);
+    for (size_t g = 1; g < kGroupCount; ++g) {
+      rhi_fake::ros::deliver<StateMsg>(kGroups[g].state_topic, state_msgs_[g]);
+    }
+    return true;
+  }
+  // The motor slots of group 0 (the one deliver_with_duplicate() corrupts).
+  static bool in_first_group(size_t slot) { return slot >= kGroups[0].offset && slot < kGroups[0].offset + kGroups[0].size; }
+
   uint64_t sent_messages() const {
     uint64_t total = 0;
     for (size_t g = 0; g < kGroupCount; ++g) {

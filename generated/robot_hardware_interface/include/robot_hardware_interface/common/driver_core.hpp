@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <initializer_list>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -30,6 +31,7 @@
 #include "robot_hardware_interface/common/monitor.hpp"
 #include "robot_hardware_interface/common/motor_types.hpp"
 #include "robot_hardware_interface/common/robot_spec.hpp"
+#include "robot_hardware_interface/common/slot_kernels.hpp"
 #include "robot_hardware_interface/common/types.hpp"
 
 namespace robot_hardware_interface
@@ -94,8 +96,12 @@ public:
       default_stiffness_[joint.slot] = joint.default_stiffness;
       default_damping_[joint.slot] = joint.default_damping;
       mapped_slots_.push_back(joint.slot);
+      if (joint.mode == CommandMode::kVelocity) {
+        velocity_slots_[velocity_slot_count_++] = joint.slot;
+      }
     }
     std::sort(mapped_slots_.begin(), mapped_slots_.end());
+    updateCommandBounds();
   }
 
   DriverCore(const DriverCore &) = delete;
@@ -128,7 +134,7 @@ public:
   }
 
   // ros2_control storage, exported as interfaces: controller thread only.
-  MotorData & jointData(size_t slot) {return joint_data_[slot];}
+  JointStorage<N> & joints() {return frames_.joints;}
   ImuData & imuData() {return imu_data_;}
 
   // on_activate: re-arm the safe start. After a deactivation the robot may have moved, so nothing
@@ -387,11 +393,10 @@ public:
     const bool state_is_current = first_state_received_.load(std::memory_order_acquire);
     const State * state = motor_state_buffer_.getData();
     if (state != nullptr) {
-      for (size_t i = 0; i < N; ++i) {
-        joint_data_[i].pos_ = static_cast<double>(state->q[i]);
-        joint_data_[i].vel_ = static_cast<double>(state->dq[i]);
-        joint_data_[i].tau_ = static_cast<double>(state->tau[i]);
-      }
+      forEachSlotBlock<N>(
+        [this, state](auto count, size_t begin) {
+          copyStateBlock<decltype(count)::value>(*state, frames_.joints, begin);
+        });
       if (state_is_current) {
         state_copied_.store(true, std::memory_order_relaxed);
       }
@@ -423,41 +428,26 @@ public:
     // A mode switch first, so that the safe start below has the last word on a first cycle.
     bool rewritten = applyClaimChanges();
     if (!command_initialized_.load(std::memory_order_relaxed)) {
-      for (MotorData & joint : joint_data_) {
-        joint.posDes_ = joint.pos_;  // target = measured position
-        joint.velDes_ = 0.0;
-        joint.kp_ = 0.0;  // zero gains: the robot stays passive until a controller commands it
-        joint.kd_ = 0.0;
-        joint.ff_ = 0.0;
-      }
+      frames_.joints.pos_des = frames_.joints.pos;  // target = measured position
+      frames_.joints.vel_des.fill(0.0);
+      frames_.joints.kp.fill(
+        0.0);  // zero gains: the robot stays passive until a controller commands it
+      frames_.joints.kd.fill(0.0);
+      frames_.joints.ff.fill(0.0);
       command_initialized_.store(true, std::memory_order_relaxed);
       rewritten = true;
       RCLCPP_INFO(logger_, "command initialized to the measured position with zero gains");
     }
-    for (size_t i = 0; i < N; ++i) {
-      const MotorData & joint = joint_data_[i];
-      const SlotLimits & limits = slot_limits_[i];
-      const uint8_t claims = claims_[i];
-      const bool position_mode = slot_modes_[i] == CommandMode::kPosition;
-      const bool driven = (claims & (kClaimPosition | kClaimVelocity)) != 0U;
-      // A velocity-commanded joint has no position target: its measured position, with kp = 0.
-      const double position = position_mode ?
-        std::clamp(joint.posDes_, limits.position_min, limits.position_max) : joint.pos_;
-      const double velocity = (claims & kClaimVelocity) != 0U ?
-        std::clamp(joint.velDes_, -limits.velocity, limits.velocity) : 0.0;
-      const double effort = (claims & kClaimEffort) != 0U ?
-        std::clamp(joint.ff_, -limits.effort, limits.effort) : 0.0;
-      const double kp = !position_mode ? 0.0 : (claims & kClaimStiffness) != 0U ? joint.kp_ :
-        (claims & kClaimPosition) != 0U ? default_stiffness_[i] : 0.0;
-      const double kd = (claims & kClaimDamping) != 0U ? joint.kd_ :
-        driven ? default_damping_[i] : 0.0;
-      motor_cmd_cache_.q_target[i] = static_cast<T>(position);
-      motor_cmd_cache_.dq_target[i] = static_cast<T>(velocity);
-      motor_cmd_cache_.kp[i] = static_cast<T>(kp);
-      motor_cmd_cache_.kd[i] = static_cast<T>(kd);
-      motor_cmd_cache_.tau_ff[i] = static_cast<T>(effort);
+    forEachSlotBlock<N>(
+      [this](auto count, size_t begin) {
+        boundCommandBlock<decltype(count)::value>(frames_, begin);
+      });
+    // A velocity-commanded joint has no position target: its measured position (its kp is 0).
+    for (size_t k = 0; k < velocity_slot_count_; ++k) {
+      const size_t slot = velocity_slots_[k];
+      frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);
     }
-    motor_command_buffer_.setData(motor_cmd_cache_);
+    motor_command_buffer_.setData(frames_.command);
     return rewritten;
   }
 
@@ -549,16 +539,66 @@ private:
       if (next->bits[i] == claims_[i]) {
         continue;
       }
-      MotorData & joint = joint_data_[i];
-      joint.posDes_ = joint.pos_;
-      joint.velDes_ = 0.0;
-      joint.ff_ = 0.0;
-      joint.kp_ = slot_modes_[i] == CommandMode::kPosition ? default_stiffness_[i] : 0.0;
-      joint.kd_ = default_damping_[i];
+      frames_.joints.pos_des[i] = frames_.joints.pos[i];
+      frames_.joints.vel_des[i] = 0.0;
+      frames_.joints.ff[i] = 0.0;
+      frames_.joints.kp[i] = slot_modes_[i] == CommandMode::kPosition ? default_stiffness_[i] : 0.0;
+      frames_.joints.kd[i] = default_damping_[i];
       claims_[i] = next->bits[i];
       changed = true;
     }
+    if (changed) {
+      updateCommandBounds();
+    }
     return changed;
+  }
+
+  static void pin(std::array<T, N> & lower, std::array<T, N> & upper, size_t slot, T min, T max)
+  {
+    lower[slot] = min;
+    upper[slot] = max;
+  }
+
+  // The bounds write() applies per slot, from the claims. A claimed interface is bounded by the
+  // URDF limits (a claimed gain is not bounded: nextCommand() rejects a negative one). An
+  // unclaimed one is pinned: to the joint's default gain while its position (stiffness) or its
+  // position or velocity (damping) is claimed, to zero otherwise. Velocity-commanded joints get
+  // kp = 0 and their measured position (writeCommand()).
+  void updateCommandBounds()
+  {
+    constexpr T kUnbounded = std::numeric_limits<T>::infinity();
+    for (size_t i = 0; i < N; ++i) {
+      const uint8_t claims = claims_[i];
+      const SlotLimits & limits = slot_limits_[i];
+      const bool position_mode = slot_modes_[i] == CommandMode::kPosition;
+      const bool driven = (claims & (kClaimPosition | kClaimVelocity)) != 0U;
+      const auto velocity = static_cast<T>((claims & kClaimVelocity) != 0U ? limits.velocity : 0.0);
+      const auto effort = static_cast<T>((claims & kClaimEffort) != 0U ? limits.effort : 0.0);
+      const auto stiffness = static_cast<T>(
+        position_mode && (claims & kClaimPosition) != 0U ? default_stiffness_[i] : 0.0);
+      const auto damping = static_cast<T>(driven ? default_damping_[i] : 0.0);
+      Command & lower = frames_.lower;
+      Command & upper = frames_.upper;
+      if (position_mode) {
+        pin(
+          lower.q_target, upper.q_target, i, static_cast<T>(limits.position_min),
+          static_cast<T>(limits.position_max));
+      } else {
+        pin(lower.q_target, upper.q_target, i, -kUnbounded, kUnbounded);
+      }
+      pin(lower.dq_target, upper.dq_target, i, -velocity, velocity);
+      pin(lower.tau_ff, upper.tau_ff, i, -effort, effort);
+      if (position_mode && (claims & kClaimStiffness) != 0U) {
+        pin(lower.kp, upper.kp, i, -kUnbounded, kUnbounded);
+      } else {
+        pin(lower.kp, upper.kp, i, stiffness, stiffness);
+      }
+      if ((claims & kClaimDamping) != 0U) {
+        pin(lower.kd, upper.kd, i, -kUnbounded, kUnbounded);
+      } else {
+        pin(lower.kd, upper.kd, i, damping, damping);
+      }
+    }
   }
 
   bool stateIsStale() const
@@ -577,6 +617,8 @@ private:
   std::array<double, N> default_stiffness_{};
   std::array<double, N> default_damping_{};
   std::vector<size_t> mapped_slots_;
+  std::array<size_t, N> velocity_slots_{};  // slots of velocity-commanded joints, fixed
+  size_t velocity_slot_count_{0};
 
   // Command mode switches: prepared and committed by the controller manager, applied by write().
   Claims prepared_{};
@@ -591,14 +633,13 @@ private:
   DataBuffer<Command> motor_command_buffer_;  // write() / layer 2 -> command writer
   DataBuffer<Imu> imu_state_buffer_;          // IMU callback -> read()
 
-  // ros2_control storage: controller thread only
-  std::array<MotorData, N> joint_data_{};
+  // ros2_control storage, the per-slot command bounds and write()'s frame: controller thread only
+  ControllerFrames<N, T> frames_{};
   ImuData imu_data_{};
 
   // Pre-allocated frames (no heap allocation in hot paths)
   State motor_state_cache_;    // state thread: parsing buffer
   Imu imu_state_cache_;        // IMU callback: parsing buffer
-  Command motor_cmd_cache_;    // write(): packing buffer
   Command initial_cmd_cache_;  // state thread: layer-2 initial command
   Command safe_cmd_;           // writer: the frame actually sent
 

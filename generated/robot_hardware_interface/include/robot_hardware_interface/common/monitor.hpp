@@ -37,6 +37,13 @@ inline int64_t steadyNowNs()
     std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// The steady time of `t` in nanoseconds, on the scale of steadyNowNs(): a callback that read the
+// clock when it started stamps its frame with that reading instead of reading the clock again.
+inline int64_t steadyNs(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
+}
+
 inline uint64_t steadyNowUs()
 {
   return static_cast<uint64_t>(

@@ -283,9 +283,10 @@ private:
   {
     const int slot = core_.slotOf(prefix);
     if (slot >= 0) {
-      MotorData & joint = core_.jointData(static_cast<size_t>(slot));
-      return name == "position" ? &joint.pos_ : name == "velocity" ? &joint.vel_ :
-             name == "effort" ? &joint.tau_ : nullptr;
+      JointStorage<N> & joints = core_.joints();
+      const auto s = static_cast<size_t>(slot);
+      return name == "position" ? &joints.pos[s] : name == "velocity" ? &joints.vel[s] :
+             name == "effort" ? &joints.tau[s] : nullptr;
     }
     if (!core_.hasImu() || prefix != core_.spec().imu_name) {
       return nullptr;
@@ -313,7 +314,6 @@ private:
     if (slot < 0) {
       return nullptr;
     }
-    MotorData & joint = core_.jointData(static_cast<size_t>(slot));
     if (core_.modeOf(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
       (name == "position" || name == "stiffness"))
     {
@@ -322,9 +322,11 @@ private:
     if (!transport_->carriesGains() && (name == "stiffness" || name == "damping")) {
       return nullptr;  // the robot applies its own gains
     }
-    return name == "position" ? &joint.posDes_ : name == "velocity" ? &joint.velDes_ :
-           name == "stiffness" ? &joint.kp_ : name == "damping" ? &joint.kd_ :
-           name == "effort" ? &joint.ff_ : nullptr;
+    JointStorage<N> & joints = core_.joints();
+    const auto s = static_cast<size_t>(slot);
+    return name == "position" ? &joints.pos_des[s] : name == "velocity" ? &joints.vel_des[s] :
+           name == "stiffness" ? &joints.kp[s] : name == "damping" ? &joints.kd[s] :
+           name == "effort" ? &joints.ff[s] : nullptr;
   }
 
   DriverCore<N, T> core_;

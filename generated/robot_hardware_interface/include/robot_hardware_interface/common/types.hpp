@@ -8,6 +8,7 @@
 #define ROBOT_HARDWARE_INTERFACE__COMMON__TYPES_HPP_
 
 #include <array>
+#include <cstddef>
 
 #include <hardware_interface/types/hardware_interface_return_values.hpp>
 #include <rclcpp_lifecycle/node_interfaces/lifecycle_node_interface.hpp>
@@ -18,18 +19,21 @@ namespace robot_hardware_interface
 using CallbackReturn = rclcpp_lifecycle::node_interfaces::LifecycleNodeInterface::CallbackReturn;
 using return_type = hardware_interface::return_type;
 
-// ros2_control storage of one joint. The exported interfaces read and write these doubles, so
-// they are only touched from the controller thread (read() / write()).
-struct MotorData
+// ros2_control storage of every joint, by SDK motor slot: one array per interface (a structure of
+// arrays, so that read() and write() convert whole arrays in vector registers). The exported
+// interfaces point into these doubles, so they are only touched from the controller thread
+// (read() / write()).
+template<size_t N>
+struct JointStorage
 {
-  double pos_{0.0};     // state: position [rad or m]
-  double vel_{0.0};     // state: velocity
-  double tau_{0.0};     // state: effort
-  double posDes_{0.0};  // command: position target
-  double velDes_{0.0};  // command: velocity target
-  double kp_{0.0};      // command: stiffness
-  double kd_{0.0};      // command: damping
-  double ff_{0.0};      // command: feed-forward effort
+  std::array<double, N> pos{};      // state: position [rad or m]
+  std::array<double, N> vel{};      // state: velocity
+  std::array<double, N> tau{};      // state: effort
+  std::array<double, N> pos_des{};  // command: position target
+  std::array<double, N> vel_des{};  // command: velocity target
+  std::array<double, N> kp{};       // command: stiffness
+  std::array<double, N> kd{};       // command: damping
+  std::array<double, N> ff{};       // command: feed-forward effort
 };
 
 // ros2_control storage of the IMU, in the order of the exported interfaces.

@@ -77,7 +77,8 @@ public:
     node_ = node;
     const rclcpp::QoS qos = makeQos(options_.qos);
     for (size_t slot = 0; slot < N; ++slot) {
-      name_lengths_[slot] = std::strlen(core.slotJointNames()[slot]);
+      slot_names_[slot] = core.slotJointNames()[slot];
+      name_lengths_[slot] = std::strlen(slot_names_[slot]);
     }
     for (size_t g = 0; g < groups_.size(); ++g) {
       const AimdkJointGroup & spec = options_.groups[g];
@@ -152,11 +153,32 @@ private:
     std::vector<size_t> entry_slots;  // slot of each entry of the last state message (sized once)
   };
 
-  // `name` is the joint driven in `slot` (lengths first, then the bytes; no strlen).
+  // `name` is the joint driven in `slot`: lengths first, then every byte, compared in place a
+  // word at a time (first word, middle words, last word overlapping), without a library call.
   bool sameName(const std::string & name, size_t slot) const
   {
-    return name.size() == name_lengths_[slot] &&
-           std::memcmp(name.data(), core_->slotJointNames()[slot], name.size()) == 0;
+    const size_t size = name.size();
+    if (size != name_lengths_[slot]) {
+      return false;
+    }
+    const char * a = name.data();
+    const char * b = slot_names_[slot];
+    if (size < sizeof(uint64_t)) {
+      return std::memcmp(a, b, size) == 0;
+    }
+    const size_t last = size - sizeof(uint64_t);
+    uint64_t difference = (loadWord(a) ^ loadWord(b)) | (loadWord(a + last) ^ loadWord(b + last));
+    for (size_t i = sizeof(uint64_t); i < last; i += sizeof(uint64_t)) {
+      difference |= loadWord(a + i) ^ loadWord(b + i);
+    }
+    return difference == 0U;
+  }
+
+  static uint64_t loadWord(const char * bytes)
+  {
+    uint64_t word;
+    std::memcpy(&word, bytes, sizeof(word));  // any alignment, no aliasing question
+    return word;
   }
 
   // The motor slot of entry `position` of a group's state message. A named entry is first tried
@@ -219,7 +241,7 @@ private:
       // A skipped frame still proves that the group reports: it keeps the group fresh, unless
       // the group's last processed frame was rejected.
       if (group.frames_valid) {
-        group.state_time_ns = steadyNowNs();
+        group.state_time_ns = steadyNs(start);
         if (groups_reported_ == groups_.size()) {
           core_->markStateFresh(oldestGroupTime());
         }
@@ -228,39 +250,63 @@ private:
     }
     // Validate the whole frame before touching the parsing buffer: a rejected frame leaves no
     // trace.
+    const size_t count = msg.joints.size();
+    const size_t remembered = std::min(count, group.entry_slots.size());
+    size_t * const entry_slots = group.entry_slots.data();
+    // A joint counts once however often the message repeats it: a duplicate must not stand in
+    // for a joint that is missing.
+    const uint32_t stamp = ++message_stamp_;
     size_t matched = 0;
-    for (size_t i = 0; i < msg.joints.size(); ++i) {
+    double non_finite = 0.0;  // stays 0 while every value is finite: x * 0 is NaN for inf and NaN
+    const auto check = [&](size_t slot, const auto & joint) {
+        non_finite += joint.position * 0.0 + joint.velocity * 0.0 + joint.effort * 0.0;
+        matched += slot_stamps_[slot] != stamp ? 1U : 0U;
+        slot_stamps_[slot] = stamp;
+      };
+    for (size_t i = 0; i < remembered; ++i) {
       const auto & joint = msg.joints[i];
-      const size_t slot = resolveSlot(group, i, joint.name);
-      if (i < group.entry_slots.size()) {
-        group.entry_slots[i] = slot;  // reused below and tried first on the next message
+      // The usual case inline: the entry names the joint it named in the last message.
+      size_t slot = entry_slots[i];
+      if (slot == kNoSlot || !sameName(joint.name, slot)) {
+        slot = resolveSlot(group, i, joint.name);
+        entry_slots[i] = slot;  // tried first on the next message, reused below
       }
-      if (slot == kNoSlot) {
-        continue;
+      if (slot != kNoSlot) {
+        check(slot, joint);
       }
-      if (!allFinite(joint.position, joint.velocity, joint.effort)) {
-        reject(group, "non-finite value for a joint");
-        return;
+    }
+    for (size_t i = remembered; i < count; ++i) {  // more entries than the group has
+      const size_t slot = resolveSlot(group, i, msg.joints[i].name);
+      if (slot != kNoSlot) {
+        check(slot, msg.joints[i]);
       }
-      ++matched;
+    }
+    if (!(non_finite == 0.0)) {
+      reject(group, "non-finite value for a joint");
+      return;
     }
     if (matched < group.driven) {
       reject(group, "the group did not report all of its joints");
       return;
     }
     auto & state = core_->stateFrame();
-    for (size_t i = 0; i < msg.joints.size(); ++i) {
-      const auto & joint = msg.joints[i];
-      const size_t slot =
-        i < group.entry_slots.size() ? group.entry_slots[i] : resolveSlot(group, i, joint.name);
-      if (slot == kNoSlot) {
-        continue;
+    const auto store = [&state](size_t slot, const auto & joint) {
+        state.q[slot] = static_cast<T>(joint.position);
+        state.dq[slot] = static_cast<T>(joint.velocity);
+        state.tau[slot] = static_cast<T>(joint.effort);
+      };
+    for (size_t i = 0; i < remembered; ++i) {
+      if (entry_slots[i] != kNoSlot) {
+        store(entry_slots[i], msg.joints[i]);
       }
-      state.q[slot] = static_cast<T>(joint.position);
-      state.dq[slot] = static_cast<T>(joint.velocity);
-      state.tau[slot] = static_cast<T>(joint.effort);
     }
-    group.state_time_ns = steadyNowNs();
+    for (size_t i = remembered; i < count; ++i) {
+      const size_t slot = resolveSlot(group, i, msg.joints[i].name);
+      if (slot != kNoSlot) {
+        store(slot, msg.joints[i]);
+      }
+    }
+    group.state_time_ns = steadyNs(start);
     group.frames_valid = true;
     if (!group.reported) {
       group.reported = true;
@@ -317,6 +363,9 @@ private:
   DriverCore<N, T> * core_{nullptr};
   rclcpp::Node::SharedPtr node_;
   std::vector<Group> groups_;  // sized at construction
+  std::array<uint32_t, N> slot_stamps_{};  // executor thread: message that last named each slot
+  uint32_t message_stamp_{0};
+  std::array<const char *, N> slot_names_{};  // each slot's joint name ("": not driven)
   std::array<size_t, N> name_lengths_{};  // strlen of each slot's joint name (0: not driven)
   size_t groups_reported_{0};  // executor thread
   uint32_t command_sequence_{0};

@@ -130,7 +130,7 @@ private:
       state.dq[slot] = static_cast<T>(dq);
       state.tau[slot] = static_cast<T>(tau);
     }
-    core_->publishState(steadyNowNs());
+    core_->publishState(steadyNs(start));
     core_->checkStateLatency(start);
   }
 

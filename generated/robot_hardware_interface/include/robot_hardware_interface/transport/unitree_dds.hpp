@@ -166,7 +166,7 @@ private:
     if (core_->hasImu()) {
       publishImu(low_state.imu_state());
     }
-    core_->publishState(steadyNowNs());
+    core_->publishState(steadyNs(start));
     core_->checkStateLatency(start);
   }
 

@@ -428,10 +428,11 @@ public:
     // A mode switch first, so that the safe start below has the last word on a first cycle.
     bool rewritten = applyClaimChanges();
     if (!command_initialized_.load(std::memory_order_relaxed)) {
+      // Target = measured position, zero gains: the robot stays passive until a controller
+      // commands it.
       frames_.joints.pos_des = frames_.joints.pos;  // target = measured position
       frames_.joints.vel_des.fill(0.0);
-      frames_.joints.kp.fill(
-        0.0);  // zero gains: the robot stays passive until a controller commands it
+      frames_.joints.kp.fill(0.0);
       frames_.joints.kd.fill(0.0);
       frames_.joints.ff.fill(0.0);
       command_initialized_.store(true, std::memory_order_relaxed);

@@ -4,8 +4,10 @@ tests/cpp/harness/data_buffer_stress.cpp is compiled against the generated commo
 (-std=c++17 -Wall -Wextra -Werror) in three flavours: plain -O2, ASan+UBSan and TSan. It checks the
 contract (nullptr before the first frame, newest frame afterwards, the consumer's frame untouched by
 any number of writes until its next getData(), no heap allocation, not copyable), then hands 10^6
-frames whose last field is a checksum of the rest from one producer, and again from two producers
-(the driver's command buffer has two: write() and the first-state callback), to a consumer that
+frames whose last field is a checksum of the rest from one producer through a
+DataBuffer<T, Producers::kOne> (no mutex: the driver's state and IMU buffers), and again from two
+producers through a DataBuffer<T> (the driver's command buffer has two: write() and the first-state
+callback), to a consumer that
 verifies every frame, holds it a while and verifies it again. Torn frames, frames changed while
 held and frames going backwards must all be zero, and the sanitizers must report nothing.
 

@@ -16,6 +16,14 @@
 namespace robot_hardware_interface
 {
 
+// Who calls setData(): any number of threads (a mutex orders them), or one producer whose calls
+// are already ordered with each other (a single callback thread: no mutex needed).
+enum class Producers
+{
+  kMany,
+  kOne,
+};
+
 // Zero-allocation hand-off of the newest complete frame from producer threads (SDK / topic
 // callbacks, write()) to ONE consumer thread (read(), the command writer).
 //
@@ -28,7 +36,7 @@ namespace robot_hardware_interface
 // A producer publishes by swapping back_ with middle_; the consumer picks up a new frame by
 // swapping front_ with middle_. The exchanges are acq_rel, so a slot's contents are fully written
 // before the other side can see its index: no torn frames, no locks on the consumer side.
-template<typename T>
+template<typename T, Producers kProducers = Producers::kMany>
 class DataBuffer
 {
   static_assert(std::is_copy_assignable<T>::value, "DataBuffer<T> copies frames by assignment");
@@ -39,14 +47,16 @@ public:
   DataBuffer & operator=(const DataBuffer &) = delete;
 
   // Producer side: copy `data` into the back slot and publish it as the newest frame.
-  // Any number of producer threads; they are serialised by a mutex held only for this copy.
+  // Producers::kMany: any number of producer threads, serialised by a mutex held only for this
+  // copy. Producers::kOne: the caller guarantees its calls never overlap.
   void setData(const T & data)
   {
-    std::lock_guard<std::mutex> lock(write_mutex_);
-    slots_[back_] = data;
-    const auto published = static_cast<uint8_t>(back_ | kFreshBit);
-    const uint8_t previous = middle_.exchange(published, std::memory_order_acq_rel);
-    back_ = static_cast<uint8_t>(previous & kIndexMask);
+    if constexpr (kProducers == Producers::kMany) {
+      std::lock_guard<std::mutex> lock(write_mutex_);
+      publish(data);
+    } else {
+      publish(data);
+    }
   }
 
   // Consumer side (one thread only): the newest complete frame, or nullptr if setData() was
@@ -62,6 +72,15 @@ public:
   }
 
 private:
+  // Copy into the back slot, then swap it with the middle one (under the producers' ordering).
+  void publish(const T & data)
+  {
+    slots_[back_] = data;
+    const auto published = static_cast<uint8_t>(back_ | kFreshBit);
+    const uint8_t previous = middle_.exchange(published, std::memory_order_acq_rel);
+    back_ = static_cast<uint8_t>(previous & kIndexMask);
+  }
+
   static constexpr uint8_t kIndexMask = 0x3U;
   static constexpr uint8_t kFreshBit = 0x4U;  // set in middle_ when it holds an unread frame
 

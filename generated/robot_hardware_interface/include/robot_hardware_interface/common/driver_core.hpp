@@ -55,7 +55,8 @@ bool allFinite(Values... values)
 //
 // Threads:
 //   - controller: read() / write() through readState() and writeCommand();
-//   - state: the transport's callbacks fill stateFrame() / imuFrame() and publish them;
+//   - state: the transport's callbacks fill stateFrame() / imuFrame() and publish them; the
+//     state callbacks never overlap each other, nor do the IMU ones (they share those frames);
 //   - commands: the transport's writer takes nextCommand() every command_writer_period_us.
 // They hand frames over only through DataBuffers, never by sharing mutable data.
 //
@@ -630,9 +631,11 @@ private:
   uint64_t applied_generation_{0};    // controller thread
 
   // Thread-safe state/command exchange (producer -> one consumer each)
-  DataBuffer<State> motor_state_buffer_;      // state thread -> read()
+  // The state and IMU callbacks never overlap (they share the parsing buffers stateFrame() and
+  // imuFrame()), so their buffers need no producer mutex; commands come from two threads.
+  DataBuffer<State, Producers::kOne> motor_state_buffer_;  // state thread -> read()
   DataBuffer<Command> motor_command_buffer_;  // write() / layer 2 -> command writer
-  DataBuffer<Imu> imu_state_buffer_;          // IMU callback -> read()
+  DataBuffer<Imu, Producers::kOne> imu_state_buffer_;      // IMU callback -> read()
 
   // ros2_control storage, the per-slot command bounds and write()'s frame: controller thread only
   ControllerFrames<N, T> frames_{};

@@ -151,6 +151,7 @@ private:
     int64_t state_time_ns{0};   // steady time of the group's last valid frame
     bool frames_valid{false};   // the group's last parsed frame was accepted
     std::vector<size_t> entry_slots;  // slot of each entry of the last state message (sized once)
+    bool distinct_slots{false};  // no two entry_slots name the same slot (checked when they change)
   };
 
   // `name` is the joint driven in `slot`: lengths first, then every byte, compared in place a
@@ -168,8 +169,11 @@ private:
     }
     const size_t last = size - sizeof(uint64_t);
     uint64_t difference = (loadWord(a) ^ loadWord(b)) | (loadWord(a + last) ^ loadWord(b + last));
-    for (size_t i = sizeof(uint64_t); i < last; i += sizeof(uint64_t)) {
-      difference |= loadWord(a + i) ^ loadWord(b + i);
+    if (size > 2 * sizeof(uint64_t)) {  // the second word; typical joint names end within 24 bytes
+      difference |= loadWord(a + sizeof(uint64_t)) ^ loadWord(b + sizeof(uint64_t));
+      for (size_t i = 2 * sizeof(uint64_t); i < last; i += sizeof(uint64_t)) {
+        difference |= loadWord(a + i) ^ loadWord(b + i);
+      }
     }
     return difference == 0U;
   }
@@ -213,6 +217,30 @@ private:
     return kNoSlot;
   }
 
+  // The number of distinct driven slots a group's message names; also records whether the
+  // group's cached entry slots are distinct (then a message whose entries all hit the cache
+  // names as many joints as it has driven entries).
+  size_t distinctSlots(Group & group, const StateArray & msg)
+  {
+    const uint32_t stamp = ++message_stamp_;
+    size_t distinct = 0;
+    group.distinct_slots = true;
+    for (size_t i = 0; i < msg.joints.size(); ++i) {
+      const bool cached = i < group.entry_slots.size();
+      const size_t slot = cached ? group.entry_slots[i] : resolveSlot(group, i, msg.joints[i].name);
+      if (slot == kNoSlot) {
+        continue;
+      }
+      if (slot_stamps_[slot] == stamp) {
+        group.distinct_slots = group.distinct_slots && !cached;
+        continue;
+      }
+      slot_stamps_[slot] = stamp;
+      ++distinct;
+    }
+    return distinct;
+  }
+
   // The age of the state is the age of the oldest group: one silent group makes it stale.
   int64_t oldestGroupTime() const
   {
@@ -253,15 +281,12 @@ private:
     const size_t count = msg.joints.size();
     const size_t remembered = std::min(count, group.entry_slots.size());
     size_t * const entry_slots = group.entry_slots.data();
-    // A joint counts once however often the message repeats it: a duplicate must not stand in
-    // for a joint that is missing.
-    const uint32_t stamp = ++message_stamp_;
     size_t matched = 0;
+    bool resolved = count > remembered;  // some entry was matched by the slow path
     double non_finite = 0.0;  // stays 0 while every value is finite: x * 0 is NaN for inf and NaN
-    const auto check = [&](size_t slot, const auto & joint) {
+    const auto check = [&non_finite, &matched](const auto & joint) {
         non_finite += joint.position * 0.0 + joint.velocity * 0.0 + joint.effort * 0.0;
-        matched += slot_stamps_[slot] != stamp ? 1U : 0U;
-        slot_stamps_[slot] = stamp;
+        ++matched;
       };
     for (size_t i = 0; i < remembered; ++i) {
       const auto & joint = msg.joints[i];
@@ -270,16 +295,22 @@ private:
       if (slot == kNoSlot || !sameName(joint.name, slot)) {
         slot = resolveSlot(group, i, joint.name);
         entry_slots[i] = slot;  // tried first on the next message, reused below
+        resolved = true;
       }
       if (slot != kNoSlot) {
-        check(slot, joint);
+        check(joint);
       }
     }
     for (size_t i = remembered; i < count; ++i) {  // more entries than the group has
-      const size_t slot = resolveSlot(group, i, msg.joints[i].name);
-      if (slot != kNoSlot) {
-        check(slot, msg.joints[i]);
+      if (resolveSlot(group, i, msg.joints[i].name) != kNoSlot) {
+        check(msg.joints[i]);
       }
+    }
+    // A joint counts once however often the message repeats it: a duplicate must not stand in
+    // for a joint that is missing. Entries that all hit the cache of a group whose cached slots
+    // are distinct cannot repeat one; otherwise count the distinct slots.
+    if (resolved || !group.distinct_slots) {
+      matched = distinctSlots(group, msg);
     }
     if (!(non_finite == 0.0)) {
       reject(group, "non-finite value for a joint");
@@ -363,7 +394,7 @@ private:
   DriverCore<N, T> * core_{nullptr};
   rclcpp::Node::SharedPtr node_;
   std::vector<Group> groups_;  // sized at construction
-  std::array<uint32_t, N> slot_stamps_{};  // executor thread: message that last named each slot
+  std::array<uint32_t, N> slot_stamps_{};  // executor thread: distinctSlots() marks
   uint32_t message_stamp_{0};
   std::array<const char *, N> slot_names_{};  // each slot's joint name ("": not driven)
   std::array<size_t, N> name_lengths_{};  // strlen of each slot's joint name (0: not driven)

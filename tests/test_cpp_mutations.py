@@ -60,7 +60,7 @@ MUTATIONS = (
              r"[ \t]*\}\n", "", ("safety",)),
     Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
              "common/driver_core.hpp.j2",
-             r"^[ \t]*frames_\.joints\.pos_des = frames_\.joints\.pos;  // target = measured.*\n", "", ("safety",)),
+             r"^[ \t]*frames_\.joints\.pos_des = frames_\.joints\.pos;\n", "", ("safety",)),
     Mutation("default_gains_ignored", "a position-only controller gets zero stiffness instead of the default",
              "common/driver_core.hpp.j2", r"\(claims & kClaimPosition\) != 0U \? default_stiffness_\[i\] : 0\.0",
              "0.0", ("command_modes",), robots=("unitree/g1",)),

@@ -431,7 +431,7 @@ public:
     if (!command_initialized_.load(std::memory_order_relaxed)) {
       // Target = measured position, zero gains: the robot stays passive until a controller
       // commands it.
-      frames_.joints.pos_des = frames_.joints.pos;  // target = measured position
+      frames_.joints.pos_des = frames_.joints.pos;
       frames_.joints.vel_des.fill(0.0);
       frames_.joints.kp.fill(0.0);
       frames_.joints.kd.fill(0.0);

@@ -182,14 +182,12 @@ def load_models(project_root: Path):
 
 
 def template_env_factory(template_dir: Path):
-    """An env_factory for render_package: make_environment()'s settings, templates from a folder."""
-    import jinja2
+    """An env_factory for render_package: make_environment()'s settings, sources (templates/, cpp/,
+    transports/) from a copy of rhi_gen's."""
     from rhi_gen.render.environment import make_environment
 
     def factory():
-        env = make_environment()
-        env.loader = jinja2.FileSystemLoader(str(template_dir))
-        return env
+        return make_environment(template_dir)
 
     return factory
 

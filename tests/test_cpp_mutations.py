@@ -1,6 +1,6 @@
 """The C++ checks bite: break a template on purpose and the harness must fail.
 
-Each mutation copies rhi_gen/templates/ to a temporary folder, changes one thing (the pattern must
+Each mutation copies rhi_gen's sources (templates/, cpp/, transports/) to a temporary folder, changes one thing (the pattern must
 match exactly where expected, so a template rewrite cannot silently turn a mutation into a no-op),
 renders the reference G1 (unitree_dds hg, float, CRC) and PM01 (a ROS topic transport, double), or
 the harness's go2w test robot (unitree_dds go family) for the go mutations, with that template
@@ -24,7 +24,8 @@ from tests import vendor_msgs
 from tests.cpp_build import (REPO, build_harness, compile_data_buffer_stress, render_test_package, run_binary,
                              run_parallel, session_builder)
 
-TEMPLATES = REPO / "rhi_gen" / "templates"
+SOURCES = REPO / "rhi_gen"
+SOURCE_FOLDERS = ("templates", "cpp", "transports")  # what render_package reads (render/environment.py)
 ROBOTS = ("unitree/g1", "engineai/pm01")
 GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message family
 CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS)  # every robot a mutation runs on passes unmodified
@@ -37,7 +38,7 @@ BROKEN_DOUBLE_BUFFER = (REPO / "tests/cpp/harness/mutants/double_buffer.inc").re
 class Mutation:
     id: str
     what: str
-    template: str          # path under rhi_gen/templates/
+    template: str          # path under rhi_gen/ (a template or a C++ source)
     pattern: str           # regular expression (MULTILINE)
     replacement: str
     sections: tuple[str, ...]   # the harness sections expected to catch it
@@ -48,71 +49,71 @@ class Mutation:
 
 MUTATIONS = (
     Mutation("layer1_writer_guard", "delete layer 1: the command writer no longer waits for the first state",
-             "common/driver_core.hpp.j2",
+             "cpp/common/driver_core.hpp",
              r"^[ \t]*if \(!first_state_received_\.load\(std::memory_order_acquire\)\) \{\n[ \t]*return nullptr;\n"
              r"[ \t]*\}\n", "", ("safety",)),
     Mutation("layer2_initial_command", "delete layer 2: the first state no longer seeds the hold command",
-             "common/driver_core.hpp.j2", r"^[ \t]*motor_command_buffer_\.setData\(initial_cmd_cache_\);\n", "",
+             "cpp/common/driver_core.hpp", r"^[ \t]*motor_command_buffer_\.setData\(initial_cmd_cache_\);\n", "",
              ("safety",)),
     Mutation("layer3_write_guard", "delete layer 3: write() forwards commands before read() copied a state",
-             "common/driver_core.hpp.j2",
+             "cpp/common/driver_core.hpp",
              r"^[ \t]*if \(!state_copied_\.load\(std::memory_order_relaxed\)\) \{\n[ \t]*return false;\n"
              r"[ \t]*\}\n", "", ("safety",)),
     Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
-             "common/driver_core.hpp.j2",
+             "cpp/common/driver_core.hpp",
              r"^[ \t]*frames_\.joints\.pos_des = frames_\.joints\.pos;\n", "", ("safety",)),
     Mutation("default_gains_ignored", "a position-only controller gets zero stiffness instead of the default",
-             "common/driver_core.hpp.j2", r"\(claims & kClaimPosition\) != 0U \? default_stiffness_\[i\] : 0\.0",
+             "cpp/common/driver_core.hpp", r"\(claims & kClaimPosition\) != 0U \? default_stiffness_\[i\] : 0\.0",
              "0.0", ("command_modes",), robots=("unitree/g1",)),
     Mutation("velocity_joint_position_target", "a velocity-commanded joint is sent the stale position target",
-             "common/driver_core.hpp.j2", r"(static_cast<T>\(frames_\.joints\.)pos(\[slot\]\);)", r"\g<1>pos_des\2",
+             "cpp/common/driver_core.hpp", r"(static_cast<T>\(frames_\.joints\.)pos(\[slot\]\);)", r"\g<1>pos_des\2",
              ("command_modes",), robots=("acme/scara",)),
     Mutation("nan_command_bounded", "write() bounds a NaN command to the lower limit instead of passing it on",
-             "common/slot_kernels.hpp.j2", r"const T raised = rounded < lower \? lower : rounded;",
+             "cpp/common/slot_kernels.hpp", r"const T raised = rounded < lower \? lower : rounded;",
              "const T raised = !(rounded >= lower) ? lower : rounded;", ("command_safety",)),
     Mutation("agibot_duplicate_entry", "a JointStateArray naming one joint twice stands in for a missing joint",
-             "transport/agibot_topics.hpp.j2", r"if \(slot_stamps_\[slot\] == stamp\) \{",
+             "transports/agibot_topics/agibot_topics.hpp", r"if \(slot_stamps_\[slot\] == stamp\) \{",
              "if (false) {", ("joint_map",), robots=("agibot/x2",)),
     Mutation("joint_map_swap", "the robot's joint table swaps the SDK slots of motors 0 and 1",
-             "robot/driver.cpp.j2", r"(\{\{ joint\.name \| cpp_string \}\}, )\{\{ joint\.index \}\}",
+             "templates/robot/driver.cpp.j2", r"(\{\{ joint\.name \| cpp_string \}\}, )\{\{ joint\.index \}\}",
              r"\1{{ (1 - joint.index) if joint.index < 2 else joint.index }}", ("joint_map",)),
-    Mutation("crc_polynomial", "CRC32 with a wrong polynomial", "transport/unitree_crc.hpp.j2",
+    Mutation("crc_polynomial", "CRC32 with a wrong polynomial", "transports/unitree_dds/unitree_crc.hpp",
              r"(kPolynomial = )0x04C11DB7U", r"\g<1>0x04C11DB6U", ("crc", "commands", "safety"),
              robots=("unitree/g1",)),
-    Mutation("crc_skips_lowcmd_field", "LowCmd_ CRC skips MotorCmd_.reserve", "transport/unitree_hg.hpp.j2",
+    Mutation("crc_skips_lowcmd_field", "LowCmd_ CRC skips MotorCmd_.reserve", "transports/unitree_dds/unitree_hg.hpp",
              r"\{8, 24, kMotorSlots, 28\}", "{8, 20, kMotorSlots, 28}", ("crc", "commands"),
              robots=("unitree/g1",)),
-    Mutation("crc_skips_lowstate_field", "LowState_ CRC skips MotorState_.reserve[3]", "transport/unitree_hg.hpp.j2",
+    Mutation("crc_skips_lowstate_field", "LowState_ CRC skips MotorState_.reserve[3]", "transports/unitree_dds/unitree_hg.hpp",
              r"\{76, 52, kMotorSlots, 56\}", "{76, 48, kMotorSlots, 56}", ("crc", "safety"), robots=("unitree/g1",)),
     Mutation("crc_hashes_lowstate_padding", "hg LowState_ CRC hashes the 2 padding bytes after mode_machine",
-             "transport/unitree_hg.hpp.j2", r"\{8, 2, 1, 0\}", "{8, 4, 1, 0}", ("crc", "safety"),
+             "transports/unitree_dds/unitree_hg.hpp", r"\{8, 2, 1, 0\}", "{8, 4, 1, 0}", ("crc", "safety"),
              robots=("unitree/g1",)),
     # unitree go family (Go2, Go2-W, B2, B2-W, H1), on the harness's go2w test robot.
     Mutation("go_crc_hashes_padding", "go LowState_ CRC hashes the 3 padding bytes after imu_state.temperature",
-             "transport/unitree_go.hpp.j2", r"\{24, 53, 1, 0\}", "{24, 56, 1, 0}", ("crc", "safety"),
+             "transports/unitree_dds/unitree_go.hpp", r"\{24, 53, 1, 0\}", "{24, 56, 1, 0}", ("crc", "safety"),
              robots=GO_ROBOTS),
-    Mutation("go_head_bytes", "go LowCmd_.head[0] is 0xEF instead of 0xFE", "transport/unitree_go.hpp.j2",
+    Mutation("go_head_bytes", "go LowCmd_.head[0] is 0xEF instead of 0xFE", "transports/unitree_dds/unitree_go.hpp",
              r"(kHead0 = )0xFE;", r"\g<1>0xEF;", ("commands",), robots=GO_ROBOTS),
     Mutation("go_motor_modes_ignored", "go LowCmd_ slots get mode 0x01 where motor_modes says 0 (stop)",
-             "transport/unitree_go.hpp.j2", r"motor\.mode\(\) = motor_modes\[slot\];",
+             "transports/unitree_dds/unitree_go.hpp", r"motor\.mode\(\) = motor_modes\[slot\];",
              "motor.mode() = static_cast<uint8_t>(motor_modes[slot] | 0x01U);",
              ("commands",), robots=GO_ROBOTS),
-    Mutation("imu_quaternion_order", "read() exports x as orientation.w", "common/driver_core.hpp.j2",
+    Mutation("imu_quaternion_order", "read() exports x as orientation.w", "cpp/common/driver_core.hpp",
              r"(imu_data_\.ori_\[3\] = static_cast<double>\(imu->quat\[)0(\]\))", r"\g<1>1\2", ("imu",)),
-    Mutation("decimation", "state decimation off by one", "common/driver_core.hpp.j2",
+    Mutation("decimation", "state decimation off by one", "cpp/common/driver_core.hpp",
              r"% parameters_\.state_decimation\)", "% (parameters_.state_decimation + 1))", ("decimation",)),
     Mutation("stale_ignores_decimated_frames", "decimated frames no longer count as state arriving",
-             "common/driver_core.hpp.j2",
+             "cpp/common/driver_core.hpp",
              r"^[ \t]*if \(state_frames_valid_\) \{\n[ \t]*markStateFresh\(.*\n[ \t]*\}\n", "", ("decimation",)),
     Mutation("stale_masked_by_decimated_frames", "decimated frames keep the state fresh after a rejected frame",
-             "common/driver_core.hpp.j2", r"if \(state_frames_valid_\) \{", "if (true) {", ("decimation",)),
-    Mutation("parameter_range", "an out-of-range parameter (0) is accepted", "common/hardware_parameters.hpp.j2",
+             "cpp/common/driver_core.hpp", r"if \(state_frames_valid_\) \{", "if (true) {", ("decimation",)),
+    Mutation("parameter_range", "an out-of-range parameter (0) is accepted", "cpp/common/hardware_parameters.hpp",
              r"parsed < min \|\| ", "", ("parameters",)),
-    Mutation("hot_path_allocation", "write() allocates", "common/system_driver.hpp.j2",
+    Mutation("hot_path_allocation", "write() allocates", "cpp/common/system_driver.hpp",
              r"(\n[ \t]*fetchCommandValues\(\);\n)", r"\1    { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }\n",
              ("allocations",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
-             "common/data_buffer.hpp.j2",
+             "cpp/common/data_buffer.hpp",
              r"(?s)^namespace robot_hardware_interface\n\{\n.*^\}  // namespace robot_hardware_interface",
              BROKEN_DOUBLE_BUFFER.replace("\\", "\\\\"),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),
@@ -120,8 +121,9 @@ MUTATIONS = (
 
 
 def _mutated_templates(root: Path, mutation: Mutation | None) -> Path:
-    dest = root / "templates"
-    shutil.copytree(TEMPLATES, dest)
+    dest = root / "sources"
+    for folder in SOURCE_FOLDERS:
+        shutil.copytree(SOURCES / folder, dest / folder, ignore=shutil.ignore_patterns("*.py", "__pycache__"))
     if mutation is not None:
         path = dest / mutation.template
         text = path.read_text(encoding="utf-8")

@@ -418,7 +418,7 @@ def test_template_error_halfway_writes_nothing(project, capsys, monkeypatch):
 
     def broken_env():
         env = render_environment.make_environment()
-        env.loader = jinja2.ChoiceLoader([jinja2.DictLoader({"robot/test.cpp.j2": "{{ robot.no_such_field }}"}),
+        env.loader = jinja2.ChoiceLoader([jinja2.DictLoader({"templates/robot/test.cpp.j2": "{{ robot.no_such_field }}"}),
                                           env.loader])
         real = env.get_template
         env.get_template = lambda name, *a, **k: (rendered.append(name), real(name, *a, **k))[1]
@@ -429,8 +429,8 @@ def test_template_error_halfway_writes_nothing(project, capsys, monkeypatch):
                         lambda models, **kwargs: original(models, env_factory=broken_env, **kwargs))
     code, out, err = cli(capsys, project, "generate")
     assert code == 2
-    assert "template robot/test.cpp.j2 failed" in err and "no_such_field" in err
-    assert len(rendered) > 8 and rendered[-1] == "robot/test.cpp.j2"  # halfway: the package and a driver done
+    assert "template templates/robot/test.cpp.j2 failed" in err and "no_such_field" in err
+    assert len(rendered) > 8 and rendered[-1] == "templates/robot/test.cpp.j2"  # halfway: the package and a driver done
     assert tree(project) == before
     # on a fresh project too: no generated/ folder appears
     shutil.rmtree(project / "generated")

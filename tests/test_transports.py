@@ -13,7 +13,7 @@ from rhi_gen.inputs.validator import Validator
 from rhi_gen.inputs.yaml_source import parse_yaml_text
 from rhi_gen.model import TransportOptions
 
-TEMPLATES = Path(__file__).resolve().parents[1] / "rhi_gen" / "templates"
+SOURCES = Path(__file__).resolve().parents[1] / "rhi_gen"  # render/environment.py SOURCE_ROOT
 
 
 def test_registry_names_match_the_modules():
@@ -30,9 +30,9 @@ def test_unknown_transport_is_one_line_with_a_hint():
 @pytest.mark.parametrize("name", transports.NAMES)
 def test_every_transport_has_its_templates(name):
     t = transports.get(name)
-    assert (TEMPLATES / t.glue_template).is_file(), t.glue_template
+    assert (SOURCES / t.glue_template).is_file(), t.glue_template
     for template, out in t.shared_files:
-        assert (TEMPLATES / template).is_file() and not out.startswith("/"), template
+        assert (SOURCES / template).is_file() and not out.startswith("/"), template
 
 
 # Options that apply to one message family only: a robot of the other family is not offered them.

@@ -6,6 +6,7 @@ Escaping is decided in Python (render/literals.py filters), never in templates.
 """
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import jinja2
@@ -22,9 +23,16 @@ def _finalize(value: Any) -> Any:
     return value
 
 
-def make_environment() -> jinja2.Environment:
+# Every source the package is made from, named by its path under the rhi_gen package: templates
+# (templates/...), the robot-independent C++ copied as it is (cpp/...) and each transport's folder
+# (transports/<name>/: its C++ headers and its glue template).
+SOURCE_ROOT = Path(__file__).resolve().parents[1]
+
+
+def make_environment(root: Path = SOURCE_ROOT) -> jinja2.Environment:
+    """The Environment over the sources under ``root`` (a copy of the package's, for the mutation tests)."""
     env = jinja2.Environment(
-        loader=jinja2.PackageLoader("rhi_gen", "templates"),
+        loader=jinja2.FileSystemLoader(str(root)),
         undefined=jinja2.StrictUndefined,
         trim_blocks=True,
         lstrip_blocks=True,

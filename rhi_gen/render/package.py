@@ -17,27 +17,31 @@ from ..model import PackageInfo, RobotModel
 from .banner import SHARED_INPUTS, banner_for, package_inputs, robot_inputs
 from .cpp_layout import fold_cpp
 from .environment import make_environment
+from .static_files import copy_static
 
 DEFAULT_PACKAGE = PackageInfo()
 
-# (template, output path) — output paths are relative to generated/robot_hardware_interface/
+# (source, output path): sources are paths under the rhi_gen package (render/environment.py), output
+# paths are relative to generated/robot_hardware_interface/.
+# Robot-independent C++, copied as it is below the package banner (render/static_files.py).
 COMMON_FILES = tuple(
-    (f"common/{name}.j2", f"include/robot_hardware_interface/common/{name}")
+    (f"cpp/common/{name}", f"include/robot_hardware_interface/common/{name}")
     for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
                  "hardware_parameters.hpp", "ros2_control_compat.hpp", "slot_kernels.hpp", "driver_core.hpp",
                  "system_driver.hpp"))
-TEST_FILES = (("test/hardware_interface_test.hpp.j2", "test/hardware_interface_test.hpp"),)
+TEST_FILES = (("cpp/test/hardware_interface_test.hpp", "test/hardware_interface_test.hpp"),)
+# Templates: what depends on the robots.
 PACKAGE_FILES = (
-    ("package/CMakeLists.txt.j2", "CMakeLists.txt"),
-    ("package/package.xml.j2", "package.xml"),
-    ("package/robot_hardware_interface.xml.j2", "robot_hardware_interface.xml"),
+    ("templates/package/CMakeLists.txt.j2", "CMakeLists.txt"),
+    ("templates/package/package.xml.j2", "package.xml"),
+    ("templates/package/robot_hardware_interface.xml.j2", "robot_hardware_interface.xml"),
 )
 ROBOT_FILES = (
-    ("robot/driver.hpp.j2", "include/robot_hardware_interface/{vendor}/{robot}.hpp"),
-    ("robot/driver.cpp.j2", "src/{vendor}/{robot}.cpp"),
-    ("robot/ros2_control.xacro.j2", "description/{robot}.ros2_control.xacro"),
-    ("robot/controllers.yaml.j2", "config/{robot}_controllers.yaml"),
-    ("robot/test.cpp.j2", "test/test_{robot}_hardware_interface.cpp"),
+    ("templates/robot/driver.hpp.j2", "include/robot_hardware_interface/{vendor}/{robot}.hpp"),
+    ("templates/robot/driver.cpp.j2", "src/{vendor}/{robot}.cpp"),
+    ("templates/robot/ros2_control.xacro.j2", "description/{robot}.ros2_control.xacro"),
+    ("templates/robot/controllers.yaml.j2", "config/{robot}_controllers.yaml"),
+    ("templates/robot/test.cpp.j2", "test/test_{robot}_hardware_interface.cpp"),
 )
 
 
@@ -74,12 +78,12 @@ def render_package(models: Sequence[RobotModel],
     robots = sorted(models, key=lambda m: (m.vendor, m.robot))
     plan: dict[str, str] = {}
 
-    shared_banner = banner_for(SHARED_INPUTS, package)
-    for template, out in (*COMMON_FILES, *(TEST_FILES if robots else ())):
-        plan[out] = _render_one(env, template, {"banner": shared_banner}, out)
+    shared_banner = banner_for(SHARED_INPUTS, package)("//")
+    static = [*COMMON_FILES, *(TEST_FILES if robots else ())]
     for name in sorted({r.transport for r in robots}):
-        for template, out in transports.TRANSPORTS[name].shared_files:
-            plan[out] = _render_one(env, template, {"banner": shared_banner}, out)
+        static += transports.TRANSPORTS[name].shared_files
+    for source, out in static:
+        plan[out] = copy_static(env, source, shared_banner, out)
 
     package_banner = banner_for(package_inputs(robots), package)
     for template, out in PACKAGE_FILES:

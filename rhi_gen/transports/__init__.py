@@ -1,11 +1,11 @@
 """The transport registry: every transport rhi-gen can generate, one module each.
 
-Adding a transport: write ``transports/<name>.py`` (a ``Transport`` subclass, see base.py, and a
-``TRANSPORT`` instance), add it to ``_ALL`` below, and write its templates
-``templates/transport/<name>.hpp.j2`` (the C++ logic) and ``templates/robot/glue/<name>.j2`` (what a
-robot's source passes to it). A glue template may also define ``definitions(N, T)``: C++ the
-robot's source emits before ``using Transport`` (custom: the transport class holding the user's SDK
-regions). Validation, defaults, `rhi-gen new`, the package's dependency lists and the CLI's help all
+Adding a transport: make its folder ``transports/<name>/`` holding ``__init__.py`` (a ``Transport``
+subclass, see base.py, and a ``TRANSPORT`` instance), its C++ header(s) ``<name>.hpp`` (the logic,
+copied into every package that uses the transport) and ``glue.j2`` (the template of what a robot's
+source passes to it), then add it to ``_ALL`` below. A glue template may also define
+``definitions(N, T)``: C++ the robot's source emits before ``using Transport`` (custom: the transport
+class holding the user's SDK regions). Validation, defaults, `rhi-gen new`, the package's dependency lists and the CLI's help all
 read the registry.
 """
 from __future__ import annotations

@@ -4,9 +4,9 @@ A transport is how a generated driver talks to its robot (a vendor SDK over DDS,
 Everything rhi-gen knows about one transport lives in its own module: the YAML options it accepts
 (with validation and defaults), its default float type, the packages its driver needs, the files it
 adds to the package once, the ``transport_options`` lines `rhi-gen new` writes, and the vendor robots
-whose real SDK motor order is known. Its C++ logic lives in ``templates/transport/<name>.hpp.j2`` (a
-shared header, generated once per package) and its per-robot glue (the options a robot's source
-passes to it) in ``templates/robot/glue/<name>.j2``, found by name.
+whose real SDK motor order is known. Its C++ logic lives next to it in ``transports/<name>/<name>.hpp``
+(a plain header, copied once into every package that uses it) and its per-robot glue (the options a
+robot's source passes to it) in the template ``transports/<name>/glue.j2``, found by name.
 """
 from __future__ import annotations
 
@@ -81,7 +81,7 @@ class Transport(ABC):
     option_keys: ClassVar[tuple[str, ...]]     # keys allowed under `transport_options:`
     default_float_type: ClassVar[str]          # MotorCommand<N, T>'s T when the YAML gives none
     dependencies: ClassVar[tuple[Dependency, ...]]  # packages the driver needs besides COMMON_DEPENDENCIES
-    shared_files: ClassVar[tuple[tuple[str, str], ...]] = ()  # (template, package path), once per package
+    shared_files: ClassVar[tuple[tuple[str, str], ...]] = ()  # (source, package path), once per package
     vendors: ClassVar[tuple[str, ...]] = ()    # vendors whose robots `rhi-gen new` gives this transport
     known_robots: ClassVar[tuple[KnownRobot, ...]] = ()
     motor_slots: ClassVar[int | None] = None   # fixed motor slot count of the SDK message, if any
@@ -126,9 +126,10 @@ class Transport(ABC):
     @property
     def glue_template(self) -> str:
         """The template a robot's source imports: this transport's options and C++ type."""
-        return f"robot/glue/{self.name}.j2"
+        return f"transports/{self.name}/glue.j2"
 
 
-def transport_header(name: str) -> tuple[str, str]:
-    """(template, package path) of a shared header in include/robot_hardware_interface/transport/."""
-    return (f"transport/{name}.j2", f"include/robot_hardware_interface/transport/{name}")
+def transport_header(folder: str, name: str) -> tuple[str, str]:
+    """(source, package path) of a C++ header kept in ``transports/<folder>/``, copied once per package
+    into include/robot_hardware_interface/transport/ (source paths are relative to the rhi_gen package)."""
+    return (f"transports/{folder}/{name}", f"include/robot_hardware_interface/transport/{name}")

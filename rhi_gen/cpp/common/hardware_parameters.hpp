@@ -1,0 +1,150 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__HARDWARE_PARAMETERS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__HARDWARE_PARAMETERS_HPP_
+
+#include <cinttypes>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include <rclcpp/logger.hpp>
+#include <rclcpp/logging.hpp>
+
+#include "robot_hardware_interface/common/robot_spec.hpp"
+
+namespace robot_hardware_interface
+{
+
+// The <hardware> parameters of the ros2_control description, after parsing.
+struct DriverParameters
+{
+  std::string network_interface;
+  bool enable_monitor;
+  uint64_t command_writer_period_us;
+  uint32_t state_decimation;
+  uint64_t state_timeout_ms;
+
+  explicit DriverParameters(const ParameterDefaults & defaults)
+  : network_interface(defaults.network_interface),
+    enable_monitor(defaults.enable_monitor),
+    command_writer_period_us(defaults.command_writer_period_us),
+    state_decimation(defaults.state_decimation),
+    state_timeout_ms(defaults.state_timeout_ms)
+  {
+  }
+};
+
+// ros2_control hands <param> values over as text. They are parsed by hand: std::stoul throws on
+// garbage and silently turns "-1" into a huge number.
+inline std::string_view trimmed(std::string_view text)
+{
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) {
+    return {};
+  }
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+inline bool parseUnsigned(std::string_view text, uint64_t & value)
+{
+  text = trimmed(text);
+  if (text.empty() || text.size() > 18) {  // 18 digits always fit in uint64_t
+    return false;
+  }
+  uint64_t result = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') {
+      return false;
+    }
+    result = result * 10U + static_cast<uint64_t>(c - '0');
+  }
+  value = result;
+  return true;
+}
+
+inline bool parseBool(std::string_view text, bool & value)
+{
+  text = trimmed(text);
+  // xacro renders Python booleans as True/False.
+  if (text == "true" || text == "True" || text == "TRUE" || text == "1") {
+    value = true;
+    return true;
+  }
+  if (text == "false" || text == "False" || text == "FALSE" || text == "0") {
+    value = false;
+    return true;
+  }
+  return false;
+}
+
+// Reads an optional unsigned parameter in [min, max]; a missing one keeps `value` (the default).
+template<typename Parameters>
+bool readUnsignedParameter(
+  const rclcpp::Logger & logger, const Parameters & parameters, const char * name,
+  uint64_t min, uint64_t max, uint64_t & value)
+{
+  const auto it = parameters.find(name);
+  if (it == parameters.end()) {
+    return true;
+  }
+  uint64_t parsed = 0;
+  if (!parseUnsigned(it->second, parsed) || parsed < min || parsed > max) {
+    RCLCPP_ERROR(
+      logger, "hardware parameter '%s' is '%s': expected an integer from %" PRIu64 " to %" PRIu64,
+      name, it->second.c_str(), min, max);
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+template<typename Parameters>
+bool readBoolParameter(
+  const rclcpp::Logger & logger, const Parameters & parameters, const char * name, bool & value)
+{
+  const auto it = parameters.find(name);
+  if (it == parameters.end()) {
+    return true;
+  }
+  if (!parseBool(it->second, value)) {
+    RCLCPP_ERROR(
+      logger, "hardware parameter '%s' is '%s': expected true or false", name,
+      it->second.c_str());
+    return false;
+  }
+  return true;
+}
+
+// Every <hardware> parameter of the driver, over the defaults in `out`, in the ranges rhi-gen
+// accepts in the vendor YAML. false (with an error line naming the parameter) on a bad value.
+template<typename Parameters>
+bool readDriverParameters(
+  const rclcpp::Logger & logger, const Parameters & parameters, DriverParameters & out)
+{
+  uint64_t decimation = out.state_decimation;
+  if (!readBoolParameter(logger, parameters, "enable_monitor", out.enable_monitor) ||
+    !readUnsignedParameter(
+      logger, parameters, "command_writer_period_us", 100, 10000000,
+      out.command_writer_period_us) ||
+    !readUnsignedParameter(logger, parameters, "state_decimation", 1, 10000, decimation) ||
+    !readUnsignedParameter(
+      logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms))
+  {
+    return false;
+  }
+  out.state_decimation = static_cast<uint32_t>(decimation);
+  const auto network_interface = parameters.find("network_interface");
+  if (network_interface != parameters.end()) {
+    out.network_interface = std::string(trimmed(network_interface->second));
+  }
+  return true;
+}
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__HARDWARE_PARAMETERS_HPP_

@@ -1,0 +1,237 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__ROS2_CONTROL_COMPAT_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__ROS2_CONTROL_COMPAT_HPP_
+
+// Every difference between the ros2_control releases this package builds on lives in this file.
+//   - Humble (hardware_interface 2.x) and Jazzy before 4.34: on_init(const HardwareInfo &) and
+//     export_*_interfaces(), whose handles point at doubles the driver owns.
+//   - Jazzy 4.34+, Kilted (5.x), Lyrical and Rolling (6.x): on_init(const
+//     HardwareComponentInterfaceParams &); the framework creates the handles from the description
+//     (on_export_*_interfaces()) and owns their values; the component gets its logger from it.
+//     The old on_init and the raw-pointer handles are deprecated (4.x, 5.x) or gone (6.x).
+// Drivers derive from SystemInterfaceAdapter, keep their values in plain doubles, and call
+// publishStateValues() / fetchCommandValues() / publishCommandValues() where the values change
+// hands: no-ops with raw pointers, a try-lock copy per interface with framework handles (never
+// blocking, never allocating).
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <hardware_interface/handle.hpp>
+#include <hardware_interface/hardware_info.hpp>
+#include <hardware_interface/system_interface.hpp>
+#include <rclcpp/clock.hpp>
+#include <rclcpp/logger.hpp>
+
+#include "robot_hardware_interface/common/types.hpp"
+
+#if defined(__has_include)
+#if __has_include(<hardware_interface/version.h>)
+#include <hardware_interface/version.h>
+#endif
+#endif
+
+#if defined(HARDWARE_INTERFACE_VERSION_GTE)
+#if HARDWARE_INTERFACE_VERSION_GTE(4, 34, 0)
+#define ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES 1
+#endif
+#endif
+#ifndef ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+#define ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES 0
+#endif
+
+// From 3.x on the ResourceManager takes the controller manager's clock and logger.
+#if defined(HARDWARE_INTERFACE_VERSION_MAJOR) && HARDWARE_INTERFACE_VERSION_MAJOR >= 3
+#define ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK 1
+#else
+#define ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK 0
+#endif
+
+namespace robot_hardware_interface
+{
+
+class SystemInterfaceAdapter : public hardware_interface::SystemInterface
+{
+public:
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+  CallbackReturn on_init(
+    const hardware_interface::HardwareComponentInterfaceParams & params) override
+  {
+    if (hardware_interface::SystemInterface::on_init(params) != CallbackReturn::SUCCESS) {
+      return CallbackReturn::ERROR;
+    }
+    return initialize(info_, get_logger());
+  }
+
+  std::vector<hardware_interface::StateInterface::ConstSharedPtr>
+  on_export_state_interfaces() override
+  {
+    auto exported = hardware_interface::SystemInterface::on_export_state_interfaces();
+    state_links_.clear();
+    for (const auto * handles : {&joint_states_, &sensor_states_}) {
+      for (const auto & handle : *handles) {
+        const double * value = stateValue(handle->get_prefix_name(), handle->get_interface_name());
+        if (value != nullptr) {
+          state_links_.push_back(StateLink{handle.get(), value});
+        }
+      }
+    }
+    return exported;
+  }
+
+  std::vector<hardware_interface::CommandInterface::SharedPtr>
+  on_export_command_interfaces() override
+  {
+    auto exported = hardware_interface::SystemInterface::on_export_command_interfaces();
+    command_links_.clear();
+    for (const auto & handle : joint_commands_) {
+      double * value = commandValue(handle->get_prefix_name(), handle->get_interface_name());
+      if (value != nullptr) {
+        command_links_.push_back(CommandLink{handle.get(), value});
+      }
+    }
+    return exported;
+  }
+#else
+  CallbackReturn on_init(const hardware_interface::HardwareInfo & info) override
+  {
+    if (hardware_interface::SystemInterface::on_init(info) != CallbackReturn::SUCCESS) {
+      return CallbackReturn::ERROR;
+    }
+    return initialize(info_, logger_);
+  }
+
+  std::vector<hardware_interface::StateInterface> export_state_interfaces() override
+  {
+    std::vector<hardware_interface::StateInterface> exported;
+    for (const auto * components : {&info_.joints, &info_.sensors}) {
+      for (const auto & component : *components) {
+        for (const auto & interface : component.state_interfaces) {
+          double * value = stateValue(component.name, interface.name);
+          if (value != nullptr) {
+            exported.emplace_back(component.name, interface.name, value);
+          }
+        }
+      }
+    }
+    return exported;
+  }
+
+  std::vector<hardware_interface::CommandInterface> export_command_interfaces() override
+  {
+    std::vector<hardware_interface::CommandInterface> exported;
+    for (const auto & joint : info_.joints) {
+      for (const auto & interface : joint.command_interfaces) {
+        double * value = commandValue(joint.name, interface.name);
+        if (value != nullptr) {
+          exported.emplace_back(joint.name, interface.name, value);
+        }
+      }
+    }
+    return exported;
+  }
+#endif
+
+protected:
+  // `logger` is the logger ros2_control gives the component (its own one on Humble).
+  explicit SystemInterfaceAdapter(const rclcpp::Logger & logger)
+  : logger_(logger)
+  {
+  }
+
+  // on_init, after ros2_control parsed the description into `info`.
+  virtual CallbackReturn initialize(
+    const hardware_interface::HardwareInfo & info, const rclcpp::Logger & logger) = 0;
+  // The driver-owned double behind an interface, nullptr for one the driver does not provide.
+  virtual double * stateValue(const std::string & prefix, const std::string & name) = 0;
+  virtual double * commandValue(const std::string & prefix, const std::string & name) = 0;
+
+  // Controller thread, end of read(): state values out to the exported interfaces.
+  void publishStateValues()
+  {
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+    for (const StateLink & link : state_links_) {
+      // A handle a reader holds right now keeps its previous value for one cycle.
+      static_cast<void>(link.handle->set_value(*link.value));
+    }
+#endif
+  }
+
+  // Controller thread, start of write(): what the controllers commanded, into the driver's doubles.
+  void fetchCommandValues()
+  {
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+    for (const CommandLink & link : command_links_) {
+      const std::optional<double> value = link.handle->get_optional();
+      if (value.has_value()) {
+        *link.value = *value;
+      }
+    }
+#endif
+  }
+
+  // Controller thread: the driver rewrote its command doubles itself (safe start), so the
+  // exported command interfaces must show the same values.
+  void publishCommandValues()
+  {
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+    for (const CommandLink & link : command_links_) {
+      static_cast<void>(link.handle->set_value(*link.value));
+    }
+#endif
+  }
+
+private:
+  rclcpp::Logger logger_;  // Humble only: later releases pass get_logger() to initialize()
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+  struct StateLink
+  {
+    hardware_interface::StateInterface * handle;
+    const double * value;
+  };
+  struct CommandLink
+  {
+    hardware_interface::CommandInterface * handle;
+    double * value;
+  };
+  std::vector<StateLink> state_links_;
+  std::vector<CommandLink> command_links_;
+#endif
+};
+
+// Tests: a ResourceManager loading `urdf` the way this release's controller manager does. A
+// template, so that drivers including this header do not pull in the ResourceManager.
+template<typename ResourceManager>
+std::unique_ptr<ResourceManager> makeResourceManager(const std::string & urdf)
+{
+#if ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK
+  return std::make_unique<ResourceManager>(
+    urdf, std::make_shared<rclcpp::Clock>(RCL_STEADY_TIME),
+    rclcpp::get_logger("robot_hardware_interface_test"));
+#else
+  return std::make_unique<ResourceManager>(urdf);  // validate_interfaces = true
+#endif
+}
+
+// Tests: whether every component of `resource_manager` initialised (Humble's constructor throws
+// instead).
+template<typename ResourceManager>
+bool componentsInitialized(const ResourceManager & resource_manager)
+{
+#if ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK
+  return resource_manager.are_components_initialized();
+#else
+  static_cast<void>(resource_manager);
+  return true;
+#endif
+}
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__ROS2_CONTROL_COMPAT_HPP_

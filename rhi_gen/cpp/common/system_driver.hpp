@@ -1,0 +1,336 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
+
+#include <chrono>
+#include <cstddef>
+#include <exception>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <hardware_interface/hardware_info.hpp>
+#include <rclcpp/duration.hpp>
+#include <rclcpp/logging.hpp>
+#include <rclcpp/macros.hpp>
+#include <rclcpp/node.hpp>
+#include <rclcpp/time.hpp>
+#include <rclcpp_lifecycle/state.hpp>
+
+#include "robot_hardware_interface/common/driver_core.hpp"
+#include "robot_hardware_interface/common/ros2_control_compat.hpp"
+#include "robot_hardware_interface/common/robot_spec.hpp"
+#include "robot_hardware_interface/common/types.hpp"
+
+namespace robot_hardware_interface
+{
+
+// The SDK or topic side of a driver. Transports live in transport/<name>.hpp; a robot's source
+// file picks one and passes it its options.
+template<size_t N, typename T>
+class DriverTransport
+{
+public:
+  virtual ~DriverTransport() = default;
+  // Name for log lines, e.g. "unitree_dds".
+  virtual const char * name() const = 0;
+  // on_init, after the parameters: open channels, pre-size every message, subscribe (state may
+  // flow from here on). `node` is the driver's node. Return false after logging why; may throw.
+  virtual bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) = 0;
+  // on_activate: start sending (command writer thread or executor). May throw.
+  virtual bool start() = 0;
+  // on_deactivate: stop sending and join the transport's threads.
+  virtual void stop() = 0;
+  // Destruction: stop everything that could still call into the driver. Must not throw.
+  virtual void shutdown() noexcept = 0;
+  // Whether stiffness and damping reach the robot (otherwise no gain interfaces are exported).
+  virtual bool carriesGains() const {return true;}
+};
+
+// The ros2_control face of every driver: SystemInterface lifecycle and read()/write() around a
+// DriverCore (the logic) and a DriverTransport (the SDK). A robot's class derives from it and
+// only passes its RobotSpec (joint table, limits, defaults) and its transport.
+template<size_t N, typename T>
+class SystemDriver : public SystemInterfaceAdapter
+{
+public:
+  SystemDriver(const SystemDriver &) = delete;
+  SystemDriver & operator=(const SystemDriver &) = delete;
+
+  ~SystemDriver() override
+  {
+    // The transport's threads would otherwise keep calling into a destroyed object.
+    transport_->shutdown();
+  }
+
+  CallbackReturn on_activate(const rclcpp_lifecycle::State & /*previous_state*/) override
+  {
+    core_.resetForActivation();
+    const CallbackReturn user = on_activate_hook();
+    if (user != CallbackReturn::SUCCESS) {
+      return user;
+    }
+    try {
+      if (!transport_->start()) {
+        transport_->stop();
+        return CallbackReturn::ERROR;
+      }
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(core_.logger(), "starting the %s transport failed: %s", transport_->name(),
+        e.what());
+      transport_->stop();
+      return CallbackReturn::ERROR;
+    }
+    RCLCPP_INFO(core_.logger(), "activated: commands start after the first valid state");
+    const size_t limp = core_.jointsWithoutDefaultStiffness();
+    if (limp > 0) {
+      RCLCPP_WARN(
+        core_.logger(), "%zu position-commanded joint(s) have no default stiffness (default_gains of "
+        "the vendor YAML): a controller that claims only their position leaves them limp", limp);
+    }
+    return CallbackReturn::SUCCESS;
+  }
+
+  CallbackReturn on_deactivate(const rclcpp_lifecycle::State & /*previous_state*/) override
+  {
+    transport_->stop();
+    on_deactivate_hook();
+    RCLCPP_INFO(core_.logger(), "deactivated: the %s transport stopped sending",
+      transport_->name());
+    return CallbackReturn::SUCCESS;
+  }
+
+  // The controller manager switches controllers: claimed command interfaces count, unclaimed
+  // gains fall back to the joint's default (see DriverCore::writeCommand()).
+  return_type prepare_command_mode_switch(
+    const std::vector<std::string> & start_interfaces,
+    const std::vector<std::string> & stop_interfaces) override
+  {
+    core_.prepareClaims(start_interfaces, stop_interfaces);
+    return return_type::OK;
+  }
+
+  return_type perform_command_mode_switch(
+    const std::vector<std::string> & /*start_interfaces*/,
+    const std::vector<std::string> & /*stop_interfaces*/) override
+  {
+    core_.commitClaims();
+    return return_type::OK;
+  }
+
+  return_type read(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
+  {
+    const auto start = std::chrono::steady_clock::now();
+    core_.readState();
+    publishStateValues();
+    core_.checkReadLatency(start);
+    return return_type::OK;
+  }
+
+  return_type write(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
+  {
+    const auto start = std::chrono::steady_clock::now();
+    fetchCommandValues();
+    if (core_.writeCommand()) {
+      publishCommandValues();
+    }
+    core_.checkWriteLatency(start);
+    return return_type::OK;
+  }
+
+protected:
+  SystemDriver(const RobotSpec & spec, std::unique_ptr<DriverTransport<N, T>> transport)
+  : SystemInterfaceAdapter(rclcpp::get_logger(spec.node_name)),
+    core_(spec), transport_(std::move(transport))
+  {
+  }
+
+  // Customisation points for hand-written code: declare the override in the robot header's
+  // `members` user region and define it in the source's `callbacks` region.
+  // After the parameters, before the transport is set up; `info` is the parsed description.
+  virtual CallbackReturn on_init_hook(const hardware_interface::HardwareInfo & /*info*/)
+  {
+    return CallbackReturn::SUCCESS;
+  }
+  // Before the transport starts sending; anything but SUCCESS refuses the activation.
+  virtual CallbackReturn on_activate_hook() {return CallbackReturn::SUCCESS;}
+  // After the transport stopped sending.
+  virtual void on_deactivate_hook() {}
+
+  // The SDK motor slot of a URDF joint, -1 for a joint this driver does not drive.
+  int getJointIndex(const std::string & name) const {return core_.slotOf(name);}
+  DriverCore<N, T> & core() {return core_;}
+  const rclcpp::Logger & logger() const {return core_.logger();}
+
+  // <robot>_hardware_interface: spun by topic transports, free for hand-written code.
+  rclcpp::Node::SharedPtr node_;
+
+private:
+  CallbackReturn initialize(
+    const hardware_interface::HardwareInfo & info, const rclcpp::Logger & logger) override
+  {
+    core_.setLogger(logger);
+    const rclcpp::Logger & log = core_.logger();
+    if (!readDriverParameters(log, info.hardware_parameters, core_.parameters()) ||
+      !descriptionIsDriven(info))
+    {
+      return CallbackReturn::ERROR;
+    }
+    const CallbackReturn user = on_init_hook(info);
+    if (user != CallbackReturn::SUCCESS) {
+      return user;
+    }
+    // SDK and rclcpp calls may throw (bad topic name, network interface, ...): report, never
+    // propagate.
+    try {
+      node_ = std::make_shared<rclcpp::Node>(core_.spec().node_name);
+      if (!transport_->configure(core_, node_)) {
+        return CallbackReturn::ERROR;
+      }
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(log, "setting up the %s transport failed: %s", transport_->name(), e.what());
+      return CallbackReturn::ERROR;
+    }
+    const DriverParameters & p = core_.parameters();
+    RCLCPP_INFO(
+      log, "initialized: %zu joints, command period %" PRIu64 " us, state decimation %u, "
+      "state timeout %" PRIu64 " ms, monitor %s", core_.spec().joint_count,
+      p.command_writer_period_us, p.state_decimation, p.state_timeout_ms,
+      p.enable_monitor ? "on" : "off");
+    return CallbackReturn::SUCCESS;
+  }
+
+  // Every joint, interface and sensor of the description must be one this driver drives: a typo
+  // would otherwise only surface later, as an interface nobody updates. A driven joint missing
+  // from the description gets no interfaces and keeps zero gains (passive).
+  bool descriptionIsDriven(const hardware_interface::HardwareInfo & info)
+  {
+    const rclcpp::Logger & log = core_.logger();
+    for (const auto & joint : info.joints) {
+      if (core_.slotOf(joint.name) < 0) {
+        RCLCPP_ERROR(
+          log, "joint '%s' of the ros2_control description is not driven by %s",
+          joint.name.c_str(), core_.spec().plugin_name);
+        return false;
+      }
+      for (const auto & interface : joint.state_interfaces) {
+        if (!supported(stateValue(joint.name, interface.name), interface, joint.name)) {
+          return false;
+        }
+      }
+      for (const auto & interface : joint.command_interfaces) {
+        if (!supported(commandValue(joint.name, interface.name), interface, joint.name)) {
+          return false;
+        }
+      }
+    }
+    for (const auto & sensor : info.sensors) {
+      for (const auto & interface : sensor.state_interfaces) {
+        if (!supported(stateValue(sensor.name, interface.name), interface, sensor.name)) {
+          return false;
+        }
+      }
+    }
+    if (!info.gpios.empty()) {
+      RCLCPP_ERROR(
+        log, "<gpio> '%s' of the ros2_control description: %s has no GPIO interfaces",
+        info.gpios.front().name.c_str(), core_.spec().plugin_name);
+      return false;
+    }
+    for (size_t i = 0; i < core_.spec().joint_count; ++i) {
+      const JointSpec & joint = core_.spec().joints[i];
+      bool described = false;
+      for (const auto & component : info.joints) {
+        described = described || component.name == joint.name;
+      }
+      if (!described) {
+        RCLCPP_WARN(
+          log, "joint '%s' (motor slot %zu) is not in the ros2_control description: it gets no "
+          "interfaces and stays passive", joint.name, joint.slot);
+      }
+    }
+    return true;
+  }
+
+  bool supported(
+    const double * value, const hardware_interface::InterfaceInfo & interface,
+    const std::string & component)
+  {
+    if (value == nullptr) {
+      RCLCPP_ERROR(
+        core_.logger(), "interface '%s/%s' of the ros2_control description is not provided by %s",
+        component.c_str(), interface.name.c_str(), core_.spec().plugin_name);
+      return false;
+    }
+    if (!interface.data_type.empty() && interface.data_type != "double") {
+      RCLCPP_ERROR(
+        core_.logger(), "interface '%s/%s' has data_type '%s': %s provides double values",
+        component.c_str(), interface.name.c_str(), interface.data_type.c_str(),
+        core_.spec().plugin_name);
+      return false;
+    }
+    return true;
+  }
+
+  double * stateValue(const std::string & prefix, const std::string & name) override
+  {
+    const int slot = core_.slotOf(prefix);
+    if (slot >= 0) {
+      JointStorage<N> & joints = core_.joints();
+      const auto s = static_cast<size_t>(slot);
+      return name == "position" ? &joints.pos[s] : name == "velocity" ? &joints.vel[s] :
+             name == "effort" ? &joints.tau[s] : nullptr;
+    }
+    if (!core_.hasImu() || prefix != core_.spec().imu_name) {
+      return nullptr;
+    }
+    ImuData & imu = core_.imuData();
+    static constexpr const char * kImuInterfaces[] = {
+      "orientation.x", "orientation.y", "orientation.z", "orientation.w",
+      "angular_velocity.x", "angular_velocity.y", "angular_velocity.z",
+      "linear_acceleration.x", "linear_acceleration.y", "linear_acceleration.z"};
+    double * const values[] = {
+      &imu.ori_[0], &imu.ori_[1], &imu.ori_[2], &imu.ori_[3],
+      &imu.angularVel_[0], &imu.angularVel_[1], &imu.angularVel_[2],
+      &imu.linearAcc_[0], &imu.linearAcc_[1], &imu.linearAcc_[2]};
+    for (size_t i = 0; i < 10; ++i) {
+      if (name == kImuInterfaces[i]) {
+        return values[i];
+      }
+    }
+    return nullptr;
+  }
+
+  double * commandValue(const std::string & prefix, const std::string & name) override
+  {
+    const int slot = core_.slotOf(prefix);
+    if (slot < 0) {
+      return nullptr;
+    }
+    if (core_.modeOf(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
+      (name == "position" || name == "stiffness"))
+    {
+      return nullptr;  // a velocity-commanded joint has no position target and no stiffness
+    }
+    if (!transport_->carriesGains() && (name == "stiffness" || name == "damping")) {
+      return nullptr;  // the robot applies its own gains
+    }
+    JointStorage<N> & joints = core_.joints();
+    const auto s = static_cast<size_t>(slot);
+    return name == "position" ? &joints.pos_des[s] : name == "velocity" ? &joints.vel_des[s] :
+           name == "stiffness" ? &joints.kp[s] : name == "damping" ? &joints.kd[s] :
+           name == "effort" ? &joints.ff[s] : nullptr;
+  }
+
+  DriverCore<N, T> core_;
+  std::unique_ptr<DriverTransport<N, T>> transport_;
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_

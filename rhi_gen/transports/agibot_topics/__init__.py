@@ -1,0 +1,122 @@
+"""agibot_topics: AgiBot AimDK (aimdk_msgs) ROS 2 topics, one command/state topic pair per joint group.
+
+Facts from AimDK: the X2's 31 motors form four groups (leg 12, waist 3, arm 14, head 2), each on
+/aima/hal/joint/<group>/{command,state} (JointCommandArray / JointStateArray); the IMU is
+sensor_msgs/Imu on /aima/hal/imu/torso/state. A joint's SDK index is (group offset + position).
+"""
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from ...errors import ConfigError
+from ...inputs.validator import Validator
+from ...model import MAX_MOTORS, JointGroup, QosConfig, TransportOptions
+from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
+from ..ros_topics import qos_line, read_qos
+
+NAME = "agibot_topics"
+DEFAULT_GROUPS = (("leg", 12), ("waist", 3), ("arm", 14), ("head", 2))
+GROUP_KEYS = ("name", "size", "command_topic", "state_topic")
+GROUP_NAME_RE = re.compile(r"^[a-z][a-z0-9_]*$")
+IMU_TOPIC = "/aima/hal/imu/torso/state"
+
+_X2_LEG = tuple(f"{side}_{j}_joint" for side in ("left", "right")
+                for j in ("hip_pitch", "hip_roll", "hip_yaw", "knee", "ankle_pitch", "ankle_roll"))
+_X2_WAIST = ("waist_yaw_joint", "waist_pitch_joint", "waist_roll_joint")
+_X2_ARM = tuple(f"{side}_{j}_joint" for side in ("left", "right")
+                for j in ("shoulder_pitch", "shoulder_roll", "shoulder_yaw", "elbow", "wrist_yaw",
+                          "wrist_pitch", "wrist_roll"))
+_X2_HEAD = ("head_yaw_joint", "head_pitch_joint")
+X2_GROUPS = (("leg", _X2_LEG), ("waist", _X2_WAIST), ("arm", _X2_ARM), ("head", _X2_HEAD))
+X2_ORDER = _X2_LEG + _X2_WAIST + _X2_ARM + _X2_HEAD
+
+
+def command_topic(group: str) -> str:
+    return f"/aima/hal/joint/{group}/command"
+
+
+def state_topic(group: str) -> str:
+    return f"/aima/hal/joint/{group}/state"
+
+
+class AgibotTopics(Transport):
+    name = NAME
+    summary = "AgiBot aimdk_msgs ROS 2 topics, one command/state pair per joint group"
+    option_keys = ("groups", "imu_topic", "qos")
+    default_float_type = "double"
+    dependencies = (Dependency("aimdk_msgs", VENDOR_SOURCE), Dependency("sensor_msgs", ROSDISTRO))
+    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "agibot_topics.hpp"))
+    vendors = ("agibot",)
+    known_robots = (
+        KnownRobot("agibot", "x2", NAME, X2_ORDER, "X2 motor order = AimDK joint groups leg, waist, arm, head",
+                   groups=X2_GROUPS),
+    )
+
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+        p = "transport_options"
+        return TransportOptions(
+            groups=_read_groups(v, options.get("groups"), motor_count),
+            imu_topic=v.optional(options, p, "imu_topic", v.topic, IMU_TOPIC),
+            qos=read_qos(v, options.get("qos"), f"{p}.qos", QosConfig(depth=1)),
+            sdk_slots=motor_count,
+        )
+
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
+        lines = ["  groups:"]
+        for name, size in _suggested_groups(order, known):
+            lines += [f"    - name: {name}", f"      size: {size}",
+                      f"      command_topic: {command_topic(name)}",
+                      f"      state_topic: {state_topic(name)}"]
+        return [*lines, f"  imu_topic: {IMU_TOPIC}", qos_line(1)]
+
+    def joint_labels(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
+        return [f"{name}[{i}]" for name, size in _suggested_groups(order, known) for i in range(size)]
+
+
+def _suggested_groups(order: Sequence[str], known: KnownRobot | None) -> list[tuple[str, int]]:
+    """The known robot's groups, else AimDK's default groups when the count fits, else one group."""
+    if known is not None and known.groups and sum(len(g) for _, g in known.groups) == len(order):
+        return [(name, len(members)) for name, members in known.groups]
+    if sum(size for _, size in DEFAULT_GROUPS) == len(order):
+        return list(DEFAULT_GROUPS)
+    return [("all", len(order))]
+
+
+def _read_groups(v: Validator, raw: Any, motor_count: int) -> tuple[JointGroup, ...]:
+    path = "transport_options.groups"
+    if raw is None:
+        specs = [(name, size, command_topic(name), state_topic(name)) for name, size in DEFAULT_GROUPS]
+    else:
+        if not isinstance(raw, list) or not raw:
+            raise v.error(path, "must be a non-empty list of {name, size, command_topic, state_topic}",
+                          fix="e.g. [{name: leg, size: 12}] or remove groups for the AgiBot defaults")
+        specs = []
+        for i, item in enumerate(raw):
+            q = f"{path}[{i}]"
+            m = v.mapping(item, q, GROUP_KEYS)
+            for key in ("name", "size"):
+                if key not in m:
+                    raise v.error(q, f"group needs {key!r}", fix=f"add {key}: to the group")
+            name = v.string(m["name"], f"{q}.name", GROUP_NAME_RE, "group name")
+            size = v.integer(m["size"], f"{q}.size", 1, MAX_MOTORS)
+            cmd = v.optional(m, q, "command_topic", v.topic, command_topic(name))
+            state = v.optional(m, q, "state_topic", v.topic, state_topic(name))
+            if any(s[0] == name for s in specs):
+                raise v.error(f"{q}.name", f"group {name!r} is defined twice", fix="give every group its own name")
+            specs.append((name, size, cmd, state))
+    total = sum(s[1] for s in specs)
+    if total != motor_count:
+        raise ConfigError(f"motor_count is {motor_count} but the groups hold {total} slots",
+                          file=v.source, line=v.lines.get("motor_count"), key="motor_count",
+                          fix="make motor_count equal the sum of the group sizes")
+    groups, offset = [], 0
+    for name, size, cmd, state in specs:
+        groups.append(JointGroup(name=name, size=size, command_topic=cmd, state_topic=state, offset=offset))
+        offset += size
+    return tuple(groups)
+
+
+TRANSPORT = AgibotTopics()

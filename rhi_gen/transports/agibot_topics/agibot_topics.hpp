@@ -1,0 +1,408 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__TRANSPORT__AGIBOT_TOPICS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__TRANSPORT__AGIBOT_TOPICS_HPP_
+
+// AgiBot robots over ROS 2 topics (AimDK, aimdk_msgs): one JointCommandArray / JointStateArray
+// topic pair per joint group, entries named; sensor_msgs/Imu for the IMU.
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cinttypes>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <aimdk_msgs/msg/joint_command_array.hpp>
+#include <aimdk_msgs/msg/joint_state_array.hpp>
+#include <rclcpp/logging.hpp>
+#include <rclcpp/node.hpp>
+#include <rclcpp/publisher.hpp>
+#include <rclcpp/subscription.hpp>
+#include <sensor_msgs/msg/imu.hpp>
+
+#include "robot_hardware_interface/common/driver_core.hpp"
+#include "robot_hardware_interface/common/monitor.hpp"
+#include "robot_hardware_interface/common/system_driver.hpp"
+#include "robot_hardware_interface/transport/ros_topics.hpp"
+
+namespace robot_hardware_interface
+{
+
+// One AimDK joint group: a contiguous range of motor slots with its own command and state topic.
+struct AimdkJointGroup
+{
+  const char * name;
+  size_t offset;  // first motor slot
+  size_t size;    // entries in the group's messages
+  const char * command_topic;
+  const char * state_topic;
+};
+
+// transport_options of the vendor YAML.
+struct AgibotTopicsOptions
+{
+  const AimdkJointGroup * groups;
+  size_t group_count;
+  const char * imu_topic;
+  TopicQos qos;
+};
+
+template<size_t N, typename T>
+class AgibotTopicsTransport final : public DriverTransport<N, T>
+{
+  using CommandArray = aimdk_msgs::msg::JointCommandArray;
+  using StateArray = aimdk_msgs::msg::JointStateArray;
+  using Imu = sensor_msgs::msg::Imu;
+
+public:
+  explicit AgibotTopicsTransport(const AgibotTopicsOptions & options)
+  : options_(options), groups_(options.group_count)
+  {
+  }
+
+  const char * name() const override {return "agibot_topics";}
+
+  bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) override
+  {
+    core_ = &core;
+    node_ = node;
+    const rclcpp::QoS qos = makeQos(options_.qos);
+    for (size_t slot = 0; slot < N; ++slot) {
+      slot_names_[slot] = core.slotJointNames()[slot];
+      name_lengths_[slot] = std::strlen(slot_names_[slot]);
+    }
+    for (size_t g = 0; g < groups_.size(); ++g) {
+      const AimdkJointGroup & spec = options_.groups[g];
+      Group & group = groups_[g];
+      group.spec = &spec;
+      group.driven = 0;
+      // Size the command message and name its entries once: the writer only fills in numbers.
+      group.command.joints.resize(spec.size);
+      // The slot of every entry of the last state message, tried first on the next one: a
+      // publisher that keeps its order (or keeps a changed one) costs one name check per entry.
+      group.entry_slots.assign(spec.size, kNoSlot);
+      for (size_t i = 0; i < spec.size; ++i) {
+        const char * joint = core.slotJointNames()[spec.offset + i];
+        group.command.joints[i].name = joint;
+        group.driven += joint[0] != '\0' ? 1U : 0U;
+      }
+      group.publisher = node->create_publisher<CommandArray>(spec.command_topic, qos);
+      group.subscription = node->create_subscription<StateArray>(
+        spec.state_topic, qos, [this, g](const StateArray & msg) {onGroupState(g, msg);});
+    }
+    if (core.hasImu()) {
+      imu_subscription_ = node->create_subscription<Imu>(
+        options_.imu_topic, qos, [this](const Imu & msg) {
+          publishRosImu(*core_, msg.orientation, msg.angular_velocity, msg.linear_acceleration);
+        });
+    }
+    executor_.configure(node);
+    return true;
+  }
+
+  bool start() override
+  {
+    // Every group has to report again before the first state of this activation.
+    for (Group & group : groups_) {
+      group.reported = false;
+      group.frame_counter = 0;
+      group.state_time_ns = 0;
+      group.frames_valid = false;
+    }
+    groups_reported_ = 0;
+    executor_.start(
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+    return true;
+  }
+
+  void stop() override {executor_.stop();}
+
+  void shutdown() noexcept override
+  {
+    try {
+      executor_.stop();
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(core_->logger(), "stopping the executor thread failed: %s", e.what());
+    }
+  }
+
+private:
+  static constexpr size_t kNoSlot = std::numeric_limits<size_t>::max();
+
+  struct Group
+  {
+    const AimdkJointGroup * spec{nullptr};
+    size_t driven{0};  // slots of the group that drive a URDF joint
+    CommandArray command;  // pre-sized in configure(): no allocation per cycle
+    typename rclcpp::Publisher<CommandArray>::SharedPtr publisher;
+    typename rclcpp::Subscription<StateArray>::SharedPtr subscription;
+    // Executor thread only:
+    bool reported{false};       // sent a valid frame this activation
+    uint32_t frame_counter{0};  // decimation, per group
+    int64_t state_time_ns{0};   // steady time of the group's last valid frame
+    bool frames_valid{false};   // the group's last parsed frame was accepted
+    std::vector<size_t> entry_slots;  // slot of each entry of the last state message (sized once)
+    bool distinct_slots{false};  // no two entry_slots name the same slot (checked when they change)
+  };
+
+  // `name` is the joint driven in `slot`: lengths first, then every byte, compared in place a
+  // word at a time (first word, middle words, last word overlapping), without a library call.
+  bool sameName(const std::string & name, size_t slot) const
+  {
+    const size_t size = name.size();
+    if (size != name_lengths_[slot]) {
+      return false;
+    }
+    const char * a = name.data();
+    const char * b = slot_names_[slot];
+    if (size < sizeof(uint64_t)) {
+      return std::memcmp(a, b, size) == 0;
+    }
+    const size_t last = size - sizeof(uint64_t);
+    uint64_t difference = (loadWord(a) ^ loadWord(b)) | (loadWord(a + last) ^ loadWord(b + last));
+    if (size > 2 * sizeof(uint64_t)) {  // the second word; typical joint names end within 24 bytes
+      difference |= loadWord(a + sizeof(uint64_t)) ^ loadWord(b + sizeof(uint64_t));
+      for (size_t i = 2 * sizeof(uint64_t); i < last; i += sizeof(uint64_t)) {
+        difference |= loadWord(a + i) ^ loadWord(b + i);
+      }
+    }
+    return difference == 0U;
+  }
+
+  static uint64_t loadWord(const char * bytes)
+  {
+    uint64_t word;
+    std::memcpy(&word, bytes, sizeof(word));  // any alignment, no aliasing question
+    return word;
+  }
+
+  // The motor slot of entry `position` of a group's state message. A named entry is first tried
+  // against the slot the same entry had in the group's last message (a publisher keeps its
+  // order, also a changed one), then matched by position when the name agrees (or is empty:
+  // names are optional in AimDK), otherwise by name within the group. Every match compares the
+  // full name, so a reordered publisher never feeds a value to the wrong joint. kNoSlot for a
+  // joint this driver does not drive. Compares in place.
+  size_t resolveSlot(const Group & group, size_t position, const std::string & name) const
+  {
+    const AimdkJointGroup & spec = *group.spec;
+    if (!name.empty() && position < group.entry_slots.size()) {
+      const size_t cached = group.entry_slots[position];
+      if (cached != kNoSlot && sameName(name, cached)) {
+        return cached;
+      }
+    }
+    if (position < spec.size) {
+      const size_t slot = spec.offset + position;
+      if (name_lengths_[slot] != 0U && (name.empty() || sameName(name, slot))) {
+        return slot;
+      }
+    }
+    if (name.empty()) {
+      return kNoSlot;
+    }
+    for (size_t slot = spec.offset; slot < spec.offset + spec.size; ++slot) {
+      if (name_lengths_[slot] != 0U && sameName(name, slot)) {
+        return slot;
+      }
+    }
+    return kNoSlot;
+  }
+
+  // The number of distinct driven slots a group's message names; also records whether the
+  // group's cached entry slots are distinct (then a message whose entries all hit the cache
+  // names as many joints as it has driven entries).
+  size_t distinctSlots(Group & group, const StateArray & msg)
+  {
+    const uint32_t stamp = ++message_stamp_;
+    size_t distinct = 0;
+    group.distinct_slots = true;
+    for (size_t i = 0; i < msg.joints.size(); ++i) {
+      const bool cached = i < group.entry_slots.size();
+      const size_t slot = cached ? group.entry_slots[i] : resolveSlot(group, i, msg.joints[i].name);
+      if (slot == kNoSlot) {
+        continue;
+      }
+      if (slot_stamps_[slot] == stamp) {
+        group.distinct_slots = group.distinct_slots && !cached;
+        continue;
+      }
+      slot_stamps_[slot] = stamp;
+      ++distinct;
+    }
+    return distinct;
+  }
+
+  // The age of the state is the age of the oldest group: one silent group makes it stale.
+  int64_t oldestGroupTime() const
+  {
+    int64_t oldest = groups_.front().state_time_ns;
+    for (const Group & group : groups_) {
+      oldest = std::min(oldest, group.state_time_ns);
+    }
+    return oldest;
+  }
+
+  // Executor thread: the JointStateArray of one group.
+  void onGroupState(size_t index, const StateArray & msg)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Group & group = groups_[index];
+    const AimdkJointGroup & spec = *group.spec;
+    if (msg.state.value != 0U) {  // DomainErrorState: 1 damping, 2 power down, 3 disable, ...
+      RCLCPP_WARN_THROTTLE(
+        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        "AimDK HAL reports error state %u for joint group '%s'",
+        static_cast<unsigned>(msg.state.value), spec.name);
+    }
+    // Decimation per group: the first frame of a group in an activation is always processed.
+    const uint32_t frame_count = group.frame_counter++;
+    if (group.reported && (frame_count % core_->parameters().state_decimation) != 0U) {
+      // A skipped frame still proves that the group reports: it keeps the group fresh, unless
+      // the group's last processed frame was rejected.
+      if (group.frames_valid) {
+        group.state_time_ns = steadyNs(start);
+        if (groups_reported_ == groups_.size()) {
+          core_->markStateFresh(oldestGroupTime());
+        }
+      }
+      return;
+    }
+    // Validate the whole frame before touching the parsing buffer: a rejected frame leaves no
+    // trace.
+    const size_t count = msg.joints.size();
+    const size_t remembered = std::min(count, group.entry_slots.size());
+    size_t * const entry_slots = group.entry_slots.data();
+    size_t matched = 0;
+    bool resolved = count > remembered;  // some entry was matched by the slow path
+    double non_finite = 0.0;  // stays 0 while every value is finite: x * 0 is NaN for inf and NaN
+    const auto check = [&non_finite, &matched](const auto & joint) {
+        non_finite += joint.position * 0.0 + joint.velocity * 0.0 + joint.effort * 0.0;
+        ++matched;
+      };
+    for (size_t i = 0; i < remembered; ++i) {
+      const auto & joint = msg.joints[i];
+      // The usual case inline: the entry names the joint it named in the last message.
+      size_t slot = entry_slots[i];
+      if (slot == kNoSlot || !sameName(joint.name, slot)) {
+        slot = resolveSlot(group, i, joint.name);
+        entry_slots[i] = slot;  // tried first on the next message, reused below
+        resolved = true;
+      }
+      if (slot != kNoSlot) {
+        check(joint);
+      }
+    }
+    for (size_t i = remembered; i < count; ++i) {  // more entries than the group has
+      if (resolveSlot(group, i, msg.joints[i].name) != kNoSlot) {
+        check(msg.joints[i]);
+      }
+    }
+    // A joint counts once however often the message repeats it: a duplicate must not stand in
+    // for a joint that is missing. Entries that all hit the cache of a group whose cached slots
+    // are distinct cannot repeat one; otherwise count the distinct slots.
+    if (resolved || !group.distinct_slots) {
+      matched = distinctSlots(group, msg);
+    }
+    if (!(non_finite == 0.0)) {
+      reject(group, "non-finite value for a joint");
+      return;
+    }
+    if (matched < group.driven) {
+      reject(group, "the group did not report all of its joints");
+      return;
+    }
+    auto & state = core_->stateFrame();
+    const auto store = [&state](size_t slot, const auto & joint) {
+        state.q[slot] = static_cast<T>(joint.position);
+        state.dq[slot] = static_cast<T>(joint.velocity);
+        state.tau[slot] = static_cast<T>(joint.effort);
+      };
+    for (size_t i = 0; i < remembered; ++i) {
+      if (entry_slots[i] != kNoSlot) {
+        store(entry_slots[i], msg.joints[i]);
+      }
+    }
+    for (size_t i = remembered; i < count; ++i) {
+      const size_t slot = resolveSlot(group, i, msg.joints[i].name);
+      if (slot != kNoSlot) {
+        store(slot, msg.joints[i]);
+      }
+    }
+    group.state_time_ns = steadyNs(start);
+    group.frames_valid = true;
+    if (!group.reported) {
+      group.reported = true;
+      ++groups_reported_;
+    }
+    // First-state rule: only once every group has reported is the state complete.
+    if (groups_reported_ == groups_.size()) {
+      core_->publishState(oldestGroupTime());
+    }
+    core_->checkStateLatency(start);
+  }
+
+  void reject(Group & group, const char * reason)
+  {
+    group.frames_valid = false;
+    const uint64_t dropped = core_->rejectState();
+    RCLCPP_WARN_THROTTLE(
+      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      "dropped state frame of joint group '%s': %s (%" PRIu64 " dropped so far)",
+      group.spec->name, reason, dropped);
+  }
+
+  // Executor thread (wall timer): one JointCommandArray per group every
+  // command_writer_period_us.
+  void writeCommand()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    core_->checkWriterJitter();
+    const auto * cmd = core_->nextCommand();
+    if (cmd == nullptr) {
+      return;
+    }
+    const rclcpp::Time now = node_->now();
+    ++command_sequence_;
+    for (Group & group : groups_) {
+      CommandArray & msg = group.command;
+      msg.header.stamp = now;
+      msg.header.sequence = command_sequence_;
+      for (size_t i = 0; i < group.spec->size; ++i) {
+        const size_t slot = group.spec->offset + i;
+        auto & joint = msg.joints[i];
+        joint.position = static_cast<double>(cmd->q_target[slot]);
+        joint.velocity = static_cast<double>(cmd->dq_target[slot]);
+        joint.effort = static_cast<double>(cmd->tau_ff[slot]);
+        joint.stiffness = static_cast<double>(cmd->kp[slot]);
+        joint.damping = static_cast<double>(cmd->kd[slot]);
+      }
+      group.publisher->publish(msg);
+    }
+    core_->checkWriterLatency(start);
+  }
+
+  const AgibotTopicsOptions options_;
+  DriverCore<N, T> * core_{nullptr};
+  rclcpp::Node::SharedPtr node_;
+  std::vector<Group> groups_;  // sized at construction
+  std::array<uint32_t, N> slot_stamps_{};  // executor thread: distinctSlots() marks
+  uint32_t message_stamp_{0};
+  std::array<const char *, N> slot_names_{};  // each slot's joint name ("": not driven)
+  std::array<size_t, N> name_lengths_{};  // strlen of each slot's joint name (0: not driven)
+  size_t groups_reported_{0};  // executor thread
+  uint32_t command_sequence_{0};
+  typename rclcpp::Subscription<Imu>::SharedPtr imu_subscription_;
+  TopicExecutor executor_;
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__TRANSPORT__AGIBOT_TOPICS_HPP_

@@ -1,0 +1,237 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__TRANSPORT__CUSTOM_HPP_
+#define ROBOT_HARDWARE_INTERFACE__TRANSPORT__CUSTOM_HPP_
+
+// Bring your own SDK: the robot's source file derives a small class from CustomTransport and
+// writes the SDK calls into its user regions (connect, disconnect, send); everything else is here
+// and in the shared core. Threads:
+//   - on_activate (controller manager thread): connect(), then the command writer starts;
+//   - command writer (an executor thread spinning the driver's node, a wall timer at
+//     command_writer_period_us): send(command), never before the first valid state;
+//   - the SDK's own thread(s): receiveState() / receiveImu() from its callbacks, never two
+//     receiveState() (or two receiveImu()) calls at once;
+//   - on_deactivate and destruction: the writer stops and is joined, then disconnect().
+
+#include <array>
+#include <chrono>
+#include <cinttypes>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <rclcpp/logging.hpp>
+#include <rclcpp/node.hpp>
+
+#include "robot_hardware_interface/common/driver_core.hpp"
+#include "robot_hardware_interface/common/monitor.hpp"
+#include "robot_hardware_interface/common/system_driver.hpp"
+#include "robot_hardware_interface/transport/ros_topics.hpp"
+
+namespace robot_hardware_interface
+{
+
+// What a robot's source passes to its custom transport.
+struct CustomOptions
+{
+  const char * source_file;      // "src/<vendor>/<robot>.cpp", for log lines
+  const char * unfilled_region;  // the first function region still "not filled in", or nullptr
+};
+
+template<size_t N, typename T>
+class CustomTransport : public DriverTransport<N, T>
+{
+public:
+  using Command = MotorCommand<N, T>;
+  using State = MotorState<N, T>;
+  using Imu = ImuSample<T>;
+  using Float = T;
+  static constexpr size_t kMotors = N;
+
+  explicit CustomTransport(const CustomOptions & options)
+  : options_(options)
+  {
+  }
+
+  const char * name() const final {return "custom";}
+
+  bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) final
+  {
+    core_ = &core;
+    node_ = node;
+    executor_.configure(node);
+    return true;
+  }
+
+  bool start() final
+  {
+    if (options_.unfilled_region != nullptr) {
+      RCLCPP_ERROR(
+        core_->logger(), "custom transport: region '%s' of %s is not filled in: refusing to activate "
+        "(write the SDK calls there and delete its RHI_CUSTOM_NOT_FILLED_IN line)",
+        options_.unfilled_region, options_.source_file);
+      return false;
+    }
+    if (!connect()) {
+      RCLCPP_ERROR(
+        core_->logger(), "custom transport: connect() (region 'transport_connect' of %s) failed: "
+        "refusing to activate", options_.source_file);
+      disconnect();
+      return false;
+    }
+    connected_ = true;
+    activated_ns_ = steadyNowNs();
+    no_state_warned_ = false;
+    executor_.start(
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+    return true;
+  }
+
+  void stop() final
+  {
+    executor_.stop();  // send() is never called again once this returns
+    if (connected_) {
+      connected_ = false;
+      disconnect();
+    }
+  }
+
+  void shutdown() noexcept final
+  {
+    try {
+      stop();
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(core_->logger(), "custom transport: stopping failed: %s", e.what());
+    }
+  }
+
+protected:
+  // ------------------------------------------------------------ the regions' side (user code)
+  // on_activate, before the command writer starts: open the SDK, register its state callback.
+  // May block and allocate. Return false (after logging why) to refuse the activation.
+  virtual bool connect() = 0;
+  // on_deactivate and destruction, after the writer thread has stopped (also after a failed
+  // connect()): no SDK callback may call receiveState() / receiveImu() once it returns.
+  virtual void disconnect() = 0;
+  // Command writer thread, every command_writer_period_us once a valid state has arrived: send
+  // `command` (slots 0..N-1: q_target, dq_target, kp, kd, tau_ff; already safe: limits clamped,
+  // non-finite values and stale state turned into damping-only holds). Must not allocate, block
+  // or throw.
+  virtual void send(const Command & command) = 0;
+
+  // From the SDK's state callback (one thread at a time): `fill(State & state)` writes q, dq and
+  // tau of every slot that drives a joint and returns true, or false to drop the frame. Frames
+  // with a non-finite value in a driven slot are dropped too. Decimation (state_decimation), the
+  // first-state safe start and the stale-state clock are handled here. Allocates nothing itself.
+  template<typename Fill>
+  void receiveState(Fill && fill)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    if (core_ == nullptr || !core_->startStateFrame()) {
+      return;  // not configured, or decimated
+    }
+    if (!fill(state_scratch_)) {
+      rejectState("the state callback dropped it");
+      return;
+    }
+    for (const size_t slot : core_->mappedSlots()) {
+      if (!allFinite(state_scratch_.q[slot], state_scratch_.dq[slot], state_scratch_.tau[slot])) {
+        rejectState("non-finite value for a driven joint");
+        return;
+      }
+    }
+    core_->stateFrame() = state_scratch_;
+    core_->publishState(steadyNs(start));
+    core_->checkStateLatency(start);
+  }
+
+  // From the SDK's IMU callback: `fill(Imu & imu)` writes quat (w, x, y, z), omega and acc and
+  // returns true, or false to drop the sample; non-finite samples are dropped.
+  template<typename Fill>
+  void receiveImu(Fill && fill)
+  {
+    if (core_ == nullptr || !core_->hasImu()) {
+      return;
+    }
+    if (!fill(imu_scratch_) ||
+      !allFinite(imu_scratch_.quat[0], imu_scratch_.quat[1], imu_scratch_.quat[2], imu_scratch_.quat[3]) ||
+      !allFinite(imu_scratch_.omega[0], imu_scratch_.omega[1], imu_scratch_.omega[2]) ||
+      !allFinite(imu_scratch_.acc[0], imu_scratch_.acc[1], imu_scratch_.acc[2]))
+    {
+      const uint64_t dropped = core_->rejectImu();
+      RCLCPP_WARN_THROTTLE(
+        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        "custom transport: dropped IMU sample (%" PRIu64 " dropped so far)", dropped);
+      return;
+    }
+    core_->imuFrame() = imu_scratch_;
+    core_->publishImu();
+  }
+
+  // The <hardware> parameter network_interface, the driver's logger and node, and the joints:
+  // for connect().
+  const std::string & networkInterface() const {return core_->parameters().network_interface;}
+  const rclcpp::Logger & logger() const {return core_->logger();}
+  const rclcpp::Node::SharedPtr & node() const {return node_;}
+  // Slots that drive a URDF joint (ascending) and the joint name of every slot ("" for none).
+  const std::vector<size_t> & mappedSlots() const {return core_->mappedSlots();}
+  const std::array<const char *, N> & slotJointNames() const {return core_->slotJointNames();}
+
+private:
+  void rejectState(const char * reason)
+  {
+    const uint64_t dropped = core_->rejectState();
+    RCLCPP_WARN_THROTTLE(
+      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      "custom transport: dropped state frame: %s (%" PRIu64 " dropped so far)", reason, dropped);
+  }
+
+  // Executor thread (wall timer).
+  void writeCommand()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    core_->checkWriterJitter();
+    const Command * cmd = core_->nextCommand();
+    if (cmd == nullptr) {
+      warnWithoutState();
+      return;
+    }
+    send(*cmd);
+    core_->checkWriterLatency(start);
+  }
+
+  // Nothing is sent before the first valid state: say so once if none has come in time.
+  void warnWithoutState()
+  {
+    const int64_t waited_ns = steadyNowNs() - activated_ns_;
+    if (no_state_warned_ ||
+      waited_ns <= static_cast<int64_t>(core_->parameters().state_timeout_ms) * 1000000)
+    {
+      return;
+    }
+    no_state_warned_ = true;
+    RCLCPP_WARN(
+      core_->logger(), "custom transport: no valid state %" PRIu64 " ms after activation, so "
+      "nothing is sent: does the SDK callback that connect() registers call receiveState()?",
+      core_->parameters().state_timeout_ms);
+  }
+
+  const CustomOptions options_;
+  DriverCore<N, T> * core_{nullptr};
+  rclcpp::Node::SharedPtr node_;
+  TopicExecutor executor_;
+  bool connected_{false};      // controller manager thread
+  int64_t activated_ns_{0};    // set before the writer starts
+  bool no_state_warned_{false};  // writer thread
+  State state_scratch_{};      // SDK state thread: the frame being filled
+  Imu imu_scratch_{};          // SDK IMU thread
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__TRANSPORT__CUSTOM_HPP_

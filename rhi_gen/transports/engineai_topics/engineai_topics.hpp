@@ -1,0 +1,178 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_HPP_
+
+// EngineAI robots over ROS 2 topics (interface_protocol): JointCommand / JointState arrays indexed
+// by motor slot, ImuInfo for the IMU. The robot must be in joint_bridge mode.
+
+#include <chrono>
+#include <cinttypes>
+#include <cstddef>
+#include <cstdint>
+
+#include <interface_protocol/msg/imu_info.hpp>
+#include <interface_protocol/msg/joint_command.hpp>
+#include <interface_protocol/msg/joint_state.hpp>
+#include <rclcpp/logging.hpp>
+#include <rclcpp/node.hpp>
+#include <rclcpp/publisher.hpp>
+#include <rclcpp/subscription.hpp>
+
+#include "robot_hardware_interface/common/driver_core.hpp"
+#include "robot_hardware_interface/common/monitor.hpp"
+#include "robot_hardware_interface/common/system_driver.hpp"
+#include "robot_hardware_interface/transport/ros_topics.hpp"
+
+namespace robot_hardware_interface
+{
+
+// transport_options of the vendor YAML.
+struct EngineaiTopicsOptions
+{
+  const char * command_topic;
+  const char * state_topic;
+  const char * imu_topic;
+  uint8_t parallel_parser_type;  // 0 CLASSIC_PARSER, 1 RL_PARSER
+  TopicQos qos;
+};
+
+template<size_t N, typename T>
+class EngineaiTopicsTransport final : public DriverTransport<N, T>
+{
+  using JointCommand = interface_protocol::msg::JointCommand;
+  using JointState = interface_protocol::msg::JointState;
+  using ImuInfo = interface_protocol::msg::ImuInfo;
+
+public:
+  explicit EngineaiTopicsTransport(const EngineaiTopicsOptions & options)
+  : options_(options)
+  {
+  }
+
+  const char * name() const override {return "engineai_topics";}
+
+  bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) override
+  {
+    core_ = &core;
+    node_ = node;
+    // Size the command arrays once (index = motor slot): the writer only fills in numbers.
+    // `torque` is a direct torque command that stays 0: this driver commands through the PD law
+    // (position, velocity, stiffness, damping) plus feed_forward_torque.
+    command_msg_.position.assign(N, 0.0);
+    command_msg_.velocity.assign(N, 0.0);
+    command_msg_.feed_forward_torque.assign(N, 0.0);
+    command_msg_.torque.assign(N, 0.0);
+    command_msg_.stiffness.assign(N, 0.0);
+    command_msg_.damping.assign(N, 0.0);
+    command_msg_.parallel_parser_type = options_.parallel_parser_type;
+    const rclcpp::QoS qos = makeQos(options_.qos);
+    publisher_ = node->create_publisher<JointCommand>(options_.command_topic, qos);
+    state_subscription_ = node->create_subscription<JointState>(
+      options_.state_topic, qos, [this](const JointState & msg) {onJointState(msg);});
+    if (core.hasImu()) {
+      imu_subscription_ = node->create_subscription<ImuInfo>(
+        options_.imu_topic, qos, [this](const ImuInfo & msg) {
+          publishRosImu(*core_, msg.quaternion, msg.angular_velocity, msg.linear_acceleration);
+        });
+    }
+    executor_.configure(node);
+    return true;
+  }
+
+  bool start() override
+  {
+    executor_.start(
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+    return true;
+  }
+
+  void stop() override {executor_.stop();}
+
+  void shutdown() noexcept override
+  {
+    try {
+      executor_.stop();
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(core_->logger(), "stopping the executor thread failed: %s", e.what());
+    }
+  }
+
+private:
+  // Executor thread: JointState arrays indexed by motor slot.
+  void onJointState(const JointState & msg)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    // Every frame: a frame too short to cover every motor is malformed.
+    if (msg.position.size() < N || msg.velocity.size() < N || msg.torque.size() < N) {
+      reject("position/velocity/torque arrays shorter than the motor count");
+      return;
+    }
+    if (!core_->startStateFrame()) {
+      return;  // decimated
+    }
+    // A frame rejected half-way leaves partial values in the parsing buffer; harmless, because
+    // only a fully accepted frame is published and it rewrites every driven slot.
+    auto & state = core_->stateFrame();
+    for (const size_t slot : core_->mappedSlots()) {
+      const double q = msg.position[slot];
+      const double dq = msg.velocity[slot];
+      const double tau = msg.torque[slot];
+      if (!allFinite(q, dq, tau)) {
+        reject("non-finite value in a driven motor slot");
+        return;
+      }
+      state.q[slot] = static_cast<T>(q);
+      state.dq[slot] = static_cast<T>(dq);
+      state.tau[slot] = static_cast<T>(tau);
+    }
+    core_->publishState(steadyNs(start));
+    core_->checkStateLatency(start);
+  }
+
+  void reject(const char * reason)
+  {
+    const uint64_t dropped = core_->rejectState();
+    RCLCPP_WARN_THROTTLE(
+      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      "dropped state frame: %s (%" PRIu64 " dropped so far)", reason, dropped);
+  }
+
+  // Executor thread (wall timer): one JointCommand every command_writer_period_us. Slots that
+  // drive no URDF joint carry zero gains, i.e. stay passive.
+  void writeCommand()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    core_->checkWriterJitter();
+    const auto * cmd = core_->nextCommand();
+    if (cmd == nullptr) {
+      return;
+    }
+    command_msg_.header.stamp = node_->now();
+    for (size_t i = 0; i < N; ++i) {
+      command_msg_.position[i] = static_cast<double>(cmd->q_target[i]);
+      command_msg_.velocity[i] = static_cast<double>(cmd->dq_target[i]);
+      command_msg_.feed_forward_torque[i] = static_cast<double>(cmd->tau_ff[i]);
+      command_msg_.stiffness[i] = static_cast<double>(cmd->kp[i]);
+      command_msg_.damping[i] = static_cast<double>(cmd->kd[i]);
+    }
+    publisher_->publish(command_msg_);
+    core_->checkWriterLatency(start);
+  }
+
+  const EngineaiTopicsOptions options_;
+  DriverCore<N, T> * core_{nullptr};
+  rclcpp::Node::SharedPtr node_;
+  JointCommand command_msg_;  // pre-sized in configure(): no allocation per cycle
+  typename rclcpp::Publisher<JointCommand>::SharedPtr publisher_;
+  typename rclcpp::Subscription<JointState>::SharedPtr state_subscription_;
+  typename rclcpp::Subscription<ImuInfo>::SharedPtr imu_subscription_;
+  TopicExecutor executor_;
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_HPP_

@@ -1,0 +1,217 @@
+"""unitree_dds: unitree_sdk2 over DDS, LowCmd_/LowState_ with CRC32, float.
+
+Two message families (SDK_FACTS.md sections A and D): "hg" (35 motor slots, mode_pr and
+mode_machine) for G1 and H1-2; "go" (20 slots, head/level_flag framing, a motor mode per slot)
+for the original H1, Go2, Go2-W, B2 and B2-W. Known robots bring their family, their real SDK motor
+order, motor modes and the gains of the SDK's own low-level examples; an unknown Unitree robot must
+name its family (sending one family's bytes to the other commands garbage). The CRC and message
+headers are shared by every Unitree driver of the package, so they are generated once.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import replace
+from typing import Any
+
+from ...errors import ConfigError
+from ...inputs.validator import Validator
+from ...model import TransportOptions
+from ..base import PLAIN_CMAKE, Dependency, KnownRobot, Transport, transport_header
+
+NAME = "unitree_dds"
+FAMILIES = {"hg": 35, "go": 20}  # message family -> motor slots of its LowCmd_
+FAMILY_ROBOTS = {"hg": "G1, H1-2", "go": "H1, Go2, Go2-W, B2, B2-W"}
+GO_SERVO = 0x01   # MotorCmd_.mode of the go examples ("servo (PMSM) mode")
+GO_STRONG = 0x0A  # the H1's hip/knee/torso motors and the B2's motors in the C++ examples
+
+# G1 29-DoF motor order, unitree_sdk2 enum G1JointIndex.
+G1_ORDER = (
+    "left_hip_pitch_joint", "left_hip_roll_joint", "left_hip_yaw_joint", "left_knee_joint",
+    "left_ankle_pitch_joint", "left_ankle_roll_joint", "right_hip_pitch_joint", "right_hip_roll_joint",
+    "right_hip_yaw_joint", "right_knee_joint", "right_ankle_pitch_joint", "right_ankle_roll_joint",
+    "waist_yaw_joint", "waist_roll_joint", "waist_pitch_joint", "left_shoulder_pitch_joint",
+    "left_shoulder_roll_joint", "left_shoulder_yaw_joint", "left_elbow_joint", "left_wrist_roll_joint",
+    "left_wrist_pitch_joint", "left_wrist_yaw_joint", "right_shoulder_pitch_joint",
+    "right_shoulder_roll_joint", "right_shoulder_yaw_joint", "right_elbow_joint",
+    "right_wrist_roll_joint", "right_wrist_pitch_joint", "right_wrist_yaw_joint",
+)
+# G1 ankle-swing example gains: legs (hip pitch, roll, yaw, knee, ankle pitch, roll) x2, waist, arms.
+_G1_KP = (60, 60, 60, 100, 40, 40) * 2 + (60, 40, 40) + (40,) * 14
+_G1_KD = (1, 1, 1, 2, 1, 1) * 2 + (1,) * 17
+
+# H1-2 27-DoF order, enum H1JointIndex of h1_27dof_example.cpp (= h1_2_handless.urdf file order).
+_H1_2_SIDE = ("hip_yaw", "hip_pitch", "hip_roll", "knee", "ankle_pitch", "ankle_roll")
+_H1_2_ARM = ("shoulder_pitch", "shoulder_roll", "shoulder_yaw", "elbow", "wrist_roll", "wrist_pitch", "wrist_yaw")
+H1_2_ORDER = (tuple(f"left_{j}_joint" for j in _H1_2_SIDE) + tuple(f"right_{j}_joint" for j in _H1_2_SIDE)
+              + ("torso_joint",) + tuple(f"left_{j}_joint" for j in _H1_2_ARM)
+              + tuple(f"right_{j}_joint" for j in _H1_2_ARM))
+
+# Original H1 (go family), enum JointIndex of example/h1/low_level/motors.hpp: slot 9 drives no joint.
+H1_ORDER = (
+    "right_hip_roll_joint", "right_hip_pitch_joint", "right_knee_joint", "left_hip_roll_joint",
+    "left_hip_pitch_joint", "left_knee_joint", "torso_joint", "left_hip_yaw_joint", "right_hip_yaw_joint", "",
+    "left_ankle_joint", "right_ankle_joint", "right_shoulder_pitch_joint", "right_shoulder_roll_joint",
+    "right_shoulder_yaw_joint", "right_elbow_joint", "left_shoulder_pitch_joint", "left_shoulder_roll_joint",
+    "left_shoulder_yaw_joint", "left_elbow_joint",
+)
+# humanoid.hpp: strong motors (slots 0..9) mode 0x0A, kp 200 / kd 5; weak ones (10..19) 0x01, 60 / 1.5.
+_H1_MODES = (GO_STRONG,) * 10 + (GO_SERVO,) * 10
+
+# Quadrupeds: JointIndex of dds_wrapper/robots/go2/defines.h (FR, FL, RR, RL), then the wheels.
+QUADRUPED_ORDER = tuple(f"{leg}_{part}_joint" for leg in ("FR", "FL", "RR", "RL")
+                        for part in ("hip", "thigh", "calf"))
+WHEELED_ORDER = QUADRUPED_ORDER + tuple(f"{leg}_foot_joint" for leg in ("FR", "FL", "RR", "RL"))
+
+
+def _gains(order: Sequence[str], kp: Sequence[float], kd: Sequence[float]) -> tuple[tuple[str, float, float], ...]:
+    return tuple((n, float(p), float(d)) for n, p, d in zip(order, kp, kd, strict=True) if n)
+
+
+def _uniform(order: Sequence[str], kp: float, kd: float, wheel_kd: float | None = None
+             ) -> tuple[tuple[str, float, float], ...]:
+    """The same gains on every leg joint; wheels (…_foot_joint) take damping only."""
+    return tuple((n, 0.0, wheel_kd) if wheel_kd is not None and n.endswith("_foot_joint") else (n, kp, kd)
+                 for n in order if n)
+
+
+def _quadruped(robot: str, order: tuple[str, ...], mode: int, kp: float, kd: float, wheel_kd: float | None,
+               example: str, aliases: tuple[str, ...] = ()) -> KnownRobot:
+    return KnownRobot(
+        "unitree", robot, NAME, order, f"{robot} motor order: JointIndex of unitree_sdk2 dds_wrapper (FR, FL, RR, "
+        "RL legs" + (", then the wheels 12..15)" if wheel_kd is not None else ")"), aliases=aliases, family="go",
+        motor_modes=(mode,) * FAMILIES["go"], default_gains=_uniform(order, kp, kd, wheel_kd),
+        gains_note=f"the gains of unitree_sdk2's {example}")
+
+
+KNOWN_ROBOTS = (
+    KnownRobot("unitree", "g1", NAME, G1_ORDER, "G1 29-DoF motor order from unitree_sdk2 enum G1JointIndex",
+               family="hg", default_gains=_gains(G1_ORDER, _G1_KP, _G1_KD),
+               gains_note="the gains of unitree_sdk2's g1_ankle_swing_example"),
+    KnownRobot("unitree", "h1_2", NAME, H1_2_ORDER, "H1-2 27-DoF motor order from unitree_sdk2 enum H1JointIndex "
+               "(h1_27dof_example.cpp)", aliases=("h12",), family="hg",
+               gains_note="none: unitree_sdk2's H1-2 examples set no standing gains"),
+    KnownRobot("unitree", "h1", NAME, H1_ORDER, "H1 motor order from unitree_sdk2 enum JointIndex "
+               "(example/h1/low_level/motors.hpp; slot 9 drives no joint)", family="go", motor_modes=_H1_MODES,
+               default_gains=tuple((n, 200.0, 5.0) if i < 10 else (n, 60.0, 1.5)
+                                   for i, n in enumerate(H1_ORDER) if n),
+               gains_note="the strong/weak motor gains of unitree_sdk2's example/h1/low_level/humanoid.hpp"),
+    _quadruped("go2", QUADRUPED_ORDER, GO_SERVO, 60.0, 5.0, None, "go2_stand_example"),
+    _quadruped("go2w", WHEELED_ORDER, GO_SERVO, 70.0, 5.0, 5.0, "go2w_stand_example", aliases=("go2_w",)),
+    _quadruped("b2", QUADRUPED_ORDER, GO_STRONG, 1000.0, 10.0, None, "b2_stand_example"),
+    _quadruped("b2w", WHEELED_ORDER, GO_SERVO, 1000.0, 10.0, 10.0, "b2w_stand_example", aliases=("b2_w",)),
+)
+
+
+class UnitreeDds(Transport):
+    name = NAME
+    summary = "unitree_sdk2 DDS: LowCmd_/LowState_ with CRC32, hg (35 motor slots) or go (20) messages"
+    option_keys = ("family", "lowcmd_topic", "lowstate_topic", "sdk_slots", "domain_id", "mode_pr",
+                   "motor_modes", "release_motion_control", "verify_state_crc")
+    default_float_type = "float"
+    dependencies = (Dependency("unitree_sdk2", PLAIN_CMAKE),)
+    shared_files = tuple(transport_header(NAME, name) for name in
+                         ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp"))
+    vendors = ("unitree",)
+    known_robots = KNOWN_ROBOTS
+    motor_slots = FAMILIES["hg"]
+    slots_holder = "a unitree hg LowCmd_"
+
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+        p = "transport_options"
+        family = v.optional(options, p, "family", lambda x, q: v.choice(x, q, tuple(FAMILIES)), "")
+        sdk_slots = v.optional(options, p, "sdk_slots", v.integer_in(1, 1024), 0)
+        modes: tuple[int, ...] = ()
+        if "motor_modes" in options:
+            modes = self._motor_modes(v, options["motor_modes"], f"{p}.motor_modes")
+        return TransportOptions(
+            family=family,
+            motor_modes=modes,
+            verify_state_crc=v.optional(options, p, "verify_state_crc", v.boolean, True),
+            lowcmd_topic=v.optional(options, p, "lowcmd_topic", v.topic, "rt/lowcmd"),
+            lowstate_topic=v.optional(options, p, "lowstate_topic", v.topic, "rt/lowstate"),
+            sdk_slots=sdk_slots,
+            domain_id=v.optional(options, p, "domain_id", v.integer_in(0, 232), 0),
+            mode_pr=v.optional(options, p, "mode_pr", v.integer_in(0, 1), 0),
+            release_motion_control=v.optional(options, p, "release_motion_control", v.boolean, False),
+        )
+
+    @staticmethod
+    def _motor_modes(v: Validator, raw: Any, path: str) -> tuple[int, ...]:
+        if not isinstance(raw, list):
+            raise v.error(path, f"must be a list of {FAMILIES['go']} motor modes, one per LowCmd_ slot",
+                          fix="e.g. [1, 1, ...] (0x01 servo; the H1's strong motors use 10)")
+        return tuple(v.integer(item, f"{path}[{i}]", 0, 255) for i, item in enumerate(raw))
+
+    def resolve_options(self, v: Validator, options: TransportOptions, *, vendor: str, robot: str,
+                        motor_count: int) -> TransportOptions:
+        """The message family (a known robot's, else the YAML must name it), its slot count and motor modes."""
+        p = "transport_options"
+        known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
+        family = options.family or (known.family if known else "")
+        if not family:
+            raise v.error(f"{p}.family" if f"{p}.family" in v.lines else p,
+                          f"rhi-gen does not know which low-level messages {vendor}/{robot} speaks",
+                          fix="set transport_options.family: hg (" + FAMILY_ROBOTS["hg"] + ") or go ("
+                              + FAMILY_ROBOTS["go"] + ")")
+        slots = FAMILIES[family]
+        if options.sdk_slots not in (0, slots):
+            raise v.error(f"{p}.sdk_slots", f"unitree {family} messages have exactly {slots} motor slots, "
+                          f"not {options.sdk_slots}", fix=f"remove sdk_slots or set it to {slots}")
+        if motor_count > slots:
+            raise ConfigError(f"motor_count {motor_count} exceeds the {slots} motor slots of the unitree {family} "
+                              "LowCmd_", file=v.source, line=v.lines.get("motor_count"), key="motor_count",
+                              fix=f"use at most {slots} motors, or check transport_options.family")
+        modes = options.motor_modes
+        if family == "go":
+            modes = modes or (known.motor_modes if known and known.motor_modes else (GO_SERVO,) * slots)
+            if len(modes) != slots:
+                raise v.error(f"{p}.motor_modes", f"has {len(modes)} entries; a go LowCmd_ has {slots} slots",
+                              fix=f"give one motor mode per slot ({slots} entries)")
+        elif modes:
+            raise v.error(f"{p}.motor_modes", "hg messages take no per-slot motor mode (driven slots are enabled)",
+                          fix="remove motor_modes, or set family: go")
+        return replace(options, family=family, sdk_slots=slots, motor_modes=modes)
+
+    def slots_for(self, known: KnownRobot | None, given: Mapping[str, str]) -> tuple[int | None, str]:
+        family = _new_family(known, given)
+        if family:
+            return FAMILIES[family], f"a unitree {family} LowCmd_"
+        return self.motor_slots, self.slots_holder
+
+    def check_new(self, vendor: str, robot: str, known: KnownRobot | None, given: Mapping[str, str]) -> None:
+        """An unknown Unitree robot: the family cannot be guessed (one family's bytes are garbage to the other)."""
+        if not (given.get("family") or (known.family if known is not None else "")):
+            raise ConfigError(f"rhi-gen does not know which low-level messages {vendor}/{robot} speaks",
+                              key="--transport-option",
+                              fix="add --transport-option family=hg (" + FAMILY_ROBOTS["hg"] + ") or "
+                                  "--transport-option family=go (" + FAMILY_ROBOTS["go"] + ")")
+        if "family" in given and given["family"] not in FAMILIES:
+            raise ConfigError(f"unknown unitree message family {given['family']!r}", key="--transport-option",
+                              fix="use --transport-option family=hg or family=go")
+
+    def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
+                        given: Mapping[str, str] | None = None) -> list[str]:
+        family = _new_family(known, given or {})
+        lines = [f"  family: {family}  # " + ("; ".join(f"{f}: {r}" for f, r in FAMILY_ROBOTS.items()))] \
+            if family else []  # unknown robot: validation then asks for the family
+        lines += ["  lowcmd_topic: rt/lowcmd", "  lowstate_topic: rt/lowstate"]
+        if family:
+            lines.append(f"  sdk_slots: {FAMILIES[family]}  # motor slots of a {family} LowCmd_ (fixed by the family)")
+        lines.append("  domain_id: 0")
+        if family == "go" and known is not None and known.motor_modes:
+            lines.append(f"  motor_modes: [{', '.join(str(m) for m in known.motor_modes)}]  # MotorCmd_.mode per slot")
+        if family != "go":
+            lines.append("  mode_pr: 0  # hg: 0 PR (series pitch/roll), 1 AB (parallel ankle)")
+        lines += ["  release_motion_control: false  # true: release the built-in motion controller first",
+                  "  verify_state_crc: true"]
+        return lines
+
+
+def _new_family(known: KnownRobot | None, given: Mapping[str, str]) -> str:
+    """The family `rhi-gen new` writes: ``--transport-option family=`` over a known robot's; "" when
+    there is none or it is not a family (check_new and the validator report those)."""
+    family = given.get("family") or (known.family if known is not None else "")
+    return family if family in FAMILIES else ""
+
+
+TRANSPORT = UnitreeDds()

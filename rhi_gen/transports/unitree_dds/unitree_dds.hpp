@@ -1,0 +1,269 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_HPP_
+
+// Unitree robots over unitree_sdk2 DDS: LowCmd_ out on a recurrent SDK thread, LowState_ in on the
+// SDK's listener thread, both CRC-protected. The message family (unitree_hg::Family for G1 and
+// H1-2, unitree_go::Family for Go2, Go2-W, B2 and the original H1) is a template parameter.
+
+#include <atomic>
+#include <chrono>
+#include <cinttypes>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include <rclcpp/logging.hpp>
+#include <rclcpp/node.hpp>
+#include <unitree/common/thread/recurrent_thread.hpp>
+#include <unitree/common/thread/thread.hpp>
+#include <unitree/robot/b2/motion_switcher/motion_switcher_client.hpp>
+#include <unitree/robot/channel/channel_factory.hpp>
+#include <unitree/robot/channel/channel_publisher.hpp>
+#include <unitree/robot/channel/channel_subscriber.hpp>
+
+#include "robot_hardware_interface/common/driver_core.hpp"
+#include "robot_hardware_interface/common/monitor.hpp"
+#include "robot_hardware_interface/common/system_driver.hpp"
+
+namespace robot_hardware_interface
+{
+
+// transport_options of the vendor YAML.
+struct UnitreeDdsOptions
+{
+  int32_t domain_id;
+  const char * lowcmd_topic;
+  const char * lowstate_topic;
+  uint8_t mode_pr;               // hg LowCmd_.mode_pr: 0 = PR (series pitch/roll), 1 = AB
+  const uint8_t * motor_modes;   // go: MotorCmd_.mode of every slot (0x01 servo, 0x0A strong)
+  bool release_motion_control;  // release the built-in motion controller before commanding
+  bool verify_state_crc;        // drop LowState_ frames whose crc does not match
+};
+
+template<size_t N, typename T, typename Family>
+class UnitreeDdsTransport final : public DriverTransport<N, T>
+{
+  using LowCmd = typename Family::LowCmd;
+  using LowState = typename Family::LowState;
+  static_assert(N <= Family::kMotorSlots, "more motors than LowCmd_ slots");
+
+  static constexpr int64_t kStateQueueLength = 1;  // only the newest LowState_ matters
+
+public:
+  explicit UnitreeDdsTransport(const UnitreeDdsOptions & options)
+  : options_(options)
+  {
+  }
+
+  const char * name() const override {return "unitree_dds";}
+
+  bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & /*node*/) override
+  {
+    core_ = &core;
+    const std::string & network_interface = core.parameters().network_interface;
+    // One DDS participant per process, bound to the robot's network interface.
+    ::unitree::robot::ChannelFactory::Instance()->Init(options_.domain_id, network_interface);
+    // The command message is reused for every send: fill the constant parts once.
+    Family::initCommand(low_cmd_, core.mappedSlots(), options_.mode_pr, options_.motor_modes);
+    publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowCmd>>(
+      options_.lowcmd_topic);
+    publisher_->InitChannel();
+    // State flows from now on, also while inactive, so read() reports the real robot early.
+    subscriber_ = std::make_shared<::unitree::robot::ChannelSubscriber<LowState>>(
+      options_.lowstate_topic);
+    subscriber_->InitChannel(
+      [this](const void * message) {onLowState(*static_cast<const LowState *>(message));},
+      kStateQueueLength);
+    RCLCPP_INFO(
+      core.logger(), "unitree_sdk2 DDS (%s messages) on '%s', domain %d: publishing %s, "
+      "subscribed to %s", Family::kName, network_interface.c_str(),
+      static_cast<int>(options_.domain_id), options_.lowcmd_topic, options_.lowstate_topic);
+    return true;
+  }
+
+  bool start() override
+  {
+    if (options_.release_motion_control && !releaseMotionControl()) {
+      return false;
+    }
+    writer_thread_ = ::unitree::common::CreateRecurrentThreadEx(
+      "command_writer", UT_CPU_ID_NONE, core_->parameters().command_writer_period_us,
+      &UnitreeDdsTransport::writeCommand, this);
+    return true;
+  }
+
+  void stop() override
+  {
+    if (!writer_thread_) {
+      return;
+    }
+    // The SDK creates its threads detached and does not join them on destruction: Wait()
+    // (RecurrentThread's override sets the loop's quit flag, then waits for the loop to end) is
+    // what guarantees writeCommand() has returned for good.
+    writer_thread_->Wait();
+    writer_thread_.reset();
+  }
+
+  void shutdown() noexcept override
+  {
+    try {
+      stop();
+      if (subscriber_) {
+        subscriber_->CloseChannel();
+      }
+      if (publisher_) {
+        publisher_->CloseChannel();
+      }
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(core_->logger(), "shutting down unitree_sdk2 channels failed: %s", e.what());
+    }
+  }
+
+private:
+  // DDS listener thread: every LowState_ frame (500 Hz - 1 kHz).
+  void onLowState(const LowState & low_state)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    // Every frame: integrity and the safety-critical fields (lightweight).
+    if (options_.verify_state_crc && low_state.crc() != Family::stateCrc(low_state)) {
+      ++crc_error_count_;
+      RCLCPP_WARN_THROTTLE(
+        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        "dropped LowState_ with a bad CRC (%" PRIu64 " so far; if every frame is dropped, the "
+        "publisher does not fill LowState_.crc: set transport_options.verify_state_crc to false)",
+        crc_error_count_);
+      return;
+    }
+    state_tag_.store(Family::stateTag(low_state), std::memory_order_relaxed);
+    if (!core_->startStateFrame()) {
+      return;  // decimated
+    }
+    auto & state = core_->stateFrame();
+    const auto & motors = low_state.motor_state();
+    for (const size_t slot : core_->mappedSlots()) {
+      const auto & motor = motors[slot];
+      if (!allFinite(motor.q(), motor.dq(), motor.tau_est())) {
+        const uint64_t dropped = core_->rejectState();
+        RCLCPP_WARN_THROTTLE(
+          core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+          "dropped state frame: non-finite value in motor slot %zu (%" PRIu64
+          " dropped so far)", slot, dropped);
+        return;
+      }
+      state.q[slot] = static_cast<T>(motor.q());
+      state.dq[slot] = static_cast<T>(motor.dq());
+      state.tau[slot] = static_cast<T>(motor.tau_est());
+    }
+    if (core_->hasImu()) {
+      publishImu(low_state.imu_state());
+    }
+    core_->publishState(steadyNs(start));
+    core_->checkStateLatency(start);
+  }
+
+  template<typename ImuState>
+  void publishImu(const ImuState & imu_state)
+  {
+    const auto & quat = imu_state.quaternion();  // w, x, y, z
+    const auto & gyro = imu_state.gyroscope();
+    const auto & acc = imu_state.accelerometer();
+    if (!allFinite(quat[0], quat[1], quat[2], quat[3]) || !allFinite(gyro[0], gyro[1], gyro[2]) ||
+      !allFinite(acc[0], acc[1], acc[2]))
+    {
+      const uint64_t dropped = core_->rejectImu();
+      RCLCPP_WARN_THROTTLE(
+        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        "dropped IMU sample with non-finite values (%" PRIu64 " dropped so far)", dropped);
+      return;
+    }
+    auto & imu = core_->imuFrame();
+    for (size_t i = 0; i < 4; ++i) {
+      imu.quat[i] = static_cast<T>(quat[i]);
+    }
+    for (size_t i = 0; i < 3; ++i) {
+      imu.omega[i] = static_cast<T>(gyro[i]);
+      imu.acc[i] = static_cast<T>(acc[i]);
+    }
+    core_->publishImu();
+  }
+
+  // SDK recurrent thread: one LowCmd_ every command_writer_period_us.
+  void writeCommand()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    core_->checkWriterJitter();
+    const auto * cmd = core_->nextCommand();
+    if (cmd == nullptr) {
+      return;
+    }
+    Family::applyStateTag(low_cmd_, state_tag_.load(std::memory_order_relaxed));
+    for (const size_t slot : core_->mappedSlots()) {
+      auto & motor = low_cmd_.motor_cmd()[slot];
+      motor.q() = static_cast<float>(cmd->q_target[slot]);
+      motor.dq() = static_cast<float>(cmd->dq_target[slot]);
+      motor.tau() = static_cast<float>(cmd->tau_ff[slot]);
+      motor.kp() = static_cast<float>(cmd->kp[slot]);
+      motor.kd() = static_cast<float>(cmd->kd[slot]);
+    }
+    low_cmd_.crc() = Family::commandCrc(low_cmd_);
+    publisher_->Write(low_cmd_);
+    core_->checkWriterLatency(start);
+  }
+
+  // Unitree robots boot into a built-in motion controller (sport / locomotion mode) that also
+  // writes the low-level command topic. As in the SDK's low-level examples it is released before
+  // low-level control, otherwise both command the motors. Once released nothing holds the robot
+  // until this driver's controllers do: support it first.
+  bool releaseMotionControl()
+  {
+    constexpr int kMaxAttempts = 3;
+    ::unitree::robot::b2::MotionSwitcherClient client;
+    client.SetTimeout(5.0F);
+    client.Init();
+    std::string form;
+    std::string mode;
+    for (int attempt = 0; ; ++attempt) {
+      if (client.CheckMode(form, mode) != 0) {
+        RCLCPP_ERROR(
+          core_->logger(), "MotionSwitcherClient::CheckMode failed: is the robot reachable?");
+        return false;
+      }
+      if (mode.empty()) {
+        RCLCPP_INFO(core_->logger(), "built-in motion control is released");
+        return true;
+      }
+      if (attempt == kMaxAttempts) {
+        RCLCPP_ERROR(
+          core_->logger(), "motion mode '%s' is still active after %d release attempts",
+          mode.c_str(), kMaxAttempts);
+        return false;
+      }
+      RCLCPP_INFO(
+        core_->logger(), "releasing built-in motion mode '%s' (form '%s')", mode.c_str(),
+        form.c_str());
+      client.ReleaseMode();
+      std::this_thread::sleep_for(std::chrono::seconds(5));  // as the SDK example does
+    }
+  }
+
+  const UnitreeDdsOptions options_;
+  DriverCore<N, T> * core_{nullptr};
+  LowCmd low_cmd_;  // writer thread: the message sent (constant parts filled in configure())
+  ::unitree::robot::ChannelPublisherPtr<LowCmd> publisher_;
+  ::unitree::robot::ChannelSubscriberPtr<LowState> subscriber_;
+  ::unitree::common::ThreadPtr writer_thread_;
+  std::atomic<uint8_t> state_tag_{0};  // hg mode_machine: from every valid LowState_, echoed back
+  uint64_t crc_error_count_{0};           // listener thread: frames dropped for a bad CRC
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_HPP_

@@ -15,6 +15,7 @@ from .. import transports
 from ..errors import GenerationError
 from .literals import FILTERS
 from .markers import user_region
+from .template_cache import compiled_template_cache
 
 
 def _finalize(value: Any) -> Any:
@@ -40,6 +41,7 @@ def make_environment(root: Path = SOURCE_ROOT) -> jinja2.Environment:
         autoescape=jinja2.select_autoescape(enabled_extensions=("xml.j2", "xacro.j2"),
                                             default_for_string=False, default=False),
         finalize=_finalize,
+        bytecode_cache=compiled_template_cache(),
     )
     env.filters.update(FILTERS)
     env.globals["user_region"] = user_region

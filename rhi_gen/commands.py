@@ -1,0 +1,241 @@
+"""What each command does with its parsed arguments: run the pipeline, apply its plan, print the outcome.
+
+cli.py parses the command line and maps errors to exit codes; each function here takes the parsed
+values and returns the exit code (0 ok, 1 differences found). The pipeline is imported inside each
+command, so `--help` and `--version` stay fast.
+"""
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from .errors import InputWarning, ProjectError, RhiGenError
+
+if TYPE_CHECKING:
+    from .project import Project
+    from .write.changes import FileChange
+    from .write.semantic_diff import RobotDiff
+
+
+def _out(text: str) -> None:
+    sys.stdout.write(text + "\n")
+
+
+def _err(text: str) -> None:
+    sys.stderr.write(text + "\n")
+
+
+def _warn(warnings: Sequence[InputWarning]) -> None:
+    """Warnings go to stderr after the command succeeded: one line each, the command still exits 0."""
+    for w in warnings:
+        _err(f"warning: {w}")
+
+
+def _parse_pairs(values: Sequence[str] | None, option: str) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for value in values or []:
+        if "=" not in value or not value.split("=", 1)[0]:
+            raise RhiGenError(f"expected NAME=VALUE, got {value!r}", key=option,
+                              fix=f"write it as {option} NAME=VALUE (repeat the option for each pair)")
+        name, val = value.split("=", 1)
+        out[name] = val
+    return out
+
+
+def _project(project: Path | None) -> Project:
+    from .project import find_project
+
+    return find_project(project)
+
+
+def _print_changes(changes: Sequence[FileChange], *, verbose: bool) -> dict[str, int]:
+    counts = {"created": 0, "changed": 0, "unchanged": 0, "removed": 0}
+    for c in changes:
+        counts[c.status] += 1
+        if c.status != "unchanged" or verbose:
+            _out(f"  {c.status:<9} {c.path}")
+    return counts
+
+
+def _summary(counts: dict[str, int], *, dry_run: bool = False) -> str:
+    parts = ", ".join(f"{n} {k}" for k, n in counts.items())
+    return f"summary: {parts}" + (" (would be written: dry run)" if dry_run else "")
+
+
+def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg: Sequence[str] | None,
+        package_path: Sequence[str] | None, force: bool, class_prefix: str | None,
+        transport_option: Sequence[str] | None, project: Path | None) -> int:
+    """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
+    from .pipeline.new_robot import plan_new_robot
+    from .write.transaction import apply
+
+    proj = _project(project)
+    plan = plan_new_robot(proj, vendor=vendor, robot=robot, urdf_path=urdf, transport=transport,
+                          xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
+                          package_paths=_parse_pairs(package_path, "--package-path"), force=force,
+                          class_prefix=class_prefix,
+                          transport_options=_parse_pairs(transport_option, "--transport-option"))
+    apply(proj.root, plan.changes)
+    m = plan.robot.model
+    _out(f"wrote {plan.yaml_relpath}: {len(m.joints)} joints, {m.motor_count} motors, "
+         f"transport {m.transport}, {m.float_type}")
+    inputs = {plan.yaml_relpath}
+    if plan.copy is not None:
+        _out(plan.copy.note(plan.yaml_relpath))
+        inputs.add(plan.copy.rel)
+    counts = _print_changes([c for c in plan.changes if c.path not in inputs], verbose=False)
+    _out(_summary(counts))
+    _out(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
+    _warn(plan.warnings)
+    return 0
+
+
+def _use_colour() -> bool:
+    """Colour only for a person at a terminal: stdout is a TTY and NO_COLOR is not set."""
+    return "NO_COLOR" not in os.environ and sys.stdout.isatty()
+
+
+def _bold(text: str, colour: bool) -> str:
+    return f"\x1b[1m{text}\x1b[0m" if colour else text
+
+
+def _print_robot_diffs(diffs: Sequence[RobotDiff], colour: bool, prefix: str = "") -> None:
+    for d in diffs:
+        first, *rest = d.lines()
+        _out(_bold(prefix + first, colour))
+        for line in rest:
+            _out(line)
+
+
+def _print_file_diffs(changes: Sequence[FileChange], colour: bool) -> None:
+    from .write.diff_text import colour_diff, unified_diff
+
+    for c in changes:
+        if c.status != "unchanged":
+            text = unified_diff(c, prefix="generated/")
+            sys.stdout.write(colour_diff(text) if colour else text)
+    sys.stdout.flush()
+
+
+def _version_line(old: str, new: str) -> str:
+    return (f"generated/ was made by rhi-gen {old}, not by this rhi-gen {new}: `rhi-gen generate` records "
+            "the new version and rewrites only files whose content changes")
+
+
+def generate(*, robots: Sequence[str] | None, dry_run: bool, verbose: bool, force: bool,
+             project: Path | None) -> int:
+    """(Re)generate generated/robot_hardware_interface; a hand-edited file blocks the run unless force."""
+    from .pipeline.existing_tags import existing_tag_warnings
+    from .pipeline.generate import plan_generation
+    from .pipeline.load import load_selected
+    from .write.backups import BACKUP_DIR, BACKUP_MARKERS
+    from .write.transaction import apply
+
+    proj = _project(project)
+    loaded, only = load_selected(proj, robots, progress=_out if verbose else None)
+    plan = plan_generation(proj, loaded, only, force=force)
+    if plan.blocked and not force:
+        if len(plan.blocked) > 1:  # the details on stdout; stderr gets the one error line
+            for b in plan.blocked:
+                _out(f"blocked: {b.note()}")
+        raise plan.blocked_error()
+    counts = _print_changes([*plan.files, plan.manifest_change], verbose=verbose)
+    if not dry_run:
+        apply(proj.generated_dir, plan.changes)
+    for c in plan.backups:
+        if c.path not in BACKUP_MARKERS:
+            original = c.path[len(BACKUP_DIR) + 1:].rsplit(".", 1)[0]
+            _out(f"  {'would keep' if dry_run else 'kept'} your version of {original} in generated/{c.path}")
+    names = ", ".join(f"{r.model.vendor}/{r.model.robot} ({len(r.model.joints)} joints)" for r in loaded)
+    _out(f"robots: {names}")
+    _out(_summary(counts, dry_run=dry_run))
+    _warn(existing_tag_warnings(loaded if only is None else only))
+    return 0
+
+
+def diff(*, robots: Sequence[str] | None, project: Path | None) -> int:
+    """Explain what `generate` would change: robot terms first, then the file diff; 1 when it would."""
+    from .pipeline.generate import plan_generation
+    from .pipeline.load import load_selected
+
+    proj = _project(project)
+    loaded, only = load_selected(proj, robots)
+    plan = plan_generation(proj, loaded, only)
+    colour = _use_colour()
+    if plan.other_version:
+        _out(_version_line(plan.other_version, plan.generator_version))
+    _print_robot_diffs(plan.robot_diffs, colour)
+    files = [c for c in plan.files if c.status != "unchanged"]
+    if files:
+        _out("")
+    _print_file_diffs(files, colour)
+    for b in plan.blocked:
+        _err(f"note: `rhi-gen generate` would refuse: {b.note()} -> {b.fix}")
+    if not plan.differs:
+        _err("nothing to regenerate: generated/ matches the inputs")
+        return 0
+    extra = " and generated/.rhi-gen-manifest" if plan.manifest_change.status != "unchanged" else ""
+    _err(f"{len(files)} file(s){extra} would change; run `rhi-gen generate"
+         f"{' ' + ' '.join(robots) if robots else ''}` to write them")
+    return 1
+
+
+def check(*, project: Path | None) -> int:
+    """CI gate: 1 when generated/ is not what `generate` would write now (stale inputs, a file, a version)."""
+    from .pipeline.generate import plan_generation
+    from .pipeline.load import load_robots
+
+    proj = _project(project)
+    loaded = load_robots(proj)
+    if not loaded:
+        raise ProjectError("no robots found", file=proj.relative(proj.robots_dir), fix="add one with `rhi-gen new`")
+    plan = plan_generation(proj, loaded)
+    colour = _use_colour()
+    stale = plan.stale
+    if plan.old_manifest is None:
+        _out(_bold("stale: generated/.rhi-gen-manifest is missing (never generated, or generated by an "
+                   "older rhi-gen)", colour))
+    else:
+        if plan.other_version:
+            _out(_bold(_version_line(plan.other_version, plan.generator_version), colour))
+        _print_robot_diffs(stale, colour, prefix="stale: ")
+    files = [c for c in plan.files if c.status != "unchanged"]
+    _print_file_diffs(files, colour)
+    if plan.manifest_change.status != "unchanged" and not stale and plan.old_manifest is not None \
+            and not plan.other_version:
+        _out("generated/.rhi-gen-manifest differs from what `rhi-gen generate` would write")
+    for b in plan.blocked:
+        _out(f"hand edit: {b.note()}")
+    if not plan.differs and not stale:
+        _out(f"generated/ is up to date ({len(loaded)} robots)")
+        return 0
+    _err(f"generated/ is stale: {len(stale)} robot(s) with changed inputs, {len(files)} file(s) differ; "
+         "run `rhi-gen diff` to review, then `rhi-gen generate`")
+    return 1
+
+
+def inspect(*, urdf: Path, vendor: str | None, robot: str | None, xacro_arg: Sequence[str] | None,
+            package_path: Sequence[str] | None) -> int:
+    """Show actuated joints, types, limits, mimic joints and the suggested joint map."""
+    from .inputs import wording
+    from .inputs.inspect_report import inspect_text
+    from .inputs.urdf_loader import load_urdf
+
+    robot_model = load_urdf(urdf, xacro_args=_parse_pairs(xacro_arg, "--xacro-arg"),
+                            package_paths={k: Path(v) for k, v in _parse_pairs(package_path, "--package-path").items()},
+                            display_path=str(urdf), wording=wording.CLI)
+    sys.stdout.write(inspect_text(robot_model, vendor=vendor, robot=robot))
+    return 0
+
+
+def list_robots(*, project: Path | None) -> int:
+    """List the robots of the project."""
+    from .project import robot_yamls
+
+    proj = _project(project)
+    for path in robot_yamls(proj):
+        _out(f"{path.parent.name}/{path.stem}  ({proj.relative(path)})")
+    return 0

@@ -99,8 +99,9 @@ def render_package(models: Sequence[RobotModel],
                                       "of the package already generates", fix="rename the robot or vendor")
             plan[out] = _render_one(env, template, {"banner": banner, "robot": robot, "robots": robots}, out)
 
+    copied = {out for _, out in static}  # byte for byte: their sources are already folded (a test keeps them so)
     for path in plan:
         assert not PurePosixPath(path).is_absolute() and ".." not in PurePosixPath(path).parts
-        if path.endswith((".hpp", ".cpp")):
+        if path.endswith((".hpp", ".cpp")) and path not in copied:
             plan[path] = fold_cpp(plan[path])
     return dict(sorted(plan.items()))

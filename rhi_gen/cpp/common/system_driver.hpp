@@ -90,7 +90,8 @@ public:
     const size_t limp = core_.jointsWithoutDefaultStiffness();
     if (limp > 0) {
       RCLCPP_WARN(
-        core_.logger(), "%zu position-commanded joint(s) have no default stiffness (default_gains of "
+        core_.logger(),
+        "%zu position-commanded joint(s) have no default stiffness (default_gains of "
         "the vendor YAML): a controller that claims only their position leaves them limp", limp);
     }
     return CallbackReturn::SUCCESS;

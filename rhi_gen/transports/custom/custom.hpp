@@ -72,7 +72,8 @@ public:
   {
     if (options_.unfilled_region != nullptr) {
       RCLCPP_ERROR(
-        core_->logger(), "custom transport: region '%s' of %s is not filled in: refusing to activate "
+        core_->logger(),
+          "custom transport: region '%s' of %s is not filled in: refusing to activate "
         "(write the SDK calls there and delete its RHI_CUSTOM_NOT_FILLED_IN line)",
         options_.unfilled_region, options_.source_file);
       return false;
@@ -159,7 +160,8 @@ protected:
       return;
     }
     if (!fill(imu_scratch_) ||
-      !allFinite(imu_scratch_.quat[0], imu_scratch_.quat[1], imu_scratch_.quat[2], imu_scratch_.quat[3]) ||
+      !allFinite(imu_scratch_.quat[0], imu_scratch_.quat[1], imu_scratch_.quat[2],
+        imu_scratch_.quat[3]) ||
       !allFinite(imu_scratch_.omega[0], imu_scratch_.omega[1], imu_scratch_.omega[2]) ||
       !allFinite(imu_scratch_.acc[0], imu_scratch_.acc[1], imu_scratch_.acc[2]))
     {

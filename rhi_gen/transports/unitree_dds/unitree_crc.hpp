@@ -134,7 +134,8 @@ constexpr uint32_t powerOfXMod(size_t n)
   return r;
 }
 
-inline constexpr std::array<uint32_t, 4> kAllBits{0xFFFFFFFFU, 0xFFFFFFFFU, 0xFFFFFFFFU, 0xFFFFFFFFU};
+inline constexpr std::array<uint32_t, 4> kAllBits{0xFFFFFFFFU, 0xFFFFFFFFU, 0xFFFFFFFFU,
+  0xFFFFFFFFU};
 
 inline bool cpuHasClmul()
 {

@@ -7,7 +7,8 @@
 #define ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_GO_HPP_
 
 // unitree_sdk2's "go" low-level messages (Go2, Go2-W, B2, B2-W, the original H1): 20 motor slots,
-// head/level_flag framing, CRC-protected LowCmd_ / LowState_ (IDL folder go2, namespace unitree_go).
+// head/level_flag framing, CRC-protected LowCmd_ / LowState_ (IDL folder go2, namespace
+// unitree_go).
 
 #include <array>
 #include <cstddef>

@@ -16,8 +16,8 @@ from .. import transports
 from ..errors import ConfigError
 from ..model import FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
-from .validator import Validator
-from .yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
+from ..typed_yaml.validator import Validator
+from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",

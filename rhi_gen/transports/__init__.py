@@ -5,8 +5,8 @@ subclass, see base.py, and a ``TRANSPORT`` instance), its C++ header(s) ``<name>
 copied into every package that uses the transport) and ``glue.j2`` (the template of what a robot's
 source passes to it), then add it to ``_ALL`` below. A glue template may also define
 ``definitions(N, T)``: C++ the robot's source emits before ``using Transport`` (custom: the transport
-class holding the user's SDK regions). Validation, defaults, `rhi-gen new`, the package's dependency lists and the CLI's help all
-read the registry.
+class holding the user's SDK regions). Validation, defaults, `rhi-gen new`, the package's dependency
+lists and the CLI's help all read the registry.
 """
 from __future__ import annotations
 

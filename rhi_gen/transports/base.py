@@ -15,8 +15,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from ..inputs.validator import Validator
 from ..model import TransportOptions
+from ..typed_yaml.validator import Validator
 
 # Packages every driver needs, whatever its transport.
 COMMON_DEPENDENCIES = ("hardware_interface", "pluginlib", "rclcpp", "rclcpp_lifecycle")

@@ -11,8 +11,8 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from ...errors import ConfigError
-from ...inputs.validator import Validator
 from ...model import MAX_MOTORS, JointGroup, QosConfig, TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
 from ..ros_topics import qos_line, read_qos
 

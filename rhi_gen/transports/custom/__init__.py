@@ -19,8 +19,8 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from ...inputs.validator import Validator
 from ...model import TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import KnownRobot, Transport, transport_header
 
 NAME = "custom"

@@ -9,8 +9,8 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from ...inputs.validator import Validator
 from ...model import QosConfig, TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
 from ..ros_topics import qos_line, read_qos
 

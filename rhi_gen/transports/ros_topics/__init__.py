@@ -3,8 +3,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from ...inputs.validator import Validator
 from ...model import QosConfig
+from ...typed_yaml.validator import Validator
 
 QOS_KEYS = ("reliability", "durability", "depth")
 

@@ -14,8 +14,8 @@ from dataclasses import replace
 from typing import Any
 
 from ...errors import ConfigError
-from ...inputs.validator import Validator
 from ...model import TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import PLAIN_CMAKE, Dependency, KnownRobot, Transport, transport_header
 
 NAME = "unitree_dds"

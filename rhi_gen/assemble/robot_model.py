@@ -12,10 +12,10 @@ from pathlib import Path
 
 from .. import transports
 from ..errors import ConfigError, UrdfError
-from .config import VendorConfig
-from .naming import joint_name_problem, pascal_case, suggest, upper_snake
-from .robot import InputProvenance, MotorJoint, RobotModel
-from .urdf import UrdfJoint, UrdfRobot
+from ..model.config import VendorConfig
+from ..model.naming import joint_name_problem, pascal_case, suggest, upper_snake
+from ..model.robot import InputProvenance, MotorJoint, RobotModel
+from ..model.urdf import UrdfJoint, UrdfRobot
 
 
 def sha256_hex(data: bytes) -> str:

@@ -29,8 +29,14 @@ PLAIN_CMAKE = "plain_cmake"      # a plain CMake package: no package.xml, no ros
 
 @dataclass(frozen=True)
 class Dependency:
+    """A package a transport's driver needs: CMakeLists.txt and package.xml declare it from this alone
+    (render/views.py), and only in a package where a robot uses the transport."""
     name: str
     source: str  # ROSDISTRO | VENDOR_SOURCE | PLAIN_CMAKE
+    # PLAIN_CMAKE only (a ROS package is found by find_package(name) and linked by ${name_TARGETS}):
+    cmake_find: str = ""    # the CMakeLists.txt lines that find it and set cmake_target
+    cmake_target: str = ""  # the CMake variable holding its imported target ("" = not found)
+    package_xml_note: tuple[str, ...] = ()  # package.xml's comment in its place: why it is not declared
 
 
 @dataclass(frozen=True)

@@ -43,7 +43,7 @@ class Custom(Transport):
     shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "custom.hpp"))
 
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
-        return TransportOptions(sdk_slots=motor_count)
+        return TransportOptions(sdk_slots=motor_count)  # no options of its own
 
     def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
                         given: Mapping[str, str] | None = None) -> list[str]:

@@ -2,7 +2,8 @@
 
 - ``UrdfRobot``    what the URDF says (model/urdf.py, read by inputs/urdf_loader.py)
 - ``VendorConfig`` what the vendor YAML says (model/config.py, read by inputs/vendor_config.py)
-- ``RobotModel``   both cross-checked, every C++ name decided (model/robot.py, made by model/build.py);
+- ``RobotModel``   both cross-checked, every C++ name decided (model/robot.py, made by
+  assemble/robot_model.py, the stage above the transports);
   the templates read only this.
 """
 from .config import (

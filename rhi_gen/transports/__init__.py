@@ -1,4 +1,4 @@
-"""The transport registry: every transport rhi-gen can generate, one module each.
+"""The transport registry: every transport rhi-gen can generate, one folder each.
 
 Adding a transport: make its folder ``transports/<name>/`` holding ``__init__.py`` (a ``Transport``
 subclass, see base.py, and a ``TRANSPORT`` instance), its C++ header(s) ``<name>.hpp`` (the logic,

@@ -1,12 +1,14 @@
-"""What a transport is: the interface every module in transports/ implements.
+"""What a transport is: the interface every folder in transports/ implements.
 
 A transport is how a generated driver talks to its robot (a vendor SDK over DDS, or ROS 2 topics).
-Everything rhi-gen knows about one transport lives in its own module: the YAML options it accepts
-(with validation and defaults), its default float type, the packages its driver needs, the files it
-adds to the package once, the ``transport_options`` lines `rhi-gen new` writes, and the vendor robots
-whose real SDK motor order is known. Its C++ logic lives next to it in ``transports/<name>/<name>.hpp``
-(a plain header, copied once into every package that uses it) and its per-robot glue (the options a
-robot's source passes to it) in the template ``transports/<name>/glue.j2``, found by name.
+Everything rhi-gen knows about one transport lives in its own folder's ``__init__.py``: the YAML
+options it accepts (its ``TransportOptions`` subclass, with validation and defaults), its default
+float type, the packages its driver needs (``Dependency``: how CMakeLists.txt and package.xml
+declare each, render/views.py), the files it adds to the package once, the ``transport_options``
+lines `rhi-gen new` writes, and the vendor robots whose real SDK motor order is known. Its C++ logic
+lives next to it in ``transports/<name>/<name>.hpp`` (a plain header, copied once into every package
+that uses it) and its per-robot glue (the options a robot's source passes to it) in the template
+``transports/<name>/glue.j2``, found by name.
 """
 from __future__ import annotations
 

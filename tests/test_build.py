@@ -6,11 +6,11 @@ from pathlib import Path
 
 import pytest
 
-from rhi_gen.model.build import build_model
-from rhi_gen.model.naming import joint_name_problem
+from rhi_gen.assemble.robot_model import build_model
 from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.urdf_loader import load_urdf, parse_urdf_bytes
 from rhi_gen.inputs.vendor_config import load_config
+from rhi_gen.model.naming import joint_name_problem
 
 FIXTURES = Path(__file__).parent / "fixtures" / "urdf"
 

@@ -13,7 +13,7 @@ import pytest
 
 import rhi_gen
 from rhi_gen.cli import main
-from rhi_gen.inputs.yaml_source import content_sha256, parse_yaml_text
+from rhi_gen.typed_yaml.yaml_source import content_sha256, parse_yaml_text
 
 REPO = Path(__file__).resolve().parents[1]
 PACKAGE = "generated/robot_hardware_interface"

@@ -9,9 +9,9 @@ import yaml
 
 from rhi_gen import transports
 from rhi_gen.errors import ConfigError
-from rhi_gen.inputs.validator import Validator
-from rhi_gen.inputs.yaml_source import parse_yaml_text
 from rhi_gen.model import TransportOptions
+from rhi_gen.typed_yaml.validator import Validator
+from rhi_gen.typed_yaml.yaml_source import parse_yaml_text
 
 SOURCES = Path(__file__).resolve().parents[1] / "rhi_gen"  # render/environment.py SOURCE_ROOT
 

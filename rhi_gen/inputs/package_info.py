@@ -9,8 +9,8 @@ import re
 from pathlib import Path
 
 from ..model import PackageInfo
-from .validator import Validator
-from .yaml_source import parse_yaml_text, read_text
+from ..typed_yaml.validator import Validator
+from ..typed_yaml.yaml_source import parse_yaml_text, read_text
 
 FILE_NAME = "package.yaml"
 KEYS = ("copyright", "license", "maintainer", "maintainer_email")

@@ -14,8 +14,8 @@ from .. import transports
 from ..errors import ConfigError, UrdfError
 from ..model import MAX_MOTORS, UrdfJoint, UrdfRobot
 from ..model.naming import joint_name_problem
-from ..render.literals import yaml_string
 from ..transports import KnownRobot
+from ..typed_yaml.yaml_source import yaml_string
 
 
 def _limits_comment(joint: UrdfJoint) -> str:

@@ -1,7 +1,7 @@
 """The <ros2_control> blocks a URDF already has, as :class:`~rhi_gen.model.Ros2ControlBlock`.
 
 Read as they are (names, type, hardware plugin, joints and their interfaces), without judging
-them: ``model/build.py`` applies ros2_control's rules to them and ``pipeline/existing_tags.py``
+them: ``assemble/robot_model.py`` applies ros2_control's rules to them and ``pipeline/existing_tags.py``
 decides what to warn about. rhi-gen reads no <transmission>.
 """
 from __future__ import annotations

@@ -1,8 +1,8 @@
 """Load and validate a vendor YAML into a VendorConfig: the top-level schema.
 
 Every problem is a ConfigError naming the file, the line, the key and the fix. ``transport_options``
-belong to the robot's transport (transports/<name>.py); checks that need the URDF (joint names
-exist, every actuated joint mapped) live in model/build.py.
+belong to the robot's transport (transports/<name>/); checks that need the URDF (joint names
+exist, every actuated joint mapped) live in assemble/robot_model.py.
 """
 from __future__ import annotations
 
@@ -16,8 +16,8 @@ from .. import transports
 from ..errors import ConfigError
 from ..model import FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
-from .validator import Validator
-from .yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
+from ..typed_yaml.validator import Validator
+from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
@@ -36,7 +36,7 @@ SENSOR_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,63}$")
 
 
 def load_config(path: str | Path, *, display_path: str | None = None) -> VendorConfig:
-    """Read and validate one vendor YAML (URDF cross-checks happen in model/build.py)."""
+    """Read and validate one vendor YAML (URDF cross-checks happen in assemble/robot_model.py)."""
     path = Path(path)
     shown = display_path or str(path)
     text = read_text(path, shown)

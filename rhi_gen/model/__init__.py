@@ -2,17 +2,16 @@
 
 - ``UrdfRobot``    what the URDF says (model/urdf.py, read by inputs/urdf_loader.py)
 - ``VendorConfig`` what the vendor YAML says (model/config.py, read by inputs/vendor_config.py)
-- ``RobotModel``   both cross-checked, every C++ name decided (model/robot.py, made by model/build.py);
+- ``RobotModel``   both cross-checked, every C++ name decided (model/robot.py, made by
+  assemble/robot_model.py, the stage above the transports);
   the templates read only this.
 """
 from .config import (
     FLOAT_TYPES,
     MAX_MOTORS,
     ImuConfig,
-    JointGroup,
     PackageInfo,
     Parameters,
-    QosConfig,
     TransportOptions,
     VendorConfig,
 )
@@ -33,13 +32,11 @@ __all__ = [
     "MAX_MOTORS",
     "ImuConfig",
     "InputProvenance",
-    "JointGroup",
     "JointLimits",
     "Mimic",
     "MotorJoint",
     "PackageInfo",
     "Parameters",
-    "QosConfig",
     "RobotModel",
     "Ros2ControlBlock",
     "Ros2ControlJoint",

@@ -1,7 +1,8 @@
 """What the vendor YAML says, validated: plain frozen data, no I/O.
 
-Built by inputs/vendor_config.py (the transport_options by the robot's transport module in
-transports/); cross-checked against the URDF by model/build.py.
+Built by inputs/vendor_config.py (the transport_options by the robot's transport, whose options
+subclass of ``TransportOptions`` lives in its folder transports/<name>/); cross-checked against the
+URDF by assemble/robot_model.py.
 """
 from __future__ import annotations
 
@@ -42,45 +43,16 @@ class ImuConfig:
 
 
 @dataclass(frozen=True)
-class QosConfig:
-    reliability: str = "best_effort"  # best_effort | reliable
-    durability: str = "volatile"      # volatile | transient_local
-    depth: int = 1
-
-
-@dataclass(frozen=True)
-class JointGroup:
-    """A contiguous slice of SDK slots published/subscribed on its own topics (AgiBot)."""
-    name: str
-    size: int
-    command_topic: str
-    state_topic: str
-    offset: int = 0  # first global slot index of this group (decided by the transport)
-
-
-@dataclass(frozen=True)
 class TransportOptions:
-    """Union of every transport's options; the robot's transport module fills the ones it uses.
+    """What every transport's options have in common; each transport subclasses it in its own folder
+    (transports/<name>/: its fields, their defaults and validation), and the robot's transport fills
+    the subclass. Templates read the fields by name: ``robot.transport_options.<field>``."""
+    sdk_slots: int = 0  # motor slots of the SDK message (the motor count where the SDK has no fixed size)
 
-    One flat type (rather than one per transport) because the templates read these fields by name.
-    """
-    # unitree_dds
-    family: str = "hg"                 # hg (G1, H1-2) | go (H1, Go2, Go2-W, B2, B2-W) low-level messages
-    motor_modes: tuple[int, ...] = ()  # go: MotorCmd_.mode of every slot (0x01 servo, 0x0A strong motor)
-    verify_state_crc: bool = True      # drop LowState_ frames whose crc does not match
-    lowcmd_topic: str = "rt/lowcmd"
-    lowstate_topic: str = "rt/lowstate"
-    sdk_slots: int = 35
-    domain_id: int = 0
-    mode_pr: int = 0
-    release_motion_control: bool = False
-    # ROS 2 topic transports
-    command_topic: str = ""
-    state_topic: str = ""
-    imu_topic: str = ""
-    groups: tuple[JointGroup, ...] = ()
-    qos: QosConfig = field(default_factory=QosConfig)
-    parallel_parser_type: int = 0  # engineai: 0 CLASSIC_PARSER, 1 RL_PARSER
+    def joint_group(self, index: int) -> tuple[str, int] | None:
+        """(group name, position in the group) of SDK slot ``index``, for a transport that groups its
+        slots (AgiBot); None by default."""
+        return None
 
 
 @dataclass(frozen=True)
@@ -105,6 +77,6 @@ class VendorConfig:
     default_gains: tuple[tuple[str, float, float], ...] = ()
     # joint -> "position" | "velocity" (YAML command_modes); continuous joints default to velocity
     command_modes: tuple[tuple[str, str], ...] = ()
-    # sha256 of the parsed YAML content (inputs/yaml_source.content_sha256): comments and layout do not count
+    # sha256 of the parsed YAML content (typed_yaml/yaml_source.content_sha256): comments and layout do not count
     content_sha256: str = ""
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

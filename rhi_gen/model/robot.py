@@ -1,6 +1,6 @@
 """The decided robot: URDF and vendor YAML cross-checked, every C++ name chosen.
 
-Built by model/build.py; the templates read only this (see docs/ARCHITECTURE.md "Template context").
+Built by assemble/robot_model.py; the templates read only this (see docs/ARCHITECTURE.md "Template context").
 """
 from __future__ import annotations
 

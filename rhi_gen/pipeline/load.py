@@ -6,12 +6,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .. import transports
+from ..assemble.robot_model import build_model
 from ..errors import ConfigError, ProjectError
 from ..inputs import package_info
 from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import load_config
 from ..model import PackageInfo, RobotModel, UrdfRobot, VendorConfig
-from ..model.build import build_model
 from ..project import PACKAGE_NAME, Project, check_layout, robot_yamls, select_yamls
 from ..render.package import COMMON_FILES, PACKAGE_FILES, TEST_FILES, robot_paths
 

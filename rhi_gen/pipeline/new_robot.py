@@ -4,15 +4,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..assemble.robot_model import build_model
 from ..errors import ConfigError, InputWarning, ProjectError, WriteBlockedError
 from ..inputs import wording
 from ..inputs.scaffold import relative_urdf_path, suggest_yaml
 from ..inputs.urdf_loader import is_xacro, load_urdf
 from ..inputs.vendor_config import config_from_data
-from ..inputs.yaml_source import parse_yaml_text
 from ..model import UrdfRobot
-from ..model.build import build_model
 from ..project import PACKAGE_NAME, Project, robot_yamls, validate_names
+from ..typed_yaml.yaml_source import parse_yaml_text
 from ..write.changes import FileChange, compare
 from .existing_tags import existing_tag_warning
 from .generate import plan_generation

@@ -11,7 +11,6 @@ from typing import Any
 
 import jinja2
 
-from .. import transports
 from ..errors import GenerationError
 from .literals import FILTERS
 from .markers import user_region
@@ -45,6 +44,4 @@ def make_environment(root: Path = SOURCE_ROOT) -> jinja2.Environment:
     )
     env.filters.update(FILTERS)
     env.globals["user_region"] = user_region
-    # The package's dependency lists, from each transport's module (same names as package/_deps.j2).
-    env.globals["deps"] = transports.dependency_tables()
     return env

@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 import re
 
+from ..typed_yaml.yaml_source import yaml_string
+
 _CPP_ESCAPES = {"\\": "\\\\", '"': '\\"', "\n": "\\n", "\r": "\\r", "\t": "\\t", "?": "\\?"}
 
 
@@ -48,25 +50,6 @@ def header_guard(relpath: str) -> str:
     """The ROS 2 include guard of a header below include/, as ament_cpplint expects it:
     folders joined by ``__``, e.g. ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_."""
     return "__".join(re.sub(r"[^A-Za-z0-9]", "_", part).upper() for part in relpath.split("/")) + "_"
-
-
-def yaml_string(text: str) -> str:
-    """A double-quoted, ASCII-only YAML scalar that reads back as exactly ``text``."""
-    out = ['"']
-    for ch in str(text):
-        code = ord(ch)
-        if ch in ('"', "\\"):
-            out.append("\\" + ch)
-        elif 0x20 <= code < 0x7F:
-            out.append(ch)
-        elif code <= 0xFF:
-            out.append(f"\\x{code:02x}")
-        elif code <= 0xFFFF:
-            out.append(f"\\u{code:04x}")
-        else:
-            out.append(f"\\U{code:08x}")
-    out.append('"')
-    return "".join(out)
 
 
 def xml_escape(text: str) -> str:

@@ -18,6 +18,7 @@ from .banner import SHARED_INPUTS, banner_for, package_inputs, robot_inputs
 from .cpp_layout import fold_cpp
 from .environment import make_environment
 from .static_files import copy_static
+from .views import controllers_view, package_view, xacro_view
 
 DEFAULT_PACKAGE = PackageInfo()
 
@@ -43,6 +44,13 @@ ROBOT_FILES = (
     ("templates/robot/controllers.yaml.j2", "config/{robot}_controllers.yaml"),
     ("templates/robot/test.cpp.j2", "test/test_{robot}_hardware_interface.cpp"),
 )
+
+
+# The view-model (render/views.py) each robot template gets as ``view``, beside ``robot``.
+ROBOT_VIEWS: dict[str, Callable[[RobotModel], object]] = {
+    "templates/robot/controllers.yaml.j2": controllers_view,
+    "templates/robot/ros2_control.xacro.j2": xacro_view,
+}
 
 
 def robot_paths(vendor: str, robot: str) -> tuple[str, ...]:
@@ -86,9 +94,10 @@ def render_package(models: Sequence[RobotModel],
         plan[out] = copy_static(env, source, shared_banner, out)
 
     package_banner = banner_for(package_inputs(robots), package)
+    view = package_view(robots)
     for template, out in PACKAGE_FILES:
-        plan[out] = _render_one(env, template, {"banner": package_banner, "robots": robots, "package": package},
-                                out)
+        plan[out] = _render_one(env, template, {"banner": package_banner, "robots": robots, "package": package,
+                                                "view": view}, out)
 
     for robot in robots:
         banner = banner_for(robot_inputs(robot), package)
@@ -97,7 +106,10 @@ def render_package(models: Sequence[RobotModel],
             if out in plan:  # e.g. vendor "common" + robot "types": never overwrite silently
                 raise GenerationError(f"{robot.vendor}/{robot.robot} would overwrite {out}, which another part "
                                       "of the package already generates", fix="rename the robot or vendor")
-            plan[out] = _render_one(env, template, {"banner": banner, "robot": robot, "robots": robots}, out)
+            context = {"banner": banner, "robot": robot, "robots": robots}
+            if template in ROBOT_VIEWS:
+                context["view"] = ROBOT_VIEWS[template](robot)
+            plan[out] = _render_one(env, template, context, out)
 
     copied = {out for _, out in static}  # byte for byte: their sources are already folded (a test keeps them so)
     for path in plan:

@@ -1,12 +1,14 @@
-"""What a transport is: the interface every module in transports/ implements.
+"""What a transport is: the interface every folder in transports/ implements.
 
 A transport is how a generated driver talks to its robot (a vendor SDK over DDS, or ROS 2 topics).
-Everything rhi-gen knows about one transport lives in its own module: the YAML options it accepts
-(with validation and defaults), its default float type, the packages its driver needs, the files it
-adds to the package once, the ``transport_options`` lines `rhi-gen new` writes, and the vendor robots
-whose real SDK motor order is known. Its C++ logic lives next to it in ``transports/<name>/<name>.hpp``
-(a plain header, copied once into every package that uses it) and its per-robot glue (the options a
-robot's source passes to it) in the template ``transports/<name>/glue.j2``, found by name.
+Everything rhi-gen knows about one transport lives in its own folder's ``__init__.py``: the YAML
+options it accepts (its ``TransportOptions`` subclass, with validation and defaults), its default
+float type, the packages its driver needs (``Dependency``: how CMakeLists.txt and package.xml
+declare each, render/views.py), the files it adds to the package once, the ``transport_options``
+lines `rhi-gen new` writes, and the vendor robots whose real SDK motor order is known. Its C++ logic
+lives next to it in ``transports/<name>/<name>.hpp`` (a plain header, copied once into every package
+that uses it) and its per-robot glue (the options a robot's source passes to it) in the template
+``transports/<name>/glue.j2``, found by name.
 """
 from __future__ import annotations
 
@@ -15,8 +17,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from ..inputs.validator import Validator
 from ..model import TransportOptions
+from ..typed_yaml.validator import Validator
 
 # Packages every driver needs, whatever its transport.
 COMMON_DEPENDENCIES = ("hardware_interface", "pluginlib", "rclcpp", "rclcpp_lifecycle")
@@ -29,8 +31,14 @@ PLAIN_CMAKE = "plain_cmake"      # a plain CMake package: no package.xml, no ros
 
 @dataclass(frozen=True)
 class Dependency:
+    """A package a transport's driver needs: CMakeLists.txt and package.xml declare it from this alone
+    (render/views.py), and only in a package where a robot uses the transport."""
     name: str
     source: str  # ROSDISTRO | VENDOR_SOURCE | PLAIN_CMAKE
+    # PLAIN_CMAKE only (a ROS package is found by find_package(name) and linked by ${name_TARGETS}):
+    cmake_find: str = ""    # the CMakeLists.txt lines that find it and set cmake_target
+    cmake_target: str = ""  # the CMake variable holding its imported target ("" = not found)
+    package_xml_note: tuple[str, ...] = ()  # package.xml's comment in its place: why it is not declared
 
 
 @dataclass(frozen=True)

@@ -6,7 +6,7 @@ The generated files name only their inputs; every hash and the generator version
   is another version; a new version changes this line only, never a package file whose content
   stays the same.
 - Per robot: the vendor YAML and the URDF, each a project-relative path and a sha256 fingerprint of
-  what rhi-gen reads from it: the YAML's parsed content (inputs/yaml_source.content_sha256: comments,
+  what rhi-gen reads from it: the YAML's parsed content (typed_yaml/yaml_source.content_sha256: comments,
   layout, quoting and key order do not count, so a comment-only edit changes nothing here), the
   URDF after xacro expansion without xacro's volatile header. `check` calls a robot stale when a
   fingerprint differs. Then the robot as the model saw it (motor_count, float_type, one row per

@@ -8,13 +8,14 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from ...errors import ConfigError
-from ...inputs.validator import Validator
-from ...model import MAX_MOTORS, JointGroup, QosConfig, TransportOptions
+from ...model import MAX_MOTORS
+from ...typed_yaml.validator import Validator
 from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
-from ..ros_topics import qos_line, read_qos
+from ..ros_topics import QosConfig, TopicOptions, qos_line, read_qos
 
 NAME = "agibot_topics"
 DEFAULT_GROUPS = (("leg", 12), ("waist", 3), ("arm", 14), ("head", 2))
@@ -31,6 +32,27 @@ _X2_ARM = tuple(f"{side}_{j}_joint" for side in ("left", "right")
 _X2_HEAD = ("head_yaw_joint", "head_pitch_joint")
 X2_GROUPS = (("leg", _X2_LEG), ("waist", _X2_WAIST), ("arm", _X2_ARM), ("head", _X2_HEAD))
 X2_ORDER = _X2_LEG + _X2_WAIST + _X2_ARM + _X2_HEAD
+
+
+@dataclass(frozen=True)
+class JointGroup:
+    """A contiguous slice of SDK slots published/subscribed on its own topics."""
+    name: str
+    size: int
+    command_topic: str
+    state_topic: str
+    offset: int = 0  # first global slot index of this group (decided by the transport)
+
+
+@dataclass(frozen=True)
+class AgibotTopicsOptions(TopicOptions):
+    groups: tuple[JointGroup, ...] = ()
+
+    def joint_group(self, index: int) -> tuple[str, int] | None:
+        for g in self.groups:
+            if g.offset <= index < g.offset + g.size:
+                return g.name, index - g.offset
+        return None
 
 
 def command_topic(group: str) -> str:
@@ -54,9 +76,9 @@ class AgibotTopics(Transport):
                    groups=X2_GROUPS),
     )
 
-    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> AgibotTopicsOptions:
         p = "transport_options"
-        return TransportOptions(
+        return AgibotTopicsOptions(
             groups=_read_groups(v, options.get("groups"), motor_count),
             imu_topic=v.optional(options, p, "imu_topic", v.topic, IMU_TOPIC),
             qos=read_qos(v, options.get("qos"), f"{p}.qos", QosConfig(depth=1)),

@@ -19,8 +19,8 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from ...inputs.validator import Validator
 from ...model import TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import KnownRobot, Transport, transport_header
 
 NAME = "custom"
@@ -43,7 +43,7 @@ class Custom(Transport):
     shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "custom.hpp"))
 
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
-        return TransportOptions(sdk_slots=motor_count)
+        return TransportOptions(sdk_slots=motor_count)  # no options of its own
 
     def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
                         given: Mapping[str, str] | None = None) -> list[str]:

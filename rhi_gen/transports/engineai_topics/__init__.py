@@ -7,17 +7,24 @@ feed_forward_torque, torque, stiffness, damping, parallel_parser_type), /hardwar
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import Any
 
-from ...inputs.validator import Validator
-from ...model import QosConfig, TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
-from ..ros_topics import qos_line, read_qos
+from ..ros_topics import QosConfig, TopicOptions, qos_line, read_qos
 
 NAME = "engineai_topics"
 COMMAND_TOPIC = "/hardware/joint_command"
 STATE_TOPIC = "/hardware/joint_state"
 IMU_TOPIC = "/hardware/imu_info"
+
+
+@dataclass(frozen=True)
+class EngineaiTopicsOptions(TopicOptions):
+    command_topic: str = ""
+    state_topic: str = ""
+    parallel_parser_type: int = 0  # 0 CLASSIC_PARSER, 1 RL_PARSER
 
 # PM01 motor order = interface_protocol array index J00..J23.
 PM01_ORDER = (
@@ -43,9 +50,9 @@ class EngineaiTopics(Transport):
         KnownRobot("engineai", "pm01", NAME, PM01_ORDER, "PM01 motor order = interface_protocol array index J00..J23"),
     )
 
-    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> EngineaiTopicsOptions:
         p = "transport_options"
-        return TransportOptions(
+        return EngineaiTopicsOptions(
             command_topic=v.optional(options, p, "command_topic", v.topic, COMMAND_TOPIC),
             state_topic=v.optional(options, p, "state_topic", v.topic, STATE_TOPIC),
             imu_topic=v.optional(options, p, "imu_topic", v.topic, IMU_TOPIC),

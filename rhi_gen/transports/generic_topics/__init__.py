@@ -6,17 +6,23 @@ on plain ROS 2 topics, so a bridge can connect any robot. JointState carries no 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import Any
 
-from ...inputs.validator import Validator
-from ...model import QosConfig, TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import ROSDISTRO, Dependency, KnownRobot, Transport, transport_header
-from ..ros_topics import qos_line, read_qos
+from ..ros_topics import QosConfig, TopicOptions, qos_line, read_qos
 
 NAME = "generic_topics"
 COMMAND_TOPIC = "/hardware/joint_commands"
 STATE_TOPIC = "/hardware/joint_states"
 IMU_TOPIC = "/hardware/imu"
+
+
+@dataclass(frozen=True)
+class GenericTopicsOptions(TopicOptions):
+    command_topic: str = ""
+    state_topic: str = ""
 
 
 class GenericTopics(Transport):
@@ -30,9 +36,9 @@ class GenericTopics(Transport):
     dependencies = (Dependency("sensor_msgs", ROSDISTRO),)
     shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "generic_topics.hpp"))
 
-    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> GenericTopicsOptions:
         p = "transport_options"
-        result = TransportOptions(
+        result = GenericTopicsOptions(
             command_topic=v.optional(options, p, "command_topic", v.topic, COMMAND_TOPIC),
             state_topic=v.optional(options, p, "state_topic", v.topic, STATE_TOPIC),
             imu_topic=v.optional(options, p, "imu_topic", v.topic, IMU_TOPIC),

@@ -1,12 +1,32 @@
-"""Options shared by the ROS 2 topic transports (QoS); each topic transport imports what it uses."""
+"""What the ROS 2 topic transports share: QoS, the IMU topic, and their options base class.
+
+Not a transport itself (it is in no registry): agibot_topics, engineai_topics, generic_topics and
+custom import from here, and their packages get ros_topics.hpp (the node, executor thread and QoS
+of the C++ side) through their ``shared_files``.
+"""
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from typing import Any
 
-from ...inputs.validator import Validator
-from ...model import QosConfig
+from ...model import TransportOptions
+from ...typed_yaml.validator import Validator
 
 QOS_KEYS = ("reliability", "durability", "depth")
+
+
+@dataclass(frozen=True)
+class QosConfig:
+    reliability: str = "best_effort"  # best_effort | reliable
+    durability: str = "volatile"      # volatile | transient_local
+    depth: int = 1
+
+
+@dataclass(frozen=True)
+class TopicOptions(TransportOptions):
+    """The options every ROS 2 topic transport has (each transport's subclass adds its own)."""
+    imu_topic: str = ""
+    qos: QosConfig = field(default_factory=QosConfig)
 
 
 def read_qos(v: Validator, raw: Any, path: str, default: QosConfig) -> QosConfig:

@@ -10,12 +10,12 @@ headers are shared by every Unitree driver of the package, so they are generated
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 from ...errors import ConfigError
-from ...inputs.validator import Validator
 from ...model import TransportOptions
+from ...typed_yaml.validator import Validator
 from ..base import PLAIN_CMAKE, Dependency, KnownRobot, Transport, transport_header
 
 NAME = "unitree_dds"
@@ -23,6 +23,40 @@ FAMILIES = {"hg": 35, "go": 20}  # message family -> motor slots of its LowCmd_
 FAMILY_ROBOTS = {"hg": "G1, H1-2", "go": "H1, Go2, Go2-W, B2, B2-W"}
 GO_SERVO = 0x01   # MotorCmd_.mode of the go examples ("servo (PMSM) mode")
 GO_STRONG = 0x0A  # the H1's hip/knee/torso motors and the B2's motors in the C++ examples
+
+
+# unitree_sdk2 is a plain CMake package: no package.xml, no rosdep key, a non-namespaced target.
+UNITREE_SDK2 = Dependency("unitree_sdk2", PLAIN_CMAKE, cmake_target="RHI_UNITREE_SDK2_TARGET", cmake_find="""\
+# unitree_sdk2 is a plain CMake package (not a ROS package): install it with
+#   cmake -S unitree_sdk2 -B build -DCMAKE_INSTALL_PREFIX=/opt/unitree_robotics && cmake --build build --target install
+# or point CMAKE_PREFIX_PATH / unitree_sdk2_DIR at its installation. Its config file defines the
+# non-namespaced imported target `unitree_sdk2` (static library) plus the `ddsc`/`ddscxx` CycloneDDS
+# libraries it ships; a namespaced unitree_sdk2::unitree_sdk2 is accepted too.
+find_package(unitree_sdk2 QUIET PATHS /opt/unitree_robotics)
+set(RHI_UNITREE_SDK2_TARGET "")
+if(TARGET unitree_sdk2::unitree_sdk2)
+  set(RHI_UNITREE_SDK2_TARGET unitree_sdk2::unitree_sdk2)
+elseif(TARGET unitree_sdk2)
+  set(RHI_UNITREE_SDK2_TARGET unitree_sdk2)
+endif()
+""", package_xml_note=(
+    "unitree_sdk2 is deliberately not declared: it is a plain CMake package without a",
+    "package.xml and has no rosdep key, so declaring it would make every `rosdep install` fail.",
+    "CMakeLists.txt finds it with find_package(unitree_sdk2) (default prefix /opt/unitree_robotics,",
+    "or set CMAKE_PREFIX_PATH) and skips the Unitree robots when it is missing."))
+
+
+@dataclass(frozen=True)
+class UnitreeDdsOptions(TransportOptions):
+    family: str = "hg"                 # hg (G1, H1-2) | go (H1, Go2, Go2-W, B2, B2-W) low-level messages
+    motor_modes: tuple[int, ...] = ()  # go: MotorCmd_.mode of every slot (0x01 servo, 0x0A strong motor)
+    verify_state_crc: bool = True      # drop LowState_ frames whose crc does not match
+    lowcmd_topic: str = "rt/lowcmd"
+    lowstate_topic: str = "rt/lowstate"
+    sdk_slots: int = 35
+    domain_id: int = 0
+    mode_pr: int = 0
+    release_motion_control: bool = False
 
 # G1 29-DoF motor order, unitree_sdk2 enum G1JointIndex.
 G1_ORDER = (
@@ -108,7 +142,7 @@ class UnitreeDds(Transport):
     option_keys = ("family", "lowcmd_topic", "lowstate_topic", "sdk_slots", "domain_id", "mode_pr",
                    "motor_modes", "release_motion_control", "verify_state_crc")
     default_float_type = "float"
-    dependencies = (Dependency("unitree_sdk2", PLAIN_CMAKE),)
+    dependencies = (UNITREE_SDK2,)
     shared_files = tuple(transport_header(NAME, name) for name in
                          ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp"))
     vendors = ("unitree",)
@@ -116,14 +150,14 @@ class UnitreeDds(Transport):
     motor_slots = FAMILIES["hg"]
     slots_holder = "a unitree hg LowCmd_"
 
-    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:
+    def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> UnitreeDdsOptions:
         p = "transport_options"
         family = v.optional(options, p, "family", lambda x, q: v.choice(x, q, tuple(FAMILIES)), "")
         sdk_slots = v.optional(options, p, "sdk_slots", v.integer_in(1, 1024), 0)
         modes: tuple[int, ...] = ()
         if "motor_modes" in options:
             modes = self._motor_modes(v, options["motor_modes"], f"{p}.motor_modes")
-        return TransportOptions(
+        return UnitreeDdsOptions(
             family=family,
             motor_modes=modes,
             verify_state_crc=v.optional(options, p, "verify_state_crc", v.boolean, True),
@@ -143,8 +177,9 @@ class UnitreeDds(Transport):
         return tuple(v.integer(item, f"{path}[{i}]", 0, 255) for i, item in enumerate(raw))
 
     def resolve_options(self, v: Validator, options: TransportOptions, *, vendor: str, robot: str,
-                        motor_count: int) -> TransportOptions:
+                        motor_count: int) -> UnitreeDdsOptions:
         """The message family (a known robot's, else the YAML must name it), its slot count and motor modes."""
+        assert isinstance(options, UnitreeDdsOptions)  # made by read_options
         p = "transport_options"
         known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
         family = options.family or (known.family if known else "")

@@ -4,7 +4,9 @@ Every key path ("imu.frame_id", "transport_options.groups[2].name") keeps its li
 errors can name file:line. Scalars keep their raw text next to their YAML 1.1 meaning, because a few
 values (xacro arguments) are passed on as written. ``content_sha256`` fingerprints what the tree
 says, not how the file spells it: comments, blank lines, indentation, quoting and key order do
-not count, so a comment-only edit changes no generated file and no manifest entry.
+not count, so a comment-only edit changes no generated file and no manifest entry. The way back
+is here too: ``yaml_string`` writes a scalar that reads back as exactly the text it was given
+(`rhi-gen new`'s YAML, the controllers YAML's joint names).
 """
 from __future__ import annotations
 
@@ -158,3 +160,22 @@ def content_sha256(data: dict[str, Any]) -> str:
     """sha256 of what a parsed YAML tree says (see the module docstring); stable across machines."""
     text = json.dumps(_canonical(data), sort_keys=True, ensure_ascii=True, separators=(",", ":"))
     return hashlib.sha256(text.encode("ascii")).hexdigest()
+
+
+def yaml_string(text: str) -> str:
+    """A double-quoted, ASCII-only YAML scalar that reads back as exactly ``text``."""
+    out = ['"']
+    for ch in str(text):
+        code = ord(ch)
+        if ch in ('"', "\\"):
+            out.append("\\" + ch)
+        elif 0x20 <= code < 0x7F:
+            out.append(ch)
+        elif code <= 0xFF:
+            out.append(f"\\x{code:02x}")
+        elif code <= 0xFFFF:
+            out.append(f"\\u{code:04x}")
+        else:
+            out.append(f"\\U{code:08x}")
+    out.append('"')
+    return "".join(out)

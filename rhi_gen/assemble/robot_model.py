@@ -12,10 +12,10 @@ from pathlib import Path
 
 from .. import transports
 from ..errors import ConfigError, UrdfError
-from .config import VendorConfig
-from .naming import joint_name_problem, pascal_case, suggest, upper_snake
-from .robot import InputProvenance, MotorJoint, RobotModel
-from .urdf import UrdfJoint, UrdfRobot
+from ..model.config import VendorConfig
+from ..model.naming import joint_name_problem, pascal_case, suggest, upper_snake
+from ..model.robot import InputProvenance, MotorJoint, RobotModel
+from ..model.urdf import UrdfJoint, UrdfRobot
 
 
 def sha256_hex(data: bytes) -> str:
@@ -83,7 +83,6 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         raise err("joint_map", f"{len(missing)} actuated joint(s) of {urdf_shown} have no motor index: {shown}",
                   "add them to joint_map, or list them under unmapped_joints if they are intentionally not driven")
 
-    groups = config.transport_options.groups
     transport = transports.get(config.transport)
     modes = dict(config.command_modes)
     gains = {name: (kp, kd) for name, kp, kd in config.default_gains}
@@ -97,10 +96,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         if joint.name not in mapped:
             continue
         index = mapped[joint.name]
-        group = position = None
-        for g in groups:
-            if g.offset <= index < g.offset + g.size:
-                group, position = g.name, index - g.offset
+        group, position = config.transport_options.joint_group(index) or (None, None)
         mode = modes.get(joint.name, "velocity" if joint.type == "continuous" else "position")
         stiffness, damping = gains.get(joint.name, (0.0, 0.0))
         joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,

@@ -1,7 +1,7 @@
 """Typed reads from a parsed vendor YAML tree, each failure a ConfigError naming file:line: key and a fix.
 
 Shared by the top-level schema (inputs/vendor_config.py) and every transport's ``transport_options``
-(transports/*.py), so all of them word their errors the same way.
+(transports/<name>/), so all of them word their errors the same way.
 """
 from __future__ import annotations
 

@@ -47,7 +47,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from tests import cpp_build  # noqa: E402
+from tests.support import cpp_build  # noqa: E402
 
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")

@@ -15,7 +15,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from tests.cpp_build import render_test_package, CppBuilder, build_harness, compile_data_buffer_stress
+from tests.support.cpp_build import render_test_package, CppBuilder, build_harness, compile_data_buffer_stress
 N = int(sys.argv[1]) if len(sys.argv) > 1 else 200
 root = Path(tempfile.mkdtemp(prefix="rhi_repeat_"))
 labels = ["unitree/g1", "agibot/x2", "odri/solo12"]

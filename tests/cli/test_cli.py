@@ -10,12 +10,11 @@ import yaml
 
 from rhi_gen.cli import main
 from rhi_gen.transports.unitree_dds import G1_ORDER
-from tests.cpp_build import syntax_check_driver
+from tests.support.cpp_build import syntax_check_driver
+from tests.support.repo import REPO, UPSTREAM_URDF
+from tests.support.repo import URDF_FIXTURES as FIXTURES
 
-REPO = Path(__file__).resolve().parents[1]
-SHARED = REPO.parent / "shared"
-UPSTREAM_G1 = SHARED / "upstream" / "urdf" / "unitree_g1.urdf"
-FIXTURES = REPO / "tests" / "fixtures" / "urdf"
+UPSTREAM_G1 = UPSTREAM_URDF / "unitree_g1.urdf"
 
 
 def run(args: list[str], capsys) -> tuple[int, str, str]:

@@ -17,9 +17,10 @@ from pathlib import Path
 
 import pytest
 
-from tests.test_hostile_inputs import HOSTILE, assert_rejected, new_rejected, run_cli, snapshot
+from tests.support.cli import assert_rejected, new_rejected, run_cli, snapshot
+from tests.support.repo import HOSTILE
+from tests.support.repo import URDF_FIXTURES as FIX
 
-FIX = Path(__file__).resolve().parent / "fixtures" / "urdf"
 XACRO = FIX / "xacro"
 MYPKG = FIX / "mypkg"
 YAML_WORDS = ("xacro_args", "package_paths", "vendor YAML", "urdf: path", "point urdf:")

@@ -2,14 +2,12 @@
 from __future__ import annotations
 
 import hashlib
-import shutil
 from pathlib import Path
 
 import pytest
 
 from rhi_gen.cli import main
-
-REPO = Path(__file__).resolve().parents[1]
+from tests.support.repo import REPO, copy_project
 
 
 def tree_hash(root: Path) -> dict[str, str]:
@@ -23,15 +21,13 @@ def test_checked_in_generated_tree_is_current(capsys):
 
 @pytest.fixture()
 def project_copy(tmp_path: Path) -> Path:
-    shutil.copytree(REPO / "robots", tmp_path / "robots")
-    shutil.copytree(REPO / "generated", tmp_path / "generated")
-    return tmp_path
+    """The repository's robots/ and its checked-in generated/, copied."""
+    return copy_project(tmp_path, generated=True)
 
 
-def test_generate_reproduces_generated_byte_for_byte(tmp_path):
-    shutil.copytree(REPO / "robots", tmp_path / "robots")
-    assert main(["generate", "--project", str(tmp_path)]) == 0
-    assert tree_hash(tmp_path / "generated") == tree_hash(REPO / "generated")
+def test_generate_reproduces_generated_byte_for_byte(robots_project):
+    assert main(["generate", "--project", str(robots_project)]) == 0
+    assert tree_hash(robots_project / "generated") == tree_hash(REPO / "generated")
 
 
 @pytest.mark.parametrize("path, old, new", [

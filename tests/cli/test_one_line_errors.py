@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.test_hostile_inputs import (
+from tests.support.cli import (
     HOSTILE,
     YAML_REL,
     assert_rejected,
@@ -19,8 +19,8 @@ from tests.test_hostile_inputs import (
     snapshot,
     write_project,
 )
+from tests.support.repo import URDF_FIXTURES as FIXTURES
 
-FIXTURES = Path(__file__).resolve().parent / "fixtures" / "urdf"
 ANY = -1  # assert_rejected(line=ANY): some line number
 
 

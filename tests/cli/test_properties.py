@@ -26,13 +26,12 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from lxml import etree
 
-from rhi_gen.model.naming import identifier_problem, pascal_case, vendor_problem
 from rhi_gen.inputs.xacro_expand import expand_xacro
-from tests.cpp_build import syntax_check_driver
-from tests.test_hostile_inputs import ANY_LINE, assert_rejected, run_cli, snapshot
+from rhi_gen.model.naming import identifier_problem, pascal_case, vendor_problem
+from tests.support.cli import ANY_LINE, assert_rejected, run_cli, snapshot
+from tests.support.cpp_build import syntax_check_driver
+from tests.support.repo import HOSTILE, PACKAGE
 
-PACKAGE = "robot_hardware_interface"
-HOSTILE = Path(__file__).resolve().parent / "fixtures" / "hostile"
 TRANSPORTS = ("generic_topics", "engineai_topics", "agibot_topics", "unitree_dds", "custom")
 UNITREE_SLOTS = {"hg": 35, "go": 20}  # motor slots per unitree message family
 # Every character rhi-gen accepts in a joint name (model/naming.py's policy, restated independently).

@@ -23,14 +23,14 @@ import yaml
 from rhi_gen.errors import WriteError
 from rhi_gen.pipeline import generate as pipeline_generate
 from rhi_gen.pipeline.load import load_robots
-from rhi_gen.render import environment as render_environment
-from rhi_gen.write import transaction
-from rhi_gen.cli import main
 from rhi_gen.project import find_project
-from rhi_gen.write.regions import region_bodies
+from rhi_gen.render import environment as render_environment
 from rhi_gen.render.markers import REGION_BEGIN, REGION_END
+from rhi_gen.write import transaction
+from rhi_gen.write.regions import region_bodies
+from tests.support.cli import cli, tree
+from tests.support.repo import REPO
 
-REPO = Path(__file__).resolve().parents[1]
 PKG = "generated/robot_hardware_interface"
 G1_FILES = {f"{PKG}/include/robot_hardware_interface/unitree/g1.hpp", f"{PKG}/src/unitree/g1.cpp",
             f"{PKG}/description/g1.ros2_control.xacro", f"{PKG}/config/g1_controllers.yaml",
@@ -41,27 +41,6 @@ G1_CPP, G1_HPP, CMAKE = f"{PKG}/src/unitree/g1.cpp", f"{PKG}/include/robot_hardw
 
 
 # ---------------------------------------------------------------- helpers
-def tree(root: Path) -> dict[str, bytes]:
-    """Every file under root (inputs, outputs, backups, temp files): the whole state, byte for byte."""
-    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
-
-
-def cli(capsys, root: Path, *args: str) -> tuple[int, str, str]:
-    capsys.readouterr()
-    code = main([*args, "--project", str(root)])
-    out = capsys.readouterr()
-    return code, out.out, out.err
-
-
-@pytest.fixture
-def project(tmp_path, capsys) -> Path:
-    root = tmp_path / "proj"
-    root.mkdir()
-    shutil.copytree(REPO / "robots", root / "robots")
-    assert cli(capsys, root, "generate")[0] == 0
-    return root
-
-
 def rename_joint(root: Path, old: str = "left_knee_joint", new: str = "left_knee_pitch_joint") -> None:
     urdf = root / "robots/unitree/g1.urdf"
     text = urdf.read_text()
@@ -252,8 +231,8 @@ def test_force_overwrites_and_keeps_numbered_backups(project, capsys):
     backup_dir = project / "generated/.rhi-gen-backup"
     backup = backup_dir / "robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp.1"
     assert backup.read_bytes() == edited
-    assert f"kept your version of robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp in " \
-           f"generated/.rhi-gen-backup/robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp.1" in out
+    assert "kept your version of robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp in " \
+           "generated/.rhi-gen-backup/robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp.1" in out
     assert hpp.read_bytes() == clean
     assert region_bodies((project / G1_CPP).read_text())["callbacks"] == "void keep_me() {}\n"
     # colcon and git leave the backups alone; nothing of them is inside the package

@@ -9,40 +9,18 @@ import re
 import shutil
 from pathlib import Path
 
-import pytest
-
 import rhi_gen
-from rhi_gen.cli import main
 from rhi_gen.inputs.yaml_source import content_sha256, parse_yaml_text
+from tests.support.cli import cli, tree
+from tests.support.repo import REPO
 
-REPO = Path(__file__).resolve().parents[1]
 PACKAGE = "generated/robot_hardware_interface"
 MANIFEST = "generated/.rhi-gen-manifest"
 HEX_RUN = re.compile(r"\b[0-9a-f]{12,}\b")
 
 
-def tree(root: Path) -> dict[str, bytes]:
-    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
-
-
 def mtimes(root: Path) -> dict[str, int]:
     return {p.relative_to(root).as_posix(): p.stat().st_mtime_ns for p in sorted(root.rglob("*")) if p.is_file()}
-
-
-def cli(capsys, root: Path, *args: str) -> tuple[int, str, str]:
-    capsys.readouterr()
-    code = main([*args, "--project", str(root)])
-    out = capsys.readouterr()
-    return code, out.out, out.err
-
-
-@pytest.fixture
-def project(tmp_path, capsys) -> Path:
-    root = tmp_path / "proj"
-    root.mkdir()
-    shutil.copytree(REPO / "robots", root / "robots")
-    assert cli(capsys, root, "generate")[0] == 0
-    return root
 
 
 # ---------------------------------------------------------------- banners

@@ -21,7 +21,7 @@ import time
 
 import pytest
 
-from tests.cpp_build import (FLAVOURS, HARNESS_DIR, CompileResult, compile_data_buffer_stress, require_compiler,
+from tests.support.cpp_build import (FLAVOURS, HARNESS_DIR, CompileResult, compile_data_buffer_stress, require_compiler,
                              run_binary_retrying, run_parallel, session_builder, session_reference_package)
 
 FRAMES = 1_000_000

@@ -33,8 +33,8 @@ from pathlib import Path
 import pytest
 
 from rhi_gen.transports import TRANSPORTS
-from tests import vendor_msgs
-from tests.cpp_build import (PACKAGE, WARNING_FLAGS, build_driver_object, build_harness, render_test_package,
+from tests.support import vendor_msgs
+from tests.support.cpp_build import (PACKAGE, WARNING_FLAGS, build_driver_object, build_harness, render_test_package,
                              crc_header, expand_description, message_include_flags, plugin_types,
                              project_robot_labels, require_compiler, run_binary_retrying, run_parallel,
                              session_builder, session_reference_package, standin_flags, yaml_joint_map)

@@ -30,9 +30,19 @@ import pytest
 import yaml
 
 from rhi_gen.cli import main
-from tests import vendor_msgs
-from tests.cpp_build import DISTROS, ENV_C, HARNESS_ROBOTS, REPO, WARNING_FLAGS, message_include_flags, \
-    project_robot_labels, require_compiler, run_compiler, standin_flags
+from tests.support import vendor_msgs
+from tests.support.cpp_build import (
+    DISTROS,
+    ENV_C,
+    HARNESS_ROBOTS,
+    REPO,
+    WARNING_FLAGS,
+    message_include_flags,
+    project_robot_labels,
+    require_compiler,
+    run_compiler,
+    standin_flags,
+)
 
 PACKAGE = "robot_hardware_interface"
 LABELS = project_robot_labels(extra_robots=False)  # vendor/robot of robots/*/*.yaml

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 from rhi_gen.render.literals import cpp_double, cpp_string, header_guard, xml_escape, yaml_string
-from tests.cpp_build import require_compiler
+from tests.support.cpp_build import require_compiler
 
 HOSTILE = ['plain', 'quote"inside', "back\\slash", "new\nline", "tab\tcr\r", "trigraph??=", "é中文",
            "\x01ctrl", "end\\", '"', "*/ /* //", "\\x41", "?" * 5, "", "a\u2028b"]

@@ -20,8 +20,8 @@ from pathlib import Path
 
 import pytest
 
-from tests import vendor_msgs
-from tests.cpp_build import (REPO, build_harness, compile_data_buffer_stress, render_test_package, run_binary,
+from tests.support import vendor_msgs
+from tests.support.cpp_build import (REPO, build_harness, compile_data_buffer_stress, render_test_package, run_binary,
                              run_parallel, session_builder)
 
 TEMPLATES = REPO / "rhi_gen" / "templates"

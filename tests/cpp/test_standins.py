@@ -1,4 +1,4 @@
-"""The C++ stand-ins (tests/cpp/standins), for every ROS 2 distro of tests.cpp_build.DISTROS: they
+"""The C++ stand-ins (tests/cpp/standins), for every ROS 2 distro of tests.support.cpp_build.DISTROS: they
 compile warning-free, behave as documented, and reject what that distro's real APIs reject.
 Messages are the real ROS 2 headers (tests/ros_msgs.py, tests/vendor_msgs.py); with the
 rosidl-generated vendor messages the self-test also checks them (skipped, with the reason, when
@@ -14,7 +14,7 @@ Per distro (humble, jazzy, kilted, rolling):
   rclcpp class, REPRESENTATIVES: humble and rolling; see _distros_for)
 * the self-test includes every public stand-in header of the distro (so new headers get exercised).
 
-A missing g++ fails these tests (tests.cpp_build.require_compiler); they are never skipped.
+A missing g++ fails these tests (tests.support.cpp_build.require_compiler); they are never skipped.
 """
 from __future__ import annotations
 
@@ -26,9 +26,16 @@ from pathlib import Path
 
 import pytest
 
-from tests import vendor_msgs
-from tests.cpp_build import (DISTROS, STANDINS, STANDINS_INCLUDE, WARNING_FLAGS, message_include_flags,
-                             require_compiler, standin_flags)
+from tests.support import vendor_msgs
+from tests.support.cpp_build import (
+    DISTROS,
+    STANDINS,
+    STANDINS_INCLUDE,
+    WARNING_FLAGS,
+    message_include_flags,
+    require_compiler,
+    standin_flags,
+)
 
 SELFTEST_DIR = STANDINS / "selftest"
 SELFTEST = SELFTEST_DIR / "selftest.cpp"

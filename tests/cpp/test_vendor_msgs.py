@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from tests import vendor_msgs
+from tests.support import vendor_msgs
 
 # SDK_FACTS.md §B / §C: message -> [(field, ROS type)], in declaration order.
 EXPECTED_FIELDS = {

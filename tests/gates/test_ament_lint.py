@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.ament_lint import COMMAND_LINE, run_cpplint, run_uncrustify
+from tests.support.ament_lint import COMMAND_LINE, run_cpplint, run_uncrustify
 
 HEADER = """// Copyright 2025 rhi-gen contributors
 //

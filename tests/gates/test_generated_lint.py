@@ -5,7 +5,7 @@ The package holds the reference robots of robots/ plus the harness's test robots
 tests/cpp/harness/robots/acme/scara, unitree go family robots/unitree/go2w, custom odri/solo12 with
 its regions as generated), so every transport's templates, both unitree message families included,
 are linted; the custom robot is linted again with the README's toy-bus regions filled in. To see and fix the
-findings by hand: tests/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.ament_lint DIR`.
+findings by hand: tests/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.support.ament_lint DIR`.
 """
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ from pathlib import Path
 import pytest
 
 from rhi_gen.cli import main
-from tests.ament_lint import Finding, run_cpplint, run_uncrustify
-from tests.cpp_build import PACKAGE, fill_custom_regions, load_models, make_test_project
+from tests.support.ament_lint import Finding, run_cpplint, run_uncrustify
+from tests.support.cpp_build import PACKAGE, fill_custom_regions, load_models, make_test_project
 
 
 @pytest.fixture(scope="module")

@@ -5,7 +5,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
+from tests.support.repo import REPO
 
 
 def _run(*args: str) -> subprocess.CompletedProcess[str]:

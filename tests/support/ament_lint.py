@@ -8,7 +8,7 @@ the Jazzy wheels of the `test` extra; uncrustify from ros-jazzy-uncrustify-vendo
 hook puts `<prefix>/opt/uncrustify_vendor/bin` on PATH (done here by hand). Debian's uncrustify 0.72
 formats differently and is never used.
 
-    .venv/bin/python -m tests.ament_lint generated/robot_hardware_interface   # prints findings, exit 1 if any
+    .venv/bin/python -m tests.support.ament_lint generated/robot_hardware_interface   # prints findings, exit 1 if any
 """
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from tests.ros_msgs import require_dir
+from tests.support.ros_msgs import require_dir
 
 # The same checks by hand, from the repository root after `pip install -e '.[test]'`:
 COMMAND_LINE = ("(cd generated/robot_hardware_interface && "

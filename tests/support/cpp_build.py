@@ -18,10 +18,10 @@ from typing import Iterable, Sequence
 
 import pytest
 
-from tests import vendor_msgs
-from tests.ros_msgs import wheel_include_dirs, wheels_digest
+from tests.support import vendor_msgs
+from tests.support.repo import REPO
+from tests.support.ros_msgs import wheel_include_dirs, wheels_digest
 
-REPO = Path(__file__).resolve().parents[1]
 STANDINS = REPO / "tests" / "cpp" / "standins"
 # Distro-independent stand-ins (rclcpp, pluginlib, unitree_sdk2, messages, rhi_fake hooks).
 STANDINS_INCLUDE = STANDINS / "include"
@@ -184,6 +184,7 @@ def load_models(project_root: Path):
 def template_env_factory(template_dir: Path):
     """An env_factory for render_package: make_environment()'s settings, templates from a folder."""
     import jinja2
+
     from rhi_gen.render.environment import make_environment
 
     def factory():
@@ -246,6 +247,7 @@ def expand_description(package_dir: Path, robot: str, work_dir: Path) -> Descrip
     """Expand description/<robot>.ros2_control.xacro the way a user does: include it from a robot
     through $(find robot_hardware_interface) and call its macro with the defaults."""
     from lxml import etree
+
     from rhi_gen.inputs.xacro_expand import expand_xacro
 
     xacro_file = package_dir / "description" / f"{robot}.ros2_control.xacro"

@@ -25,9 +25,9 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
-from tests.ros_msgs import require_dir, wheel_versions
+from tests.support.repo import REPO
+from tests.support.ros_msgs import require_dir, wheel_versions
 
-REPO = Path(__file__).resolve().parents[1]
 # RHI_UPSTREAM_MSGS: another copy of shared/upstream/msgs (or a missing folder, to try the skip path).
 UPSTREAM_MSGS = Path(os.environ.get("RHI_UPSTREAM_MSGS") or REPO.parent / "shared" / "upstream" / "msgs")
 RECIPE = "rosidl_generator_cpp via GenerateCpp, msg/ layout, headers only (v1)"

@@ -12,9 +12,7 @@ import pytest
 import yaml
 from lxml import etree
 
-REPO = Path(__file__).resolve().parents[1]
-SHARED = REPO.parent / "shared"
-UPSTREAM_URDF = SHARED / "upstream" / "urdf"
+from tests.support.repo import REPO, SHARED, UPSTREAM_URDF
 
 ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
 

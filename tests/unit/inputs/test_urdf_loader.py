@@ -22,16 +22,15 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rhi_gen.errors import RhiGenError, UrdfError
-from rhi_gen.model import JointLimits, Mimic
 from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes, portable_xml
 from rhi_gen.inputs.xacro_expand import expand_xacro
+from rhi_gen.model import JointLimits, Mimic
+from tests.support.repo import REPO, UPSTREAM_URDF
+from tests.support.repo import URDF_FIXTURES as FIX
 
-REPO = Path(__file__).resolve().parents[1]
-FIX = REPO / "tests" / "fixtures" / "urdf"
 XACRO = FIX / "xacro"
 BROKEN = FIX / "broken"
 MYPKG = FIX / "mypkg"
-UPSTREAM_URDF = Path(__file__).resolve().parents[1].parent / "shared" / "upstream" / "urdf"
 
 VALID_URDFS = ["simple_arm.urdf", "mimic_gripper.urdf", "continuous_wheel.urdf", "prismatic.urdf",
                "existing_ros2_control.urdf"]

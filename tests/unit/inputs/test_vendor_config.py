@@ -8,8 +8,7 @@ import pytest
 
 from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.vendor_config import load_config
-
-REPO = Path(__file__).resolve().parents[1]
+from tests.support.repo import REPO
 
 BASE = """\
 vendor: acme

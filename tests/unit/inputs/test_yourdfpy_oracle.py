@@ -16,7 +16,7 @@ import yourdfpy
 
 from rhi_gen.errors import UrdfError
 from rhi_gen.inputs.urdf_loader import load_urdf
-from tests.test_corpus import EXPECTED_REJECTIONS, corpus
+from tests.support.corpus import EXPECTED_REJECTIONS, corpus
 
 PLAIN = [d for d in corpus() if d.label.startswith("example-robot-data:") and d.path.name.endswith(".urdf")]
 

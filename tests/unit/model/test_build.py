@@ -6,13 +6,12 @@ from pathlib import Path
 
 import pytest
 
-from rhi_gen.model.build import build_model
-from rhi_gen.model.naming import joint_name_problem
 from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.urdf_loader import load_urdf, parse_urdf_bytes
 from rhi_gen.inputs.vendor_config import load_config
-
-FIXTURES = Path(__file__).parent / "fixtures" / "urdf"
+from rhi_gen.model.build import build_model
+from rhi_gen.model.naming import joint_name_problem
+from tests.support.repo import URDF_FIXTURES as FIXTURES
 
 
 def model_for(tmp_path: Path, urdf: Path, body: str, **head):

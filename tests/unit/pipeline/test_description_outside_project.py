@@ -16,11 +16,9 @@ import pytest
 import yaml
 
 from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes
-from tests.test_hostile_inputs import assert_rejected, new_rejected, run_cli, snapshot
-
-FIX = Path(__file__).resolve().parent / "fixtures" / "urdf"
-REPO = Path(__file__).resolve().parents[1]
-UPSTREAM = REPO.parent / "shared" / "upstream" / "urdf"
+from tests.support.cli import assert_rejected, new_rejected, run_cli, snapshot
+from tests.support.repo import UPSTREAM_URDF as UPSTREAM
+from tests.support.repo import URDF_FIXTURES as FIX
 
 
 def new(root: Path, robot: str, urdf: Path, *extra: str):

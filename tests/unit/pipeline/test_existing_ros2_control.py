@@ -14,11 +14,11 @@ from pathlib import Path
 
 import pytest
 
-from tests.test_hostile_inputs import HOSTILE, assert_rejected, run_cli, snapshot
+from tests.support.cli import assert_rejected, run_cli, snapshot
+from tests.support.repo import HOSTILE, UPSTREAM_URDF
+from tests.support.repo import URDF_FIXTURES as FIX
 
-FIX = Path(__file__).resolve().parent / "fixtures" / "urdf"
-REPO = Path(__file__).resolve().parents[1]
-UPSTREAM_G1 = REPO.parent / "shared" / "upstream" / "urdf" / "unitree_g1.urdf"
+UPSTREAM_G1 = UPSTREAM_URDF / "unitree_g1.urdf"
 ANY = -1  # assert_rejected(line=ANY): some line number
 
 

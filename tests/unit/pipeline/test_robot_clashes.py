@@ -16,9 +16,9 @@ import pytest
 
 from rhi_gen.pipeline.load import clash_error, find_clash, load_robots
 from rhi_gen.project import Project
-from tests.test_hostile_inputs import assert_rejected, new_rejected, run_cli, snapshot
+from tests.support.cli import assert_rejected, new_rejected, run_cli, snapshot
+from tests.support.repo import URDF_FIXTURES as FIX
 
-FIX = Path(__file__).resolve().parent / "fixtures" / "urdf"
 ARM = FIX / "simple_arm.urdf"
 PLUGINS = "generated/robot_hardware_interface/robot_hardware_interface.xml"
 

@@ -12,7 +12,9 @@ from pathlib import Path
 
 import pytest
 
-PKG = Path(__file__).resolve().parents[1] / "generated" / "robot_hardware_interface"
+from tests.support.repo import PACKAGE, REPO
+
+PKG = REPO / "generated" / PACKAGE
 REFERENCE = ("unitree/g1", "agibot/x2", "engineai/pm01")
 SKELETON = {"{", "}", "};", "});", "public:", "private:", "protected:"}
 

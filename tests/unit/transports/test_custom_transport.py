@@ -14,7 +14,7 @@ from rhi_gen.cli import main
 from rhi_gen.render.markers import user_region
 from rhi_gen.transports import custom
 from rhi_gen.write.regions import region_bodies, splice
-from tests.cpp_build import HARNESS_ROBOTS, TOY_BUS_REGIONS
+from tests.support.cpp_build import HARNESS_ROBOTS, TOY_BUS_REGIONS
 
 SOLO12_URDF = HARNESS_ROBOTS / "odri" / "solo12.urdf"  # example-robot-data 6.0.0
 SOURCE = Path("generated/robot_hardware_interface/src/odri/solo12.cpp")

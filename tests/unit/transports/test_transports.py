@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import functools
-from pathlib import Path
 
 import pytest
 import yaml
@@ -12,8 +11,9 @@ from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.validator import Validator
 from rhi_gen.inputs.yaml_source import parse_yaml_text
 from rhi_gen.model import TransportOptions
+from tests.support.repo import REPO
 
-TEMPLATES = Path(__file__).resolve().parents[1] / "rhi_gen" / "templates"
+TEMPLATES = REPO / "rhi_gen" / "templates"
 
 
 def test_registry_names_match_the_modules():

@@ -14,7 +14,7 @@ import pytest
 import yaml
 
 from rhi_gen.transports.unitree_dds import H1_ORDER, QUADRUPED_ORDER, WHEELED_ORDER
-from tests.test_hostile_inputs import new_rejected, run_cli
+from tests.support.cli import new_rejected, run_cli
 
 PKG = "generated/robot_hardware_interface"
 

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
 from pathlib import Path
 
 import pytest
@@ -11,11 +10,9 @@ import pytest
 from rhi_gen import __version__
 from rhi_gen.cli import main
 from rhi_gen.errors import ManifestError
-from rhi_gen.write.manifest import (JointRecord, Manifest, RobotRecord, dumps, generated_hash, loads,
-                              parse)
 from rhi_gen.render.markers import REGION_BEGIN, REGION_END
-
-REPO = Path(__file__).resolve().parents[1]
+from rhi_gen.write.manifest import JointRecord, Manifest, RobotRecord, dumps, generated_hash, loads, parse
+from tests.support.repo import copy_project
 
 
 def _record(key="unitree/g1", joints=None) -> RobotRecord:
@@ -61,10 +58,7 @@ def test_corrupt_manifest_is_one_line_error(text, line):
 
 
 def _project(tmp_path: Path, name: str) -> Path:
-    root = tmp_path / name
-    root.mkdir()
-    shutil.copytree(REPO / "robots", root / "robots")
-    return root
+    return copy_project(tmp_path / name)
 
 
 def test_generated_manifest_is_deterministic_and_machine_independent(tmp_path, capsys):

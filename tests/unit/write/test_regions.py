@@ -3,10 +3,9 @@ from __future__ import annotations
 
 import pytest
 
-from rhi_gen.errors import RhiGenError
-from rhi_gen.errors import RegionError
-from rhi_gen.write.regions import parse_regions, region_bodies, splice, strip_bodies, user_code_regions
+from rhi_gen.errors import RegionError, RhiGenError
 from rhi_gen.render.markers import REGION_BEGIN, REGION_END, user_region
+from rhi_gen.write.regions import parse_regions, region_bodies, splice, strip_bodies, user_code_regions
 
 
 def _region(name: str, body: str = "", style: str = "//", indent: str = "") -> str:

@@ -124,7 +124,7 @@ def render(name: str, members, deps, size: int, namespace: str = "unitree_hg", f
     out += ["  }", "", f"  bool operator!=(const {name}& _other) const", "  {",
             "    return !(*this == _other);", "  }", "", "};", "", "}", "", "}", "", "}", ""]
     out += [
-        f"// Layout checks (x86-64 g++): the CRC of the SDK is computed over the raw bytes.",
+        "// Layout checks (x86-64 g++): the CRC of the SDK is computed over the raw bytes.",
         f"static_assert(sizeof(::{namespace}::msg::dds_::{name}) == {size}, "
         f"\"{namespace} {name} must be {size} bytes\");",
         f"static_assert(std::is_standard_layout<::{namespace}::msg::dds_::{name}>::value, "

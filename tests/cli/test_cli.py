@@ -23,6 +23,7 @@ def run(args: list[str], capsys) -> tuple[int, str, str]:
     return code, out.out, out.err
 
 
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_new_on_upstream_g1_uses_the_sdk_order_and_compiles(tmp_path, capsys):
     if not UPSTREAM_G1.is_file():
         pytest.skip("../shared/upstream/urdf/unitree_g1.urdf is not present on this machine")
@@ -40,6 +41,7 @@ def test_new_on_upstream_g1_uses_the_sdk_order_and_compiles(tmp_path, capsys):
     assert run(["check", "--project", str(tmp_path)], capsys)[0] == 0
 
 
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_new_on_an_unknown_robot_uses_generic_transport_and_compiles(tmp_path, capsys):
     code, out, err = run(["new", "--vendor", "acme", "--robot", "gripper", "--urdf",
                           str(FIXTURES / "mimic_gripper.urdf"), "--project", str(tmp_path)], capsys)

@@ -24,6 +24,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import pytest
 import yaml
 from lxml import etree
 
@@ -161,6 +162,7 @@ def compile_set(tmp_path: Path, generated: list[tuple[int, Outcome]]) -> list[tu
     return list(chosen.values())
 
 
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(tmp_path, capsys, record_property):
     start = time.perf_counter()
     descriptions = corpus()

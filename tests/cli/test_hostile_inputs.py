@@ -419,6 +419,7 @@ def chain_urdf(joints: int, *, name: str = "big", broken_at: int | None = None) 
     return "\n".join(out) + "\n"
 
 
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_large_urdf_generates_and_compiles(tmp_path):
     urdf = tmp_path / "big.urdf"
     urdf.write_text(chain_urdf(1200))
@@ -469,6 +470,7 @@ def _description_joints(root: Path, robot: str) -> dict[str, etree._Element]:
     return {j.get("name"): j for j in tree.iter("joint")}
 
 
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_mimic_continuous_prismatic_and_an_existing_tag_follow_ros2_control(tmp_path):
     urdf = HOSTILE / "kinematics.urdf"
     root = tmp_path / "proj"

@@ -309,6 +309,7 @@ def compile_all(root: Path, specs: list[RobotSpec]) -> None:
 
 
 # ---------------------------------------------------------------- 1. valid inputs always compile
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 @settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(specs=projects())
 def test_random_valid_robots_generate_drivers_that_compile(specs):
@@ -329,6 +330,7 @@ def test_random_valid_robots_generate_drivers_that_compile(specs):
         assert snapshot(root) == before
 
 
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 @pytest.mark.parametrize("vendor", ["system", "time", "index"])
 def test_vendor_named_like_a_c_library_global_compiles_or_is_rejected(tmp_path, vendor):
     """Found by the property above: the vendor becomes a namespace at global scope (the spec's layout),

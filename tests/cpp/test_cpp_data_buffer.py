@@ -17,31 +17,35 @@ producer may overwrite) must fail it.
 from __future__ import annotations
 
 import re
-import time
 
 import pytest
 
-from tests.support.cpp_build import (FLAVOURS, HARNESS_DIR, CompileResult, compile_data_buffer_stress, require_compiler,
-                             run_binary_retrying, run_parallel, session_builder, session_reference_package)
+from tests.support.cpp_build import (
+    FLAVOURS,
+    HARNESS_DIR,
+    CompileResult,
+    compile_data_buffer_stress,
+    require_compiler,
+    run_binary_retrying,
+    run_parallel,
+)
 
 FRAMES = 1_000_000
-_TIMES: dict[str, float] = {}
+
+
+def build_and_run_stress(reference, builder) -> dict:
+    """{flavour: (link result, run or None)}: the stress built in every flavour in parallel, run one at a time."""
+    links: list[CompileResult] = run_parallel(
+        list(FLAVOURS), lambda flavour: compile_data_buffer_stress(builder, reference.package_dir, flavour))
+    runs = run_parallel(list(zip(FLAVOURS, links, strict=True)),
+                        lambda item: run_binary_retrying(item[1].path, [f"--frames={FRAMES}"]) if item[1].ok else None,
+                        workers=1)
+    return {flavour: (link, run) for flavour, link, run in zip(FLAVOURS, links, runs, strict=True)}
 
 
 @pytest.fixture(scope="module")
-def stress_runs(tmp_path_factory):
-    reference = session_reference_package(tmp_path_factory)
-    builder = session_builder(tmp_path_factory)
-    start = time.monotonic()
-    links: list[CompileResult] = run_parallel(
-        list(FLAVOURS), lambda flavour: compile_data_buffer_stress(builder, reference.package_dir, flavour))
-    _TIMES["build"] = time.monotonic() - start
-    start = time.monotonic()
-    runs = run_parallel(list(zip(FLAVOURS, links)),
-                        lambda item: run_binary_retrying(item[1].path, [f"--frames={FRAMES}"]) if item[1].ok else None,
-                        workers=1)
-    _TIMES["run"] = time.monotonic() - start
-    return {flavour: (link, run) for flavour, link, run in zip(FLAVOURS, links, runs)}
+def stress_runs(reference, cpp_builder):
+    return build_and_run_stress(reference, cpp_builder)
 
 
 @pytest.mark.parametrize("flavour", list(FLAVOURS))
@@ -60,32 +64,17 @@ def test_data_buffer_contract_and_stress(stress_runs, flavour):
         assert (torn, changed, backwards) == ("0", "0", "0"), f"{producers} producer(s): {lines}"
 
 
-def test_data_buffer_report(stress_runs, capsys):
-    out = ["DataBuffer stress (tests/test_cpp_data_buffer.py)"]
-    for flavour, (link, run) in stress_runs.items():
-        if run is None:
-            out.append(f"  {flavour:10s} BUILD FAILED")
-            continue
-        out.append(f"  {flavour:10s} exit {run.returncode}: {run.passed} passed, {run.failed} failed, "
-                   f"{'no sanitizer reports' if not run.sanitizer_reports() else 'SANITIZER REPORTS'} "
-                   f"(run {run.seconds:.1f}s)")
-        out += [f"             {line}" for line in run.stdout.splitlines() if line.startswith("stress ")]
-    out.append(f"  build {_TIMES.get('build', 0):.1f}s, runs {_TIMES.get('run', 0):.1f}s")
-    with capsys.disabled():
-        print("\n" + "\n".join(out))
-
-
 BROKEN = ("#pragma once\n#include <array>\n#include <atomic>\n#include <mutex>\n"
           + (HARNESS_DIR / "mutants" / "double_buffer.inc").read_text())
 
 
-def test_stress_catches_a_buffer_that_hands_out_an_overwritable_slot(tmp_path, tmp_path_factory):
+def test_stress_catches_a_buffer_that_hands_out_an_overwritable_slot(tmp_path, cpp_builder):
     require_compiler()
     package = tmp_path / "pkg"
     header = package / "include" / "robot_hardware_interface" / "common" / "data_buffer.hpp"
     header.parent.mkdir(parents=True)
     header.write_text(BROKEN)
-    link = compile_data_buffer_stress(session_builder(tmp_path_factory), package, "plain")
+    link = compile_data_buffer_stress(cpp_builder, package, "plain")
     assert link.ok, link.stderr[:4000]
     run = run_binary_retrying(link.path, ["--frames=200000"])
     assert run.returncode != 0, f"the stress did not notice a double buffer:\n{run.stdout}"

@@ -19,28 +19,38 @@ the package is rendered into a temporary folder, then:
   warm-up) and threads (real writer/executor threads, no torn frames);
 * sanitizer runs must print no report.
 
-The checks are counted by the harness; the counts per robot, flavour and section, the sanitizer and
-allocation results and the timings are printed at the end and written to tests/.cpp_report.txt.
+The checks are counted by the harness; scripts/cpp_report.py prints the counts per robot, flavour and
+section, the sanitizer and allocation results and the timings (the tests assert them).
 A missing g++ fails these tests (never a skip).
 """
 from __future__ import annotations
 
 import re
 import subprocess
-import time
-from pathlib import Path
 
 import pytest
 
 from rhi_gen.transports import TRANSPORTS
 from tests.support import vendor_msgs
-from tests.support.cpp_build import (PACKAGE, WARNING_FLAGS, build_driver_object, build_harness, render_test_package,
-                             crc_header, expand_description, message_include_flags, plugin_types,
-                             project_robot_labels, require_compiler, run_binary_retrying, run_parallel,
-                             session_builder, session_reference_package, standin_flags, yaml_joint_map)
+from tests.support.cpp_build import (
+    PACKAGE,
+    WARNING_FLAGS,
+    build_driver_object,
+    build_harness,
+    crc_header,
+    expand_description,
+    message_include_flags,
+    plugin_types,
+    project_robot_labels,
+    render_test_package,
+    require_compiler,
+    run_binary_retrying,
+    run_parallel,
+    standin_flags,
+    yaml_joint_map,
+)
 
 ROBOTS = project_robot_labels()
-REPORT = Path(__file__).resolve().parent / ".cpp_report.txt"
 SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes",
                  "crc", "parameters", "decimation", "allocations", "threads")
 THREADS_MS = 300
@@ -63,24 +73,10 @@ def in_cell(label: str, distro: str, flavour: str) -> bool:
 
 DISTRO = "humble"  # what the headers-alone checks compile against
 
-_TIMES: dict[str, float] = {}
-
-
-@pytest.fixture(scope="module")
-def reference(tmp_path_factory):
-    start = time.monotonic()
-    package = session_reference_package(tmp_path_factory)
-    _TIMES["render"] = time.monotonic() - start
-    return package
-
-
-@pytest.fixture(scope="module")
-def harness_binaries(reference, tmp_path_factory):
+def build_cells(reference, builder) -> dict:
     """{(robot, distro, flavour): (link result, [compile results])}, built in parallel, each once."""
-    builder = session_builder(tmp_path_factory)
     jobs = [(b, distro, flavour) for b in reference.builds for distro, flavour in MATRIX
             if not vendor_msgs.skip_reason(b.model.transport) and in_cell(b.label, distro, flavour)]
-    start = time.monotonic()
 
     def build(job):
         b, distro, flavour = job
@@ -89,19 +85,24 @@ def harness_binaries(reference, tmp_path_factory):
         return build_harness(builder, b, flavour, distro=distro)
 
     results = run_parallel(jobs, build)
-    _TIMES["build"] = time.monotonic() - start
-    return {(b.label, distro, flavour): result for (b, distro, flavour), result in zip(jobs, results)}
+    return {(b.label, distro, flavour): result for (b, distro, flavour), result in zip(jobs, results, strict=True)}
+
+
+def run_cells(binaries: dict) -> dict:
+    """{(robot, distro, flavour): HarnessRun} for every binary of a RUN cell that linked; two at a time."""
+    linked = [(key, link.path) for key, (link, _) in binaries.items() if link.ok and key[1:] in RUN_MATRIX]
+    runs = run_parallel(linked, lambda item: run_binary_retrying(item[1], [f"--threads-ms={THREADS_MS}"]), workers=2)
+    return {key: run for (key, _), run in zip(linked, runs, strict=True)}
+
+
+@pytest.fixture(scope="module")
+def harness_binaries(reference, cpp_builder):
+    return build_cells(reference, cpp_builder)
 
 
 @pytest.fixture(scope="module")
 def harness_runs(harness_binaries):
-    """{(robot, distro, flavour): HarnessRun} for every binary that linked; two at a time."""
-    linked = [(key, link.path) for key, (link, _) in harness_binaries.items()
-              if link.ok and key[1:] in RUN_MATRIX]
-    start = time.monotonic()
-    runs = run_parallel(linked, lambda item: run_binary_retrying(item[1], [f"--threads-ms={THREADS_MS}"]), workers=2)
-    _TIMES["run"] = time.monotonic() - start
-    return {key: run for (key, _), run in zip(linked, runs)}
+    return run_cells(harness_binaries)
 
 
 def _robot(reference, label):
@@ -270,7 +271,7 @@ CUSTOM_ROBOTS = [label for label in ROBOTS if label == "odri/solo12"]
 
 @pytest.mark.parametrize("distro", ["humble", "rolling"])
 @pytest.mark.parametrize("label", CUSTOM_ROBOTS)
-def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro, tmp_path_factory):
+def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro, tmp_path_factory, cpp_builder):
     """A custom-transport driver as generated (regions not filled in) compiles with -Werror, loads,
     initialises, and refuses on_activate with exactly one error line naming the region and file;
     it starts no writer and sends nothing (driver_harness.cpp, RHI_CUSTOM_EXPECT_UNFILLED)."""
@@ -280,7 +281,7 @@ def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro,
     assert source.count("#define RHI_CUSTOM_NOT_FILLED_IN_") == 3, "three function regions, each marked"
     b.data_header += "#define RHI_CUSTOM_EXPECT_UNFILLED 1\n"
     (b.data_dir / "robot_data.hpp").write_text(b.data_header, encoding="utf-8")
-    link, steps = build_harness(session_builder(tmp_path_factory), b, "plain", distro=distro)
+    link, steps = build_harness(cpp_builder, b, "plain", distro=distro)
     failed = [s for s in steps if not s.ok]
     assert not failed and link.ok, f"the unfilled driver does not build ({distro}):\n{(failed or [link])[0].stderr[:6000]}"
     run = run_binary_retrying(link.path)
@@ -289,48 +290,3 @@ def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro,
     assert refused == [f"refused: custom transport: region 'transport_connect' of src/{b.model.vendor}/"
                        f"{b.model.robot}.cpp is not filled in: refusing to activate (write the SDK calls there and "
                        "delete its RHI_CUSTOM_NOT_FILLED_IN line)"], refused
-
-
-# ------------------------------------------------------------------------------------ report
-def test_report(harness_runs, harness_binaries, reference, capsys):
-    """Print and save the counts (always passes once the runs exist; the assertions are above)."""
-    lines = ["C++ driver harness (tests/test_cpp_drivers.py)", ""]
-    for label in ROBOTS:
-        b = _robot(reference, label)
-        lines.append(f"{label}: {b.model.transport}, {b.model.motor_count} SDK slots, "
-                     f"{len(b.model.joints)} mapped joints, {b.model.float_type}")
-        if vendor_msgs.skip_reason(b.model.transport):
-            lines.append(f"  SKIPPED: {vendor_msgs.skip_reason(b.model.transport)}")
-            continue
-        for distro, flavour in MATRIX:
-            if not in_cell(label, distro, flavour):
-                continue
-            link, steps = harness_binaries[(label, distro, flavour)]
-            compile_s = sum(s.seconds for s in steps) + (link.seconds if link not in steps else 0.0)
-            if (distro, flavour) in COMPILE_MATRIX:
-                lines.append(f"  {distro:8s} {flavour:10s} driver object {'compiles' if link.ok else 'FAILS'} "
-                             f"with -Werror ({compile_s:.1f}s; runtime path: jazzy, rolling)")
-                continue
-            run = harness_runs.get((label, distro, flavour))
-            if run is None:
-                lines.append(f"  {distro:8s} {flavour:10s} BUILD FAILED")
-                continue
-            sections = ", ".join(f"{name} {run.sections[name][0]}" + (f"/{run.sections[name][1]} FAILED"
-                                                                        if run.sections[name][1] else "")
-                                 for name in SECTION_ORDER if name in run.sections)
-            sanitizer = "no sanitizer reports" if not run.sanitizer_reports() else \
-                f"{len(run.sanitizer_reports())} SANITIZER REPORT LINES"
-            lines.append(f"  {distro:8s} {flavour:10s} exit {run.returncode}: {run.passed} passed, {run.failed} failed "
-                         f"({sanitizer}; compile {compile_s:.1f}s, run {run.seconds:.1f}s)")
-            lines.append(f"             {sections}")
-            for prefix in ("allocations over", "threads:", "decimation"):
-                for line in run.stdout.splitlines():
-                    if line.startswith(prefix) and flavour in ("plain", "tsan"):
-                        lines.append(f"             {line}")
-    lines.append("")
-    lines.append(f"times: render {_TIMES.get('render', 0):.1f}s, build (parallel) {_TIMES.get('build', 0):.1f}s, "
-                 f"run (2 at a time) {_TIMES.get('run', 0):.1f}s")
-    text = "\n".join(lines) + "\n"
-    REPORT.write_text(text)
-    with capsys.disabled():
-        print(f"\n{text}", end="")

@@ -18,8 +18,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from tests.cpp.test_cpp_data_buffer import build_and_run_stress  # noqa: E402
-from tests.cpp.test_cpp_drivers import (  # noqa: E402
+from tests.cpp.test_cpp_data_buffer import build_and_run_stress
+from tests.cpp.test_cpp_drivers import (
     COMPILE_MATRIX,
     MATRIX,
     ROBOTS,
@@ -28,8 +28,8 @@ from tests.cpp.test_cpp_drivers import (  # noqa: E402
     in_cell,
     run_cells,
 )
-from tests.support import vendor_msgs  # noqa: E402
-from tests.support.cpp_build import session_builder, session_reference_package  # noqa: E402
+from tests.support import vendor_msgs
+from tests.support.cpp_build import session_builder, session_reference_package
 
 
 class TempDirs:

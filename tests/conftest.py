@@ -1,12 +1,30 @@
 """Fixtures shared by every tier (tests/README.md); the helpers they use live in tests/support/."""
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
 from tests.support.cli import cli
 from tests.support.repo import copy_project
+
+REPORTS = pytest.StashKey[list[str]]()
+
+
+@pytest.fixture
+def report(request: pytest.FixtureRequest) -> Callable[[str], None]:
+    """``report(text)``: text for the reader, shown in the "reports" section at the end of the run
+    (without -s), for figures a test measures but does not assert (the corpus summary, load times)."""
+    return request.config.stash.setdefault(REPORTS, []).append
+
+
+def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
+    texts = terminalreporter.config.stash.get(REPORTS, [])
+    if texts:
+        terminalreporter.section("reports")
+        for text in texts:
+            terminalreporter.write_line(text.rstrip("\n"))
 
 
 @pytest.fixture

@@ -27,7 +27,7 @@ def run(args: list[str], capsys) -> tuple[int, str, str]:
 def test_new_on_upstream_g1_uses_the_sdk_order_and_compiles(tmp_path, capsys):
     if not UPSTREAM_G1.is_file():
         pytest.skip("../shared/upstream/urdf/unitree_g1.urdf is not present on this machine")
-    code, out, err = run(["new", "--vendor", "unitree", "--robot", "g1", "--urdf", str(UPSTREAM_G1),
+    code, _, err = run(["new", "--vendor", "unitree", "--robot", "g1", "--urdf", str(UPSTREAM_G1),
                           "--project", str(tmp_path)], capsys)
     assert code == 0, err
     data = yaml.safe_load((tmp_path / "robots/unitree/g1.yaml").read_text())
@@ -60,7 +60,7 @@ def test_new_refuses_to_overwrite_and_leaves_everything(tmp_path, capsys):
     assert run(args, capsys)[0] == 0
     yml = tmp_path / "robots/acme/arm.yaml"
     yml.write_text(yml.read_text().replace("state_decimation: 1", "state_decimation: 3"))
-    code, out, err = run(args, capsys)
+    code, _, err = run(args, capsys)
     assert code == 2 and "already exists" in err and "--force" in err
     assert "state_decimation: 3" in yml.read_text()
     assert run([*args, "--force"], capsys)[0] == 0
@@ -72,7 +72,7 @@ def test_new_refuses_to_overwrite_and_leaves_everything(tmp_path, capsys):
     ("acme", "int", "C++ keyword"), ("acme", "Arm", "lowercase"),
 ])
 def test_new_rejects_unsafe_names_before_writing(tmp_path, capsys, vendor, robot, words):
-    code, out, err = run(["new", "--vendor", vendor, "--robot", robot, "--urdf", str(FIXTURES / "simple_arm.urdf"),
+    code, _, err = run(["new", "--vendor", vendor, "--robot", robot, "--urdf", str(FIXTURES / "simple_arm.urdf"),
                           "--project", str(tmp_path)], capsys)
     assert code == 2 and words in err and err.count("\n") == 1
     assert not (tmp_path / "robots").exists() and not (tmp_path / "generated").exists()
@@ -100,7 +100,7 @@ def test_inspect_with_vendor_profile_orders_like_the_sdk(capsys):
 
 
 def test_inspect_missing_file_is_exit_2(tmp_path, capsys):
-    code, out, err = run(["inspect", "--urdf", str(tmp_path / "none.urdf")], capsys)
+    code, _, err = run(["inspect", "--urdf", str(tmp_path / "none.urdf")], capsys)
     assert code == 2 and "none.urdf" in err and err.count("\n") == 1
 
 

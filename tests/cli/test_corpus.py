@@ -14,7 +14,8 @@ Anything else — a crash, a driver that does not compile, a new rejection, or a
 that disappeared — fails the test.
 
 The per-file outcome and the summary ("N descriptions: G generated, C of them compiled, R rejected with
-reasons") are printed (visible without -s) and written to tests/.corpus_report.txt.
+reasons") are shown in the run's "reports" summary section (tests/conftest.py: report) and written to
+tests/.corpus_report.txt.
 """
 from __future__ import annotations
 
@@ -163,7 +164,7 @@ def compile_set(tmp_path: Path, generated: list[tuple[int, Outcome]]) -> list[tu
 
 
 @pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
-def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(tmp_path, capsys, record_property):
+def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(tmp_path, report, record_property):
     start = time.perf_counter()
     descriptions = corpus()
     erd = [d for d in descriptions if d.label.startswith("example-robot-data:")]
@@ -221,7 +222,6 @@ def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(t
     text = "\n".join(report) + "\n"
     REPORT.write_text(text)
     record_property("corpus_summary", summary)
-    with capsys.disabled():
-        print(f"\n{text}", end="")
+    report(text)
 
     assert not failures, f"{summary}\n" + "\n".join(failures)

@@ -463,7 +463,7 @@ def test_yaml_motor_count_above_the_limit(project):
     generate_rejected(project, file=YAML_REL, line=5, key="motor_count", words=("out of range 1..4096",))
 
 
-# ---------------------------------------------------------------- ros2_control's own rules (mimic, continuous, prismatic, tags)
+# -------------------------------------------------------- ros2_control's own rules (mimic, continuous, prismatic, tags)
 def _description_joints(root: Path, robot: str) -> dict[str, etree._Element]:
     path = root / "generated" / PACKAGE / "description" / f"{robot}.ros2_control.xacro"
     tree = etree.parse(str(path))

@@ -14,6 +14,7 @@
 """
 from __future__ import annotations
 
+import itertools
 import string
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
@@ -70,7 +71,7 @@ joint_names = st.one_of(
 xml_text = st.lists(
     st.one_of(
         st.characters(codec="utf-8", exclude_categories=("Cs", "Cc", "Cn")),
-        st.sampled_from(list("\"'\\$&<>{}()*/#?\n\t") + ["${x}", "$(arg y)", "*/", "--", "??=", "\\n"]),
+        st.sampled_from([*list("\"'\\$&<>{}()*/#?\n\t"), "${x}", "$(arg y)", "*/", "--", "??=", "\\n"]),
     ),
     min_size=1, max_size=10,
 ).map("".join).filter(lambda s: s.strip() == s and s != "")
@@ -173,7 +174,7 @@ def robot_specs(draw, vendor: str, robot: str) -> RobotSpec:
         links[draw(st.integers(0, len(links) - 1))] = draw(xml_text.map(lambda s: f"imu{s}"))
         assume(len(set(links)) == len(links))
     joints: list[JointSpec] = []
-    for i, (kind, name) in enumerate(zip(kinds, names)):
+    for i, (kind, name) in enumerate(zip(kinds, names, strict=False)):
         parent = draw(st.integers(0, i))  # links[0] is the root; joint i connects to links[i + 1]
         jtype = kind if kind != "mimic" else draw(st.sampled_from(["revolute", "prismatic", "continuous"]))
         limits = None
@@ -199,13 +200,13 @@ def robot_specs(draw, vendor: str, robot: str) -> RobotSpec:
     if transport == "unitree_dds":
         motor_count = min(motor_count, UNITREE_SLOTS[family])
     indices = draw(st.permutations(range(motor_count)))[:len(mapped)]
-    joint_map = dict(zip(mapped, indices))
+    joint_map = dict(zip(mapped, indices, strict=False))
 
     groups: list[tuple[str, int]] = []
     if transport == "agibot_topics":
         cuts = sorted(draw(st.sets(st.integers(1, motor_count - 1), max_size=3))) if motor_count > 1 else []
         bounds = [0, *cuts, motor_count]
-        groups = [(f"group{k}", hi - lo) for k, (lo, hi) in enumerate(zip(bounds, bounds[1:]))]
+        groups = [(f"group{k}", hi - lo) for k, (lo, hi) in enumerate(itertools.pairwise(bounds))]
 
     imu = None
     if draw(st.booleans()):
@@ -240,7 +241,7 @@ def projects(draw, max_robots: int = 3) -> list[RobotSpec]:
     robots = draw(st.lists(robot_names, min_size=count, max_size=count, unique=True)
                   .filter(lambda rs: len({pascal_case(r) for r in rs}) == len(rs)))
     vendors = draw(st.lists(vendor_names, min_size=count, max_size=count))
-    return [draw(robot_specs(v, r)) for v, r in zip(vendors, robots)]
+    return [draw(robot_specs(v, r)) for v, r in zip(vendors, robots, strict=False)]
 
 
 def write_robot(root: Path, spec: RobotSpec, data: dict | None = None) -> Path:

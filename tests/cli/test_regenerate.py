@@ -167,7 +167,7 @@ def test_user_region_edits_survive_three_regenerations(project, capsys):
     previous = tree(project)
     for round_, edit in enumerate(edits, start=1):
         edit()
-        code, out, err = cli(capsys, project, "generate")
+        code, _, err = cli(capsys, project, "generate")
         assert code == 0, err
         now = tree(project)
         # Every edit changes the driver source; the header only when its content does (banners carry no hashes).
@@ -231,8 +231,9 @@ def test_force_overwrites_and_keeps_numbered_backups(project, capsys):
     backup_dir = project / "generated/.rhi-gen-backup"
     backup = backup_dir / "robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp.1"
     assert backup.read_bytes() == edited
-    assert "kept your version of robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp in " \
-           "generated/.rhi-gen-backup/robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp.1" in out
+    kept = ("kept your version of robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp in "
+            "generated/.rhi-gen-backup/robot_hardware_interface/include/robot_hardware_interface/unitree/g1.hpp.1")
+    assert kept in out
     assert hpp.read_bytes() == clean
     assert region_bodies((project / G1_CPP).read_text())["callbacks"] == "void keep_me() {}\n"
     # colcon and git leave the backups alone; nothing of them is inside the package
@@ -282,8 +283,8 @@ def test_removed_robot_with_user_code_is_refused(project, capsys):
     assert "user region 'callbacks'" in err and "no longer generated" in err
     assert cli(capsys, project, "generate", "--force")[0] == 0
     assert not (project / G1_CPP).exists() and not (project / G1_HPP).exists()
-    assert "void arm_brakes() {}" in (project / "generated/.rhi-gen-backup/robot_hardware_interface/src/unitree/g1.cpp.1"
-                               ).read_text()
+    backup = project / "generated/.rhi-gen-backup/robot_hardware_interface/src/unitree/g1.cpp.1"
+    assert "void arm_brakes() {}" in backup.read_text()
     assert cli(capsys, project, "check")[0] == 0
 
 
@@ -374,7 +375,7 @@ def test_generate_one_robot_keeps_the_others_stale(project, capsys):
 
 def test_new_robot_carries_shared_regions_and_records_itself(project, capsys):
     fill_region(project / CMAKE, "targets", "# our own target\n")
-    code, out, err = cli(capsys, project, "new", "--vendor", "acme", "--robot", "arm", "--urdf",
+    code, _, err = cli(capsys, project, "new", "--vendor", "acme", "--robot", "arm", "--urdf",
                          str(project / "robots/engineai/pm01.urdf"))
     assert code == 0, err
     assert region_bodies((project / CMAKE).read_text())["targets"] == "# our own target\n"
@@ -406,7 +407,7 @@ def test_template_error_halfway_writes_nothing(project, capsys, monkeypatch):
     original = pipeline_generate.render_package
     monkeypatch.setattr(pipeline_generate, "render_package",
                         lambda models, **kwargs: original(models, env_factory=broken_env, **kwargs))
-    code, out, err = cli(capsys, project, "generate")
+    code, _, err = cli(capsys, project, "generate")
     assert code == 2
     assert "template robot/test.cpp.j2 failed" in err and "no_such_field" in err
     assert len(rendered) > 8 and rendered[-1] == "robot/test.cpp.j2"  # halfway: the package and a driver done
@@ -422,7 +423,7 @@ def test_bad_yaml_changes_nothing(project, capsys):
     rename_joint(project)
     (project / "robots/engineai/pm01.yaml").write_text("vendor: engineai\nrobot: pm01\n  bad: indent\n")
     before = tree(project)
-    code, out, err = cli(capsys, project, "generate")
+    code, _, err = cli(capsys, project, "generate")
     assert code == 2 and err.strip().splitlines()[-1].startswith("error: robots/engineai/pm01.yaml:")
     assert tree(project) == before
 

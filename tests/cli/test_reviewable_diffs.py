@@ -60,8 +60,8 @@ def respell(text: str) -> str:
     text = "# a new header comment\n\n" + text.replace("vendor: unitree", "vendor: 'unitree'  # quoted now")
     text = text.replace("  state_decimation: 1\n", "  state_decimation: 1   # every frame\n\n")
     text = re.sub(r"^transport_options:\n((?:  .*\n)+)", "", text, flags=re.M)  # moved to the end, as flow
-    return text + ("transport_options: {family: hg, lowcmd_topic: rt/lowcmd, lowstate_topic: \"rt/lowstate\", sdk_slots: 35,"
-                   " domain_id: 0, mode_pr: 0, release_motion_control: false}\n")
+    return text + ("transport_options: {family: hg, lowcmd_topic: rt/lowcmd, lowstate_topic: \"rt/lowstate\","
+                   " sdk_slots: 35, domain_id: 0, mode_pr: 0, release_motion_control: false}\n")
 
 
 def test_respelled_yaml_has_the_same_fingerprint_and_a_real_edit_does_not():
@@ -106,9 +106,9 @@ def test_version_bump_changes_only_the_manifest_and_check_says_so(project, capsy
     code, out, err = cli(capsys, project, "check")
     assert code == 1
     version_lines = [line for line in out.splitlines() if "99.0.0" in line]
-    assert version_lines == [f"generated/ was made by rhi-gen {old_version}, not by this rhi-gen 99.0.0: "
-                             "`rhi-gen generate` records the new version and rewrites only files whose content "
-                             "changes"]
+    assert version_lines == [(f"generated/ was made by rhi-gen {old_version}, not by this rhi-gen 99.0.0: "
+                              "`rhi-gen generate` records the new version and rewrites only files whose content "
+                              "changes")]
     assert "stale: " not in out and "---" not in out, "a version bump alone is not an input or file change"
     assert tree(project) == before  # check never writes
 

@@ -57,7 +57,7 @@ def test_data_buffer_contract_and_stress(stress_runs, flavour):
     assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{flavour}: {run.describe()}"
     lines = re.findall(r"^stress (\d) producer\(s\): (\d+) hand-offs, (\d+) distinct frames consumed, torn (\d+), "
                        r"changed while held (\d+), out of order (\d+)", run.stdout, re.M)
-    assert [l[0] for l in lines] == ["1", "2"], run.stdout
+    assert [found[0] for found in lines] == ["1", "2"], run.stdout
     for producers, handed, consumed, torn, changed, backwards in lines:
         assert int(handed) == FRAMES, f"{producers} producer(s): {handed} hand-offs"
         assert int(consumed) > 0

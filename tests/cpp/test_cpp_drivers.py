@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import re
 import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -250,7 +251,7 @@ def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
                   r"write\(\) (\d+), command writer (\d+)$", run.stdout, re.M)
     assert m, f"{label}: no allocation line in the harness output:\n{run.stdout[-3000:]}"
     counts = dict(zip(("state callback", "IMU callback", "read()", "write()", "command writer"),
-                      map(int, m.groups()[1:])))
+                      map(int, m.groups()[1:]), strict=False))
     assert all(v == 0 for v in counts.values()), f"{label}: heap allocations after activation: {counts}"
 
 
@@ -283,10 +284,11 @@ def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro,
     (b.data_dir / "robot_data.hpp").write_text(b.data_header, encoding="utf-8")
     link, steps = build_harness(cpp_builder, b, "plain", distro=distro)
     failed = [s for s in steps if not s.ok]
-    assert not failed and link.ok, f"the unfilled driver does not build ({distro}):\n{(failed or [link])[0].stderr[:6000]}"
+    assert not failed and link.ok, \
+        f"the unfilled driver does not build ({distro}):\n{(failed or [link])[0].stderr[:6000]}"
     run = run_binary_retrying(link.path)
     assert run.returncode == 0 and run.failed == 0 and run.sections.get("unfilled", (0, 0))[0] > 0, run.describe()
     refused = [line for line in run.stdout.splitlines() if line.startswith("refused: ")]
-    assert refused == [f"refused: custom transport: region 'transport_connect' of src/{b.model.vendor}/"
-                       f"{b.model.robot}.cpp is not filled in: refusing to activate (write the SDK calls there and "
-                       "delete its RHI_CUSTOM_NOT_FILLED_IN line)"], refused
+    assert refused == [(f"refused: custom transport: region 'transport_connect' of src/{b.model.vendor}/"
+                        f"{b.model.robot}.cpp is not filled in: refusing to activate (write the SDK calls there and "
+                        "delete its RHI_CUSTOM_NOT_FILLED_IN line)")], refused

@@ -57,7 +57,7 @@ def _compiler() -> str:
     return os.environ.get("CXX", "g++")
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _gmock_problem(cxx: str) -> str | None:
     """Why <gmock/gmock.h> / <gtest/gtest.h> cannot be compiled with ``cxx`` (None when they can)."""
     probe = subprocess.run([cxx, "-std=c++17", "-fsyntax-only", "-x", "c++", "-"],

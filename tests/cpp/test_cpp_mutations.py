@@ -116,7 +116,8 @@ MUTATIONS = (
     Mutation("parameter_range", "an out-of-range parameter (0) is accepted", "common/hardware_parameters.hpp.j2",
              r"parsed < min \|\| ", "", ("parameters",)),
     Mutation("hot_path_allocation", "write() allocates", "common/system_driver.hpp.j2",
-             r"(\n[ \t]*fetchCommandValues\(\);\n)", r"\1    { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }\n",
+             r"(\n[ \t]*fetchCommandValues\(\);\n)",
+             r"\1    { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }\n",
              ("allocations",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              "common/data_buffer.hpp.j2",
@@ -161,7 +162,8 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
     templates = _mutated_templates(root, mutation)
     robots = mutation.robots if mutation else CONTROL_ROBOTS
     package = render_test_package(root, only=robots or ROBOTS[:1], template_dir=templates,
-                                  extra_robots=any(label not in ROBOTS for label in robots))  # the harness's test robots
+                                  # the harness's test robots
+                                  extra_robots=any(label not in ROBOTS for label in robots))
     outcomes = []
     if mutation is None or mutation.data_buffer:
         link = compile_data_buffer_stress(builder, package.package_dir, "plain")
@@ -186,7 +188,7 @@ def outcomes(tmp_path_factory):
     start = time.monotonic()
     results = run_parallel(jobs, lambda job: _run_one(job, tmp_root, builder))
     elapsed = time.monotonic() - start
-    by_id = {(job.id if job else "control"): result for job, result in zip(jobs, results)}
+    by_id = {(job.id if job else "control"): result for job, result in zip(jobs, results, strict=False)}
     by_id["_seconds"] = elapsed  # type: ignore[assignment]
     return by_id
 

@@ -121,7 +121,9 @@ def _snippet_meta(snippet: Path) -> tuple[str | None, list[str]]:
     declared = None
     if len(lines) > 1 and lines[1].startswith("// distros: "):
         declared = lines[1][len("// distros: "):].split()
-    return expected, declared if declared is not None and set(declared) - set(DISTROS) else _distros_for(snippet, declared)
+    if declared is not None and set(declared) - set(DISTROS):
+        return expected, declared
+    return expected, _distros_for(snippet, declared)
 
 
 SNIPPET_CASES = [(s, d) for s in COMPILE_FAIL for d in _snippet_meta(s)[1]]

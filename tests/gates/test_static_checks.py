@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import subprocess
 import sys
-from pathlib import Path
 
 from tests.support.repo import REPO
 
@@ -13,7 +12,7 @@ def _run(*args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_ruff_is_clean():
-    result = _run("ruff", "check", "--no-cache", "rhi_gen", "benchmarks")
+    result = _run("ruff", "check", "--no-cache", "rhi_gen", "benchmarks", "scripts", "tests")
     assert result.returncode == 0, result.stdout + result.stderr
 
 

@@ -15,8 +15,8 @@ from tests.support.repo import UPSTREAM_URDF
 EXPECTED_REJECTIONS: dict[str, tuple[tuple[str, ...], str]] = {
     "example-robot-data:alex_description/urdf/alex_psyonic_hands.urdf": (
         (":1037:", "mimics 'index_q1', which is not a joint of this URDF", "did you mean 'Left_index_q1'?"),
-        "the <mimic> tags name 'index_q1', 'middle_q1', ... but the joints are called 'Left_index_q1', "
-        "'Right_index_q1', ...: the mimic targets do not exist"),
+        ("the <mimic> tags name 'index_q1', 'middle_q1', ... but the joints are called 'Left_index_q1', "
+         "'Right_index_q1', ...: the mimic targets do not exist")),
     "example-robot-data:hector_description/robots/quadrotor_base.urdf": (
         ("has no actuated joints",),
         "a quadrotor body: one link, no joint at all, so nothing a ros2_control driver could command"),
@@ -25,17 +25,17 @@ EXPECTED_REJECTIONS: dict[str, tuple[tuple[str, ...], str]] = {
         "a drone whose rotor joints are all type=\"fixed\": nothing a ros2_control driver could command"),
     "example-robot-data:ur_description/urdf/ur3.urdf": (
         (":6:", "<robot> has no name attribute"),
-        "the root <robot> element has no name; urdfdom (and so robot_state_publisher and ros2_control) "
-        "rejects such a file"),
+        ("the root <robot> element has no name; urdfdom (and so robot_state_publisher and ros2_control) "
+         "rejects such a file")),
     "example-robot-data:hector_description/robots/quadrotor_base.urdf.xacro": (
         ("<robot> has no name attribute",),
-        "a xacro macro library (it only defines quadrotor_base_macro, never calls it): not a robot; its "
-        "<robot> has no name"),
+        ("a xacro macro library (it only defines quadrotor_base_macro, never calls it): not a robot; its "
+         "<robot> has no name")),
     "example-robot-data:hector_description/robots/quadrotor_base.xacro": (
         ("cannot include 'package://example-robot-data/robots/hector_description/urdf/quadrotor_base.urdf.xacro'",
          "xacro does not resolve package:// URLs"),
-        "xacro:include with a package:// URL (xacro itself cannot open it) that points at a file the "
-        "package does not contain (it lives in robots/, not urdf/)"),
+        ("xacro:include with a package:// URL (xacro itself cannot open it) that points at a file the "
+         "package does not contain (it lives in robots/, not urdf/)")),
 }
 
 

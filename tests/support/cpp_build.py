@@ -11,10 +11,10 @@ import shutil
 import subprocess
 import threading
 import time
+from collections.abc import Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterable, Sequence
 
 import pytest
 
@@ -389,8 +389,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr bool kHasGains = {'true' if has_gains else 'false'};  // stiffness/damping travel",
         "// mode: 0 position-commanded, 1 velocity-commanded (a continuous joint unless command_modes says",
         "// otherwise); kp/kd: the YAML's default_gains (kp is 0 for a velocity-commanded joint)",
-        "struct Joint { const char* name; size_t slot; size_t group; double lower; double upper; double velocity;"
-        " double effort; int mode; double kp; double kd; };",
+        ("struct Joint { const char* name; size_t slot; size_t group; double lower; double upper; double velocity;"
+         " double effort; int mode; double kp; double kd; };"),
         "inline constexpr Joint kJoints[] = {",
     ]
     for name, slot in joint_map.items():
@@ -403,12 +403,12 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
             f"    {{{_c_string(name)}, {slot}, {group_of(slot)}, "
             f"{_c_double(-math.inf if lower is None else lower)}, {_c_double(upper)}, "
             f"{_c_double(limits.velocity if limits else None)}, {_c_double(limits.effort if limits else None)}, "
-            f"{1 if mode == 'velocity' else 0}, {repr(float(kp) if mode == 'position' else 0.0)}, {repr(float(kd))}}},")
+            f"{1 if mode == 'velocity' else 0}, {float(kp) if mode == 'position' else 0.0!r}, {float(kd)!r}}},")
     lines += [
         "};",
         f"inline constexpr size_t kJointCount = {len(joint_map)};",
-        "struct Group { const char* name; size_t offset; size_t size; const char* command_topic;"
-        " const char* state_topic; };",
+        ("struct Group { const char* name; size_t offset; size_t size; const char* command_topic;"
+         " const char* state_topic; };"),
         "inline constexpr Group kGroups[] = {",
         *(f"    {{{_c_string(n)}, {o}, {s}, {_c_string(c)}, {_c_string(st)}}}," for n, o, s, c, st in groups),
         "};",
@@ -425,12 +425,12 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr uint32_t kDefaultDecimation = {params.state_decimation};",
         f"inline constexpr char kDefaultNetworkInterface[] = {_c_string(params.network_interface)};",
         "// what the ros2_control description passes",
-        f"inline constexpr uint64_t kDescriptionPeriodUs = "
-        f"{int(description.parameters.get('command_writer_period_us', params.command_writer_period_us))};",
-        f"inline constexpr uint64_t kDescriptionTimeoutMs = "
-        f"{int(description.parameters.get('state_timeout_ms', params.state_timeout_ms))};",
-        f"inline constexpr char kDescriptionNetworkInterface[] = "
-        f"{_c_string(description.parameters.get('network_interface', params.network_interface))};",
+        (f"inline constexpr uint64_t kDescriptionPeriodUs = "
+         f"{int(description.parameters.get('command_writer_period_us', params.command_writer_period_us))};"),
+        (f"inline constexpr uint64_t kDescriptionTimeoutMs = "
+         f"{int(description.parameters.get('state_timeout_ms', params.state_timeout_ms))};"),
+        (f"inline constexpr char kDescriptionNetworkInterface[] = "
+         f"{_c_string(description.parameters.get('network_interface', params.network_interface))};"),
         "// the <ros2_control> block of the expanded description, as records (see make_hardware_info())",
         "struct InfoRecord { char kind; const char* a; const char* b; const char* c; };",
         "inline constexpr InfoRecord kInfoRecords[] = {",

@@ -56,7 +56,7 @@ def require_dir(dist: str, kind: str, package: str) -> Path:
     return path
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _wheel_include_dirs() -> tuple[Path, ...] | str:
     dirs, missing = [], []
     for dist, package in HEADER_WHEELS.items():

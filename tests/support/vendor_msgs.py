@@ -157,7 +157,7 @@ def generated_root() -> Path:
     return target
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _include_dirs() -> tuple[Path, ...]:
     root = generated_root()
     return tuple(root / "include" / p.name for p in PACKAGES)

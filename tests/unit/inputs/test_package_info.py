@@ -46,7 +46,8 @@ def test_project_file_owns_every_generated_file(robots_project, capsys):
     (robots_project / "robots/package.yaml").write_text("copyright: 2027 Acme Robotics GmbH\n")
     assert main(["check", "--project", str(robots_project)]) == 1
     assert _generate(robots_project, capsys)[0] == 0
-    assert (robots_project / PKG / "src/unitree/g1.cpp").read_text().startswith("// Copyright 2027 Acme Robotics GmbH\n")
+    g1 = (robots_project / PKG / "src/unitree/g1.cpp").read_text()
+    assert g1.startswith("// Copyright 2027 Acme Robotics GmbH\n")
 
 
 @pytest.mark.parametrize(("text", "words"), [

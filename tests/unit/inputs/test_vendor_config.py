@@ -64,7 +64,8 @@ def test_agibot_groups_get_offsets():
 
 
 @pytest.mark.parametrize("text, line, key, words", [
-    (BASE.replace("transport: generic_topics", "transport: generic_topic"), 4, "transport", "did you mean 'generic_topics'"),
+    (BASE.replace("transport: generic_topics", "transport: generic_topic"), 4, "transport",
+     "did you mean 'generic_topics'"),
     (BASE + "joint_mapp: {}\n", 10, "joint_mapp", "did you mean 'joint_map'"),
     (BASE.replace("  j3: 2", "  j3: 1"), 9, "joint_map.j3", "already used by 'j2'"),
     (BASE.replace("  j3: 2", "  j3: 3"), 9, "joint_map.j3", "out of range 0..2"),
@@ -81,11 +82,13 @@ def test_agibot_groups_get_offsets():
     (BASE.replace("vendor: acme", "vendor: std"), 1, "vendor", "clash"),
     (BASE.replace("robot: arm", "robot: Arm"), 2, "robot", "lowercase"),
     (BASE + "parameters:\n  state_decimation: 0\n", 11, "parameters.state_decimation", "out of range"),
-    (BASE + "parameters:\n  command_writer_period_us: fast\n", 11, "parameters.command_writer_period_us", "whole number"),
+    (BASE + "parameters:\n  command_writer_period_us: fast\n", 11, "parameters.command_writer_period_us",
+     "whole number"),
     (BASE + "parameters:\n  enable_monitor: maybe\n", 11, "parameters.enable_monitor", "true or false"),
     (BASE + "parameters:\n  network_iface: eth0\n", 11, "parameters.network_iface", "did you mean 'network_interface'"),
     (BASE + "transport_options:\n  lowcmd_topic: rt/lowcmd\n", 11, "transport_options.lowcmd_topic", "unknown key"),
-    (BASE + "transport_options:\n  state_topic: 'bad topic'\n", 11, "transport_options.state_topic", "not a valid ROS topic"),
+    (BASE + "transport_options:\n  state_topic: 'bad topic'\n", 11, "transport_options.state_topic",
+     "not a valid ROS topic"),
     (BASE + "unmapped_joints: [j1]\n", 10, "unmapped_joints[0]", "also in joint_map"),
     (BASE + "imu: {enabled: yes please}\n", 10, "imu.enabled", "true or false"),
 ])
@@ -97,8 +100,8 @@ def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
 
 
 def test_unitree_motor_count_above_slots(tmp_path):
-    text = BASE.replace("transport: generic_topics", "transport: unitree_dds").replace("motor_count: 3", "motor_count: 36") + (
-        "transport_options: {family: hg}\n")
+    text = (BASE.replace("transport: generic_topics", "transport: unitree_dds")
+            .replace("motor_count: 3", "motor_count: 36") + "transport_options: {family: hg}\n")
     err = error_of(tmp_path, text)
     assert err.key == "motor_count" and "35 motor slots" in str(err)
 

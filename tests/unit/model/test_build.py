@@ -66,7 +66,7 @@ def test_joint_not_in_urdf_suggests_the_closest(tmp_path):
 
 def test_unmapped_actuated_joint_is_an_error_unless_listed(tmp_path):
     body = "joint_map:\n  shoulder_pan: 0\n  shoulder_lift: 1\n"
-    with pytest.raises(ConfigError, match="1 actuated joint.*'elbow'.*unmapped_joints"):
+    with pytest.raises(ConfigError, match=r"1 actuated joint.*'elbow'.*unmapped_joints"):
         model_for(tmp_path, FIXTURES / "simple_arm.urdf", body)
     m = model_for(tmp_path, FIXTURES / "simple_arm.urdf", body + "unmapped_joints: [elbow]\n")
     assert m.unmapped_joints == ("elbow",) and len(m.joints) == 2
@@ -120,7 +120,8 @@ def test_joint_name_policy(name, ok):
 def test_hostile_joint_name_is_rejected_with_urdf_line(tmp_path):
     urdf = tmp_path / "q.urdf"
     urdf.write_text('<robot name="r">\n<link name="a"/>\n<link name="b"/>\n'
-                    '<joint name="kn&quot;ee" type="continuous"><parent link="a"/><child link="b"/></joint>\n</robot>\n')
+                    '<joint name="kn&quot;ee" type="continuous"><parent link="a"/><child link="b"/></joint>\n'
+                    '</robot>\n')
     with pytest.raises(ConfigError) as info:
         model_for(tmp_path, urdf, "joint_map:\n  'kn\"ee': 0\n", motor_count=1)
     assert "contains the character '\"'" in str(info.value) and "line 4" in str(info.value)

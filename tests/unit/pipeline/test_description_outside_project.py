@@ -203,7 +203,7 @@ MESH_XACRO = """<?xml version="1.0"?>
   <link name="l1"/>
   <joint name="j1" type="continuous"><parent link="base_link"/><child link="l1"/></joint>
 </robot>
-"""
+"""  # noqa: E501 (one element a line)
 
 
 def test_find_in_a_mesh_inside_the_project_checks_in_a_clone_elsewhere(tmp_path):

@@ -26,7 +26,8 @@ def test_render_helper_and_parser_agree():
 
 
 def test_styles_hash_and_xml_comments():
-    text = _region("a", "x\n", "#") + "<!-- rhi-gen:begin-user-region b -->\n<tag/>\n<!-- rhi-gen:end-user-region b -->\n"
+    xml_region = "<!-- rhi-gen:begin-user-region b -->\n<tag/>\n<!-- rhi-gen:end-user-region b -->\n"
+    text = _region("a", "x\n", "#") + xml_region
     assert region_bodies(text, "f") == {"a": "x\n", "b": "<tag/>\n"}
 
 

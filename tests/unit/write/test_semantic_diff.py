@@ -97,7 +97,7 @@ def test_new_and_removed_robots():
     other = replace(BASE, key="acme/leg")
     diffs = diff_manifest(Manifest("0.1.0", {"acme/leg": other}, {}), [BASE], removed_keys=["acme/leg"])
     assert [(d.key, d.status) for d in diffs] == [("acme/arm", "new"), ("acme/leg", "removed")]
-    assert diffs[0].lines() == ["acme/arm: new robot (4 joints, 4 motors, float; robots/acme/arm.yaml, "
-                                "robots/acme/arm.urdf)"]
+    assert diffs[0].lines() == [("acme/arm: new robot (4 joints, 4 motors, float; robots/acme/arm.yaml, "
+                                 "robots/acme/arm.urdf)")]
     assert "robot removed" in diffs[1].lines()[0]
     assert [d.status for d in diff_manifest(None, [BASE])] == ["new"]

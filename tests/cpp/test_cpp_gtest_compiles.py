@@ -99,7 +99,7 @@ def package_dir(tmp_path_factory) -> Path:
 # Humble (interfaces over driver-owned doubles, the ResourceManager validates the exports) and
 # Rolling/Lyrical (framework-owned handles, a ResourceManager with a clock and a logger that creates
 # the plugin through pluginlib and rejects joints missing from the URDF); Jazzy and Kilted share
-# Rolling's path and are covered by the driver harness (tests/test_cpp_drivers.py).
+# Rolling's path and are covered by the driver harness (tests/cpp/test_cpp_drivers.py).
 GTEST_DISTROS = ("humble", "jazzy", "rolling")  # 2.x, 4.x, 6.x; the custom robot on every distro
 JOBS = [(label, distro) for label in LABELS for distro in GTEST_DISTROS] + \
     [(label, distro) for label in CUSTOM_LABELS for distro in DISTROS]

@@ -1,6 +1,6 @@
 """The C++ stand-ins (tests/cpp/standins), for every ROS 2 distro of tests.support.cpp_build.DISTROS: they
 compile warning-free, behave as documented, and reject what that distro's real APIs reject.
-Messages are the real ROS 2 headers (tests/ros_msgs.py, tests/vendor_msgs.py); with the
+Messages are the real ROS 2 headers (tests/support/ros_msgs.py, tests/support/vendor_msgs.py); with the
 rosidl-generated vendor messages the self-test also checks them (skipped, with the reason, when
 ../shared is missing).
 
@@ -312,7 +312,7 @@ INDIRECT_ONLY = {
 }
 
 # Headers only the generated gtest (templates/robot/test.cpp.j2) includes, never a driver. On
-# Humble tests/test_cpp_gtest_compiles.py compiles and runs them; the 4.x+ self-test runs its own.
+# Humble tests/cpp/test_cpp_gtest_compiles.py compiles and runs them; the 4.x+ self-test runs its own.
 GTEST_ONLY = {
     False: {
         "hardware_interface/resource_manager.hpp",

@@ -1,4 +1,4 @@
-"""tests/ament_lint.py runs the real ament_cpplint / ament_uncrustify and reads their findings right.
+"""tests/support/ament_lint.py runs the real ament_cpplint / ament_uncrustify and reads their findings right.
 
 A small package in the ROS 2 style gives no finding; the same package with known defects gives exactly
 the findings expected (file, line, rule). The README-ready command line runs the same linters.

@@ -1,11 +1,11 @@
 """A freshly generated package passes the ROS 2 linters `colcon test` runs (ament_lint_auto):
-zero ament_cpplint and zero ament_uncrustify findings (ROS 2 default configuration, tests/ament_lint.py).
+zero ament_cpplint and zero ament_uncrustify findings (ROS 2 default configuration, tests/support/ament_lint.py).
 
 The package holds the reference robots of robots/ plus the harness's test robots (generic_topics
 tests/cpp/harness/robots/acme/scara, unitree go family robots/unitree/go2w, custom odri/solo12 with
 its regions as generated), so every transport's templates, both unitree message families included,
 are linted; the custom robot is linted again with the README's toy-bus regions filled in. To see and fix the
-findings by hand: tests/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.support.ament_lint DIR`.
+findings by hand: tests/support/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.support.ament_lint DIR`.
 """
 from __future__ import annotations
 

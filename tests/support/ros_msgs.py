@@ -4,7 +4,7 @@ The wheels (pyproject.toml, `pip install -e '.[test]'`) install the ROS 2 layout
 prefix: headers under `<prefix>/include/<pkg>/<pkg>/...`, interface files under
 `<prefix>/share/<pkg>/msg/`. A generated driver is compiled against these headers exactly as a colcon
 build would (one include folder per package). Vendor messages are generated from them by
-tests/vendor_msgs.py.
+tests/support/vendor_msgs.py.
 
 A missing wheel fails the test that needs it: it is never a reason to skip.
 """

@@ -3,7 +3,7 @@ writes a driver whose SDK glue is user regions, each function region marked "not
 regions survive a regeneration after a URDF change byte for byte, and `check` accepts them.
 
 The C++ side (the unfilled driver refuses activation in one line; the toy bus filled in runs the
-whole harness on every distro and sanitizer) is in tests/test_cpp_drivers.py."""
+whole harness on every distro and sanitizer) is in tests/cpp/test_cpp_drivers.py."""
 from __future__ import annotations
 
 import re

@@ -43,6 +43,7 @@ from tests.support.cpp_build import (
     run_compiler,
     standin_flags,
 )
+from tests.support.repo import copy_project
 
 PACKAGE = "robot_hardware_interface"
 LABELS = project_robot_labels(extra_robots=False)  # vendor/robot of robots/*/*.yaml
@@ -86,7 +87,7 @@ def _toolchain_ok() -> bool:
 def package_dir(tmp_path_factory) -> Path:
     """robots/ rendered into a temporary project (generated/ of the repository is not touched)."""
     project = tmp_path_factory.mktemp("gtest_project")
-    shutil.copytree(REPO / "robots", project / "robots")
+    copy_project(project)
     for label in CUSTOM_LABELS:
         vendor, robot = label.split("/")
         (project / "robots" / vendor).mkdir(exist_ok=True)

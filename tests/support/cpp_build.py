@@ -522,7 +522,8 @@ class CppBuilder:
             result = CompileResult(True, out, cmd, cached=True)
         else:
             start = time.monotonic()
-            tmp = out.with_name(out.name + ".tmp")
+            # per process: sessions sharing RHI_CPP_CACHE must not write one file (an exec of it fails: ETXTBSY)
+            tmp = out.with_name(f"{out.name}.{os.getpid()}.tmp")
             full = [*cmd, "-o", str(tmp)]
             proc = subprocess.run(full, capture_output=True, text=True, env=ENV_C)
             seconds = time.monotonic() - start

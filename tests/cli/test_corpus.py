@@ -206,20 +206,20 @@ def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(t
                + (f", {len(outcomes) - len(ok) - len(rejected)} FAILED" if failures else "")
                + f" ({elapsed:.1f} s: {generate_time:.1f} s rhi-gen new, {elapsed - generate_time:.1f} s g++ "
                  f"with {COMPILE_WORKERS} workers)")
-    report = ["rhi-gen corpus: example-robot-data"
-              + (f" + {UPSTREAM_URDF}" if UPSTREAM_URDF.is_dir() else " (shared upstream folder absent)")]
+    lines = ["rhi-gen corpus: example-robot-data"
+             + (f" + {UPSTREAM_URDF}" if UPSTREAM_URDF.is_dir() else " (shared upstream folder absent)")]
     for o in outcomes:
         mark = {"generated": "NO-COMPILE" if o.compile_error else "generated" if o.status_note else "compiled"
                 }.get(o.status, o.status)
         if o.problems:
             mark += " (PROBLEM)"
-        report.append(f"  {mark:<12} {o.description.label}" + (f"\n               {o.reason}" if o.reason else ""))
-    report.append("rejected, each a genuine defect of the input:")
+        lines.append(f"  {mark:<12} {o.description.label}" + (f"\n               {o.reason}" if o.reason else ""))
+    lines.append("rejected, each a genuine defect of the input:")
     for o in rejected:
         why = EXPECTED_REJECTIONS.get(o.description.label, ((), "NOT EXPECTED"))[1]
-        report.append(f"  {o.description.label}: {why}")
-    report.append(summary)
-    text = "\n".join(report) + "\n"
+        lines.append(f"  {o.description.label}: {why}")
+    lines.append(summary)
+    text = "\n".join(lines) + "\n"
     REPORT.write_text(text)
     record_property("corpus_summary", summary)
     report(text)

@@ -7,7 +7,7 @@ Run (from the repository root):
 It renders the package of the reference robots of robots/ (Unitree G1 unitree_dds, AgiBot X2
 agibot_topics, EngineAI PM01 engineai_topics) into a temporary folder, compiles
 benchmarks/cpp/bench_hot_paths.cpp per robot (-O2, like the harness's `plain` flavour) against the
-C++ stand-ins and the real ROS message headers (tests/cpp_build.py), and drives each driver's REAL
+C++ stand-ins and the real ROS message headers (tests/support/cpp_build.py), and drives each driver's REAL
 code through the harness's fake robot (tests/cpp/harness/transport_<transport>.hpp):
 
 * state       the state callback (one complete state frame delivered by the stand-in transport)
@@ -30,7 +30,7 @@ read() + write()), so it includes what the driver itself calls (the SDK or rclcp
 command); "stand-in" = total - driver is the stand-in transport's dispatch around it (registry
 look-up, the copy of the message it keeps). "x memcpy" = instructions / the memcpy floor.
 
-Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/cpp_build.py).
+Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/support/cpp_build.py).
 """
 from __future__ import annotations
 
@@ -47,7 +47,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from tests import cpp_build  # noqa: E402
+from tests.support import cpp_build  # noqa: E402
 
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")

@@ -15,7 +15,8 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from tests.cpp_build import render_test_package, CppBuilder, build_harness, compile_data_buffer_stress
+from tests.support.cpp_build import CppBuilder, build_harness, compile_data_buffer_stress, render_test_package
+
 N = int(sys.argv[1]) if len(sys.argv) > 1 else 200
 root = Path(tempfile.mkdtemp(prefix="rhi_repeat_"))
 labels = ["unitree/g1", "agibot/x2", "odri/solo12"]
@@ -30,7 +31,8 @@ db = compile_data_buffer_stress(b, pkg.package_dir, "tsan")
 assert db.ok, db.stderr[:2000]
 bins.append(("data_buffer_stress tsan", [str(db.path)]))
 for name, cmd in bins:
-    fails = 0; t = time.time()
+    fails = 0
+    t = time.time()
     for i in range(N):
         p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
         bad = p.returncode != 0 or "WARNING: ThreadSanitizer" in p.stderr

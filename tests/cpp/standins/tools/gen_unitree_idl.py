@@ -58,11 +58,11 @@ GO_TYPES = {
                    ("uint8_t", "soc"), ("int32_t", "current"), ("uint16_t", "cycle"),
                    ("std::array<uint8_t, 2>", "bq_ntc"), ("std::array<uint8_t, 2>", "mcu_ntc"),
                    ("std::array<uint16_t, 15>", "cell_vol")], [], 44),
-    "LowCmd_": (GO_HEADER + [(f"std::array<{GO}MotorCmd_, 20>", "motor_cmd"), (f"{GO}BmsCmd_", "bms_cmd"),
+    "LowCmd_": ([*GO_HEADER, (f"std::array<{GO}MotorCmd_, 20>", "motor_cmd"), (f"{GO}BmsCmd_", "bms_cmd"),
                              ("std::array<uint8_t, 40>", "wireless_remote"), ("std::array<uint8_t, 12>", "led"),
                              ("std::array<uint8_t, 2>", "fan"), ("uint8_t", "gpio"), ("uint32_t", "reserve"),
                              ("uint32_t", "crc")], ["MotorCmd_", "BmsCmd_"], 812),
-    "LowState_": (GO_HEADER + [(f"{GO}IMUState_", "imu_state"), (f"std::array<{GO}MotorState_, 20>", "motor_state"),
+    "LowState_": ([*GO_HEADER, (f"{GO}IMUState_", "imu_state"), (f"std::array<{GO}MotorState_, 20>", "motor_state"),
                                (f"{GO}BmsState_", "bms_state"), ("std::array<int16_t, 4>", "foot_force"),
                                ("std::array<int16_t, 4>", "foot_force_est"), ("uint32_t", "tick"),
                                ("std::array<uint8_t, 40>", "wireless_remote"), ("uint8_t", "bit_flag"),
@@ -124,13 +124,13 @@ def render(name: str, members, deps, size: int, namespace: str = "unitree_hg", f
     out += ["  }", "", f"  bool operator!=(const {name}& _other) const", "  {",
             "    return !(*this == _other);", "  }", "", "};", "", "}", "", "}", "", "}", ""]
     out += [
-        f"// Layout checks (x86-64 g++): the CRC of the SDK is computed over the raw bytes.",
-        f"static_assert(sizeof(::{namespace}::msg::dds_::{name}) == {size}, "
-        f"\"{namespace} {name} must be {size} bytes\");",
-        f"static_assert(std::is_standard_layout<::{namespace}::msg::dds_::{name}>::value, "
-        f"\"{namespace} {name} must be standard layout\");",
-        f"static_assert(std::is_trivially_copyable<::{namespace}::msg::dds_::{name}>::value, "
-        f"\"{namespace} {name} must be trivially copyable\");",
+        "// Layout checks (x86-64 g++): the CRC of the SDK is computed over the raw bytes.",
+        (f"static_assert(sizeof(::{namespace}::msg::dds_::{name}) == {size}, "
+         f"\"{namespace} {name} must be {size} bytes\");"),
+        (f"static_assert(std::is_standard_layout<::{namespace}::msg::dds_::{name}>::value, "
+         f"\"{namespace} {name} must be standard layout\");"),
+        (f"static_assert(std::is_trivially_copyable<::{namespace}::msg::dds_::{name}>::value, "
+         f"\"{namespace} {name} must be trivially copyable\");"),
     ]
     if any(m == "crc" for _, m in members):
         out.append(

@@ -1,0 +1,126 @@
+"""The commands as a user runs them: new, inspect, list, help and exit codes."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from rhi_gen.cli import main
+from rhi_gen.transports.unitree_dds import G1_ORDER
+from tests.support.cpp_build import syntax_check_driver
+from tests.support.repo import REPO, UPSTREAM_URDF
+from tests.support.repo import URDF_FIXTURES as FIXTURES
+
+UPSTREAM_G1 = UPSTREAM_URDF / "unitree_g1.urdf"
+
+
+def run(args: list[str], capsys) -> tuple[int, str, str]:
+    code = main(args)
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
+def test_new_on_upstream_g1_uses_the_sdk_order_and_compiles(tmp_path, capsys):
+    if not UPSTREAM_G1.is_file():
+        pytest.skip("../shared/upstream/urdf/unitree_g1.urdf is not present on this machine")
+    code, _, err = run(["new", "--vendor", "unitree", "--robot", "g1", "--urdf", str(UPSTREAM_G1),
+                          "--project", str(tmp_path)], capsys)
+    assert code == 0, err
+    data = yaml.safe_load((tmp_path / "robots/unitree/g1.yaml").read_text())
+    assert data["transport"] == "unitree_dds" and data["float_type"] == "float" and data["motor_count"] == 29
+    assert list(data["joint_map"]) == list(G1_ORDER)
+    assert list(data["joint_map"].values()) == list(range(29))
+    package = tmp_path / "generated/robot_hardware_interface"
+    assert (package / "src/unitree/g1.cpp").is_file()
+    syntax_check_driver(package, "unitree", "g1")
+    # The package it wrote is exactly what generate writes: no hand edit needed.
+    assert run(["check", "--project", str(tmp_path)], capsys)[0] == 0
+
+
+@pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
+def test_new_on_an_unknown_robot_uses_generic_transport_and_compiles(tmp_path, capsys):
+    code, out, err = run(["new", "--vendor", "acme", "--robot", "gripper", "--urdf",
+                          str(FIXTURES / "mimic_gripper.urdf"), "--project", str(tmp_path)], capsys)
+    assert code == 0, err
+    data = yaml.safe_load((tmp_path / "robots/acme/gripper.yaml").read_text())
+    assert data["transport"] == "generic_topics"
+    # mimic joints never get a motor
+    assert set(data["joint_map"]) == {"wrist", "left_finger_joint"}
+    syntax_check_driver(tmp_path / "generated/robot_hardware_interface", "acme", "gripper")
+    assert "wrote robots/acme/gripper.yaml" in out
+
+
+def test_new_refuses_to_overwrite_and_leaves_everything(tmp_path, capsys):
+    args = ["new", "--vendor", "acme", "--robot", "arm", "--urdf", str(FIXTURES / "simple_arm.urdf"),
+            "--project", str(tmp_path)]
+    assert run(args, capsys)[0] == 0
+    yml = tmp_path / "robots/acme/arm.yaml"
+    yml.write_text(yml.read_text().replace("state_decimation: 1", "state_decimation: 3"))
+    code, _, err = run(args, capsys)
+    assert code == 2 and "already exists" in err and "--force" in err
+    assert "state_decimation: 3" in yml.read_text()
+    assert run([*args, "--force"], capsys)[0] == 0
+    assert "state_decimation: 1" in yml.read_text()
+
+
+@pytest.mark.parametrize("vendor, robot, words", [
+    ("../x", "arm", "lowercase"), ("acme", "/abs", "lowercase"), ("class", "arm", "C++ keyword"),
+    ("acme", "int", "C++ keyword"), ("acme", "Arm", "lowercase"),
+])
+def test_new_rejects_unsafe_names_before_writing(tmp_path, capsys, vendor, robot, words):
+    code, _, err = run(["new", "--vendor", vendor, "--robot", robot, "--urdf", str(FIXTURES / "simple_arm.urdf"),
+                          "--project", str(tmp_path)], capsys)
+    assert code == 2 and words in err and err.count("\n") == 1
+    assert not (tmp_path / "robots").exists() and not (tmp_path / "generated").exists()
+
+
+def test_new_with_unknown_transport_suggests(tmp_path, capsys):
+    code, _, err = run(["new", "--vendor", "acme", "--robot", "arm", "--urdf", str(FIXTURES / "simple_arm.urdf"),
+                        "--transport", "generic_topic", "--project", str(tmp_path)], capsys)
+    assert code == 2 and "did you mean 'generic_topics'" in err
+
+
+def test_inspect_lists_joints_and_suggests_a_map(capsys):
+    code, out, err = run(["inspect", "--urdf", str(FIXTURES / "mimic_gripper.urdf")], capsys)
+    assert code == 0, err
+    assert "mimics left_finger_joint" in out
+    assert "suggested joint_map" in out and "  wrist: 0" in out
+
+
+def test_inspect_with_vendor_profile_orders_like_the_sdk(capsys):
+    code, out, _ = run(["inspect", "--urdf", str(REPO / "robots/agibot/x2.urdf"), "--vendor", "agibot",
+                        "--robot", "x2"], capsys)
+    assert code == 0
+    suggested = out.split("suggested joint_map")[1].splitlines()[1:]
+    assert suggested[12].strip() == "waist_yaw_joint: 12" and suggested[15].strip() == "left_shoulder_pitch_joint: 15"
+
+
+def test_inspect_missing_file_is_exit_2(tmp_path, capsys):
+    code, _, err = run(["inspect", "--urdf", str(tmp_path / "none.urdf")], capsys)
+    assert code == 2 and "none.urdf" in err and err.count("\n") == 1
+
+
+def test_list_and_version(capsys):
+    code, out, _ = run(["list", "--project", str(REPO)], capsys)
+    assert code == 0 and "unitree/g1" in out and "agibot/x2" in out and "engineai/pm01" in out
+    code, out, _ = run(["--version"], capsys)
+    assert code == 0 and out.startswith("rhi-gen ")
+
+
+def test_console_script_help_and_usage_errors():
+    exe = Path(sys.executable).with_name("rhi-gen")
+    help_run = subprocess.run([str(exe), "--help"], capture_output=True, text=True)
+    assert help_run.returncode == 0 and "generate" in help_run.stdout and "Traceback" not in help_run.stderr
+    bad = subprocess.run([str(exe), "frobnicate"], capture_output=True, text=True)
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr
+    missing = subprocess.run([str(exe), "new", "--vendor", "x"], capture_output=True, text=True)
+    assert missing.returncode == 2 and "Traceback" not in missing.stderr
+
+
+def test_generate_with_no_robots_is_a_clear_error(tmp_path, capsys):
+    code, _, err = run(["generate", "--project", str(tmp_path)], capsys)
+    assert code == 2 and "no robots found" in err and "rhi-gen new" in err

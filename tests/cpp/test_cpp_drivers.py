@@ -1,0 +1,294 @@
+"""Every generated driver compiles with g++ -Werror and runs correctly against a simulated robot.
+
+For every robot of robots/ (and the harness's test-only generic_topics robot, tests/cpp/harness/robots/)
+the package is rendered into a temporary folder, then:
+
+* each common header (and the unitree CRC header) compiles on its own, twice included, with
+  -std=c++17 -Wall -Wextra -Wpedantic -Werror; so does each robot's driver header;
+* the ros2_control description, expanded by xacro as a user includes it, lists exactly the YAML's
+  mapped joints with their interfaces, the IMU sensor, and a plugin the plugin descriptor exports;
+* the driver and the harness (through rhi_fake/hw.hpp) are compiled against every distro's stand-ins
+  (MATRIX: plain -O2 on Humble, Jazzy, Kilted and Rolling/Lyrical; TSan on Humble, raw-pointer
+  interfaces, for one robot per transport thread kind; ASan+UBSan and TSan on Rolling,
+  framework-owned handles; on Kilted the driver object alone) with -Werror and linked into
+  tests/cpp/harness/driver_harness.cpp, which creates it through pluginlib's registry and checks, per
+  section: interfaces, safety (the three layers, re-armed on re-activation), joint_map, imu, commands
+  (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
+  SDK_FACTS.md vectors, every field, bad frames dropped), parameters (description values, defaults,
+  overrides, invalid values), decimation, allocations (zero in read/write/callbacks/writer after
+  warm-up) and threads (real writer/executor threads, no torn frames);
+* sanitizer runs must print no report.
+
+The checks are counted by the harness; scripts/cpp_report.py prints the counts per robot, flavour and
+section, the sanitizer and allocation results and the timings (the tests assert them).
+A missing g++ fails these tests (never a skip).
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from rhi_gen.transports import TRANSPORTS
+from tests.support import vendor_msgs
+from tests.support.cpp_build import (
+    PACKAGE,
+    WARNING_FLAGS,
+    build_driver_object,
+    build_harness,
+    crc_header,
+    expand_description,
+    message_include_flags,
+    plugin_types,
+    project_robot_labels,
+    render_test_package,
+    require_compiler,
+    run_binary_retrying,
+    run_parallel,
+    standin_flags,
+    yaml_joint_map,
+)
+
+ROBOTS = project_robot_labels()
+SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes",
+                 "crc", "parameters", "decimation", "allocations", "threads")
+THREADS_MS = 300
+# (distro, flavour) of every build. RUN cells build the harness and drive the robot: plain on Humble
+# (2.x: interfaces over driver-owned doubles), Jazzy (4.x) and Rolling (6.x: framework-owned handles,
+# the path of Kilted and Lyrical too), the sanitizers on Rolling. COMPILE cells build the driver
+# object alone (-Werror against Kilted's stand-ins: deprecations, removed API), since its runtime
+# path is Jazzy's and Rolling's. TSan also runs on Humble's path, for one robot per kind of transport thread
+# (an SDK recurrent thread, a ROS executor): that path is the same code for every robot.
+RUN_MATRIX = (("humble", "plain"), ("humble", "tsan"), ("jazzy", "plain"), ("rolling", "plain"),
+              ("rolling", "asan_ubsan"), ("rolling", "tsan"))
+COMPILE_MATRIX = (("kilted", "plain"),)
+MATRIX = RUN_MATRIX + COMPILE_MATRIX
+ONLY = {("humble", "tsan"): {"unitree/g1", "agibot/x2"}}  # cells not built for every robot
+
+
+def in_cell(label: str, distro: str, flavour: str) -> bool:
+    return label in ONLY.get((distro, flavour), {label})
+
+
+DISTRO = "humble"  # what the headers-alone checks compile against
+
+def build_cells(reference, builder) -> dict:
+    """{(robot, distro, flavour): (link result, [compile results])}, built in parallel, each once."""
+    jobs = [(b, distro, flavour) for b in reference.builds for distro, flavour in MATRIX
+            if not vendor_msgs.skip_reason(b.model.transport) and in_cell(b.label, distro, flavour)]
+
+    def build(job):
+        b, distro, flavour = job
+        if (distro, flavour) in COMPILE_MATRIX:
+            return build_driver_object(builder, b, flavour, distro=distro)
+        return build_harness(builder, b, flavour, distro=distro)
+
+    results = run_parallel(jobs, build)
+    return {(b.label, distro, flavour): result for (b, distro, flavour), result in zip(jobs, results, strict=True)}
+
+
+def run_cells(binaries: dict) -> dict:
+    """{(robot, distro, flavour): HarnessRun} for every binary of a RUN cell that linked; two at a time."""
+    linked = [(key, link.path) for key, (link, _) in binaries.items() if link.ok and key[1:] in RUN_MATRIX]
+    runs = run_parallel(linked, lambda item: run_binary_retrying(item[1], [f"--threads-ms={THREADS_MS}"]), workers=2)
+    return {key: run for (key, _), run in zip(linked, runs, strict=True)}
+
+
+@pytest.fixture(scope="module")
+def harness_binaries(reference, cpp_builder):
+    return build_cells(reference, cpp_builder)
+
+
+@pytest.fixture(scope="module")
+def harness_runs(harness_binaries):
+    return run_cells(harness_binaries)
+
+
+def _robot(reference, label):
+    return reference.build(label)
+
+
+def _compilable_robot(reference, label):
+    """The robot, or a skip when its transport's vendor messages cannot be generated (no ../shared)."""
+    b = reference.build(label)
+    reason = vendor_msgs.skip_reason(b.model.transport)
+    if reason:
+        pytest.skip(reason)
+    return b
+
+
+# ------------------------------------------------------------------------------------ coverage
+def test_every_robot_of_the_project_gets_a_harness(reference):
+    """robots/ as it is on disk (so a robot a user adds is covered), plus the test-only robots."""
+    assert [b.label for b in reference.builds] == ROBOTS
+    for label in ("unitree/g1", "agibot/x2", "engineai/pm01"):
+        assert label in ROBOTS, f"reference robot {label} is missing from robots/"
+    transports = {b.model.transport for b in reference.builds}
+    assert transports == {"unitree_dds", "agibot_topics", "engineai_topics", "generic_topics", "custom"}, transports
+
+
+# ------------------------------------------------------------------------------------ headers alone
+def _headers_alone(reference) -> list[Path]:
+    include = reference.package_dir / "include" / PACKAGE
+    headers = sorted((include / "common").glob("*.hpp"))
+    crcs = [crc_header(reference.package_dir, family) for family in ("hg", "go")]
+    return headers + [crc for crc in crcs if crc]
+
+
+def test_common_headers_compile_on_their_own(reference, tmp_path):
+    cxx = require_compiler()
+    include = reference.package_dir / "include"
+    headers = _headers_alone(reference)
+    names = {h.name for h in headers}
+    assert {"data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp"} <= names, names
+
+    def compile_one(header: Path):
+        rel = header.relative_to(include).as_posix()
+        src = tmp_path / f"alone_{header.stem}.cpp"
+        # Twice: the include guard / #pragma once works; alone: it includes what it uses.
+        src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
+        proc = subprocess.run([cxx, *WARNING_FLAGS, "-fsyntax-only", f"-I{include}", *standin_flags(DISTRO),
+                               *message_include_flags(), str(src)], capture_output=True, text=True)
+        return rel, proc
+
+    failures = [f"{rel}:\n{proc.stderr[:3000]}" for rel, proc in run_parallel(headers, compile_one)
+                if proc.returncode != 0]
+    assert not failures, "\n".join(failures)
+
+
+@pytest.mark.parametrize("label", ROBOTS)
+def test_driver_header_compiles_on_its_own(reference, label, tmp_path):
+    cxx = require_compiler()
+    b = _compilable_robot(reference, label)
+    rel = f"{PACKAGE}/{b.model.vendor}/{b.model.robot}.hpp"
+    src = tmp_path / "alone.cpp"
+    src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
+    proc = subprocess.run([cxx, *WARNING_FLAGS, "-fsyntax-only",
+                           f"-I{reference.package_dir / 'include'}", *standin_flags(DISTRO),
+                           *message_include_flags(), str(src)], capture_output=True, text=True)
+    assert proc.returncode == 0, f"{rel} does not compile on its own:\n{proc.stderr[:4000]}"
+
+
+# ------------------------------------------------------------------------------------ description
+@pytest.mark.parametrize("label", ROBOTS)
+def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path):
+    b = _robot(reference, label)
+    joint_map = yaml_joint_map(b.loaded.yaml_path)
+    d = expand_description(reference.package_dir, b.model.robot, tmp_path)
+    names = [j["name"] for j in d.joints]
+    assert len(names) == len(set(names)), f"a joint is described twice: {names}"
+    assert set(names) == set(joint_map), \
+        f"description joints must be exactly the YAML's mapped joints: {sorted(set(names) ^ set(joint_map))}"
+    gains = ["stiffness", "damping"] if TRANSPORTS[b.model.transport].carries_gains else []
+    modes = {j.name: j.command_mode for j in b.model.joints}
+    for j in d.joints:
+        expected = (["position", "velocity", *gains, "effort"] if modes[j["name"]] == "position"
+                    else ["velocity", *gains[1:], "effort"])  # a velocity joint: no position, no stiffness
+        assert [c for c, _ in j["command_interfaces"]] == expected, j["name"]
+        assert j["state_interfaces"] == ["position", "velocity", "effort"], j["name"]
+    if b.model.imu.enabled:
+        assert [s["name"] for s in d.sensors] == [b.model.imu.name]
+        assert d.sensors[0]["state_interfaces"] == [
+            "orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
+            "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
+            "linear_acceleration.z"]
+    assert d.plugin == b.model.plugin_name
+    assert plugin_types(reference.package_dir).get(d.plugin) == f"{b.model.vendor}::{b.model.class_name}"
+    params = b.model.parameters
+    assert d.parameters["command_writer_period_us"] == str(params.command_writer_period_us)
+    assert d.parameters["state_decimation"] == str(params.state_decimation)
+    assert d.parameters["enable_monitor"] == ("true" if params.enable_monitor else "false")
+
+
+# ------------------------------------------------------------------------------------ compile
+COMPILE_CELLS = [(label, d, f) for label in ROBOTS for d, f in MATRIX if in_cell(label, d, f)]
+RUN_CELLS = [(label, d, f) for label, d, f in COMPILE_CELLS if (d, f) in RUN_MATRIX]
+
+
+@pytest.mark.parametrize(("label", "distro", "flavour"), COMPILE_CELLS,
+                         ids=[f"{label}-{d}-{f}" for label, d, f in COMPILE_CELLS])
+def test_driver_compiles_with_werror(harness_binaries, reference, label, distro, flavour):
+    """-Wall -Wextra -Wpedantic -Werror on each distro: deprecated declarations are errors."""
+    _compilable_robot(reference, label)
+    link, steps = harness_binaries[(label, distro, flavour)]
+    driver = steps[0]
+    assert driver.ok, (f"{label} driver does not compile ({distro}, {flavour}, -Werror):\n"
+                       f"{' '.join(driver.command)}\n{driver.stderr[:6000]}")
+    for step in steps[1:]:
+        assert step.ok, f"{label} harness part does not compile ({distro}, {flavour}):\n{step.stderr[:6000]}"
+    assert link.ok, f"{label} harness does not link ({distro}, {flavour}):\n{link.stderr[:6000]}"
+
+
+# ------------------------------------------------------------------------------------ run
+@pytest.mark.parametrize(("label", "distro", "flavour"), RUN_CELLS,
+                         ids=[f"{label}-{d}-{f}" for label, d, f in RUN_CELLS])
+def test_driver_against_simulated_robot(harness_runs, harness_binaries, reference, label, distro, flavour):
+    _compilable_robot(reference, label)
+    link, _ = harness_binaries[(label, distro, flavour)]
+    assert link.ok, f"{label} ({distro}, {flavour}) did not build: see test_driver_compiles_with_werror"
+    run = harness_runs[(label, distro, flavour)]
+    reports = run.sanitizer_reports()
+    assert not reports, f"{label} ({flavour}): sanitizer reports:\n" + "\n".join(reports[:20]) + \
+        f"\n{run.stderr[-6000:]}"
+    assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{label} ({flavour}): {run.describe()}"
+    expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes", "parameters",
+                "decimation", "allocations", "threads"}
+    if _robot(reference, label).model.transport == "unitree_dds":
+        expected.add("crc")
+    missing = expected - set(run.sections)
+    assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
+
+
+@pytest.mark.parametrize("distro", ["humble", "jazzy", "rolling"])
+@pytest.mark.parametrize("label", ROBOTS)
+def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
+    _compilable_robot(reference, label)
+    run = harness_runs.get((label, distro, "plain"))
+    assert run is not None, f"{label}: plain harness did not build for {distro}"
+    m = re.search(r"^allocations over (\d+) cycles: state callback (\d+), IMU callback (\d+), read\(\) (\d+), "
+                  r"write\(\) (\d+), command writer (\d+)$", run.stdout, re.M)
+    assert m, f"{label}: no allocation line in the harness output:\n{run.stdout[-3000:]}"
+    counts = dict(zip(("state callback", "IMU callback", "read()", "write()", "command writer"),
+                      map(int, m.groups()[1:]), strict=False))
+    assert all(v == 0 for v in counts.values()), f"{label}: heap allocations after activation: {counts}"
+
+
+@pytest.mark.parametrize(("label", "distro", "flavour"), [c for c in RUN_CELLS if c[2] != "plain"],
+                         ids=[f"{label}-{d}-{f}" for label, d, f in RUN_CELLS if f != "plain"])
+def test_no_torn_frames_with_real_threads(harness_runs, reference, label, distro, flavour):
+    _compilable_robot(reference, label)
+    run = harness_runs.get((label, distro, flavour))
+    assert run is not None, f"{label}: {flavour} harness did not build"
+    m = re.search(r"torn states (\d+), torn commands (\d+), bad CRCs (\d+)", run.stdout)
+    assert m, f"{label} ({flavour}): the threaded scenario did not report:\n{run.stdout[-3000:]}"
+    assert m.groups() == ("0", "0", "0"), f"{label} ({flavour}): {m.group(0)}"
+
+
+# ------------------------------------------------------------------------------------ custom, unfilled
+CUSTOM_ROBOTS = [label for label in ROBOTS if label == "odri/solo12"]
+
+
+@pytest.mark.parametrize("distro", ["humble", "rolling"])
+@pytest.mark.parametrize("label", CUSTOM_ROBOTS)
+def test_unfilled_custom_transport_refuses_activation_in_one_line(label, distro, tmp_path_factory, cpp_builder):
+    """A custom-transport driver as generated (regions not filled in) compiles with -Werror, loads,
+    initialises, and refuses on_activate with exactly one error line naming the region and file;
+    it starts no writer and sends nothing (driver_harness.cpp, RHI_CUSTOM_EXPECT_UNFILLED)."""
+    package = render_test_package(tmp_path_factory.mktemp("unfilled"), only=[label], fill_custom=False)
+    b = package.build(label)
+    source = (package.package_dir / "src" / b.model.vendor / f"{b.model.robot}.cpp").read_text()
+    assert source.count("#define RHI_CUSTOM_NOT_FILLED_IN_") == 3, "three function regions, each marked"
+    b.data_header += "#define RHI_CUSTOM_EXPECT_UNFILLED 1\n"
+    (b.data_dir / "robot_data.hpp").write_text(b.data_header, encoding="utf-8")
+    link, steps = build_harness(cpp_builder, b, "plain", distro=distro)
+    failed = [s for s in steps if not s.ok]
+    assert not failed and link.ok, \
+        f"the unfilled driver does not build ({distro}):\n{(failed or [link])[0].stderr[:6000]}"
+    run = run_binary_retrying(link.path)
+    assert run.returncode == 0 and run.failed == 0 and run.sections.get("unfilled", (0, 0))[0] > 0, run.describe()
+    refused = [line for line in run.stdout.splitlines() if line.startswith("refused: ")]
+    assert refused == [(f"refused: custom transport: region 'transport_connect' of src/{b.model.vendor}/"
+                        f"{b.model.robot}.cpp is not filled in: refusing to activate (write the SDK calls there and "
+                        "delete its RHI_CUSTOM_NOT_FILLED_IN line)")], refused

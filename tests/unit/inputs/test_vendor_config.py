@@ -1,0 +1,161 @@
+"""Vendor YAML validation: every bad input is one line naming file, line, key and fix."""
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from rhi_gen.errors import ConfigError
+from rhi_gen.inputs.vendor_config import load_config
+from tests.support.repo import REPO
+
+BASE = """\
+vendor: acme
+robot: arm
+urdf: arm.urdf
+transport: generic_topics
+motor_count: 3
+joint_map:
+  j1: 0
+  j2: 1
+  j3: 2
+"""
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "arm.yaml"
+    path.write_text(textwrap.dedent(text), encoding="utf-8")
+    return path
+
+
+def error_of(tmp_path: Path, text: str) -> ConfigError:
+    with pytest.raises(ConfigError) as info:
+        load_config(write(tmp_path, text))
+    message = str(info.value)
+    assert "\n" not in message
+    assert "arm.yaml" in message
+    return info.value
+
+
+def test_base_config_loads_with_transport_defaults(tmp_path):
+    cfg = load_config(write(tmp_path, BASE))
+    assert cfg.vendor == "acme" and cfg.robot == "arm" and cfg.motor_count == 3
+    assert cfg.joint_map == (("j1", 0), ("j2", 1), ("j3", 2))
+    assert cfg.float_type == "double"
+    assert cfg.parameters.command_writer_period_us == 2000 and cfg.parameters.state_decimation == 1
+    assert cfg.parameters.enable_monitor is True and cfg.parameters.network_interface == "lo"
+    assert cfg.transport_options.state_topic == "/hardware/joint_states"
+    assert cfg.transport_options.qos.reliability == "best_effort"
+    assert cfg.urdf == str(tmp_path / "arm.urdf")
+
+
+@pytest.mark.parametrize("robot", ["unitree/g1", "agibot/x2", "engineai/pm01"])
+def test_reference_yamls_load(robot):
+    cfg = load_config(REPO / "robots" / f"{robot}.yaml")
+    assert len(cfg.joint_map) == cfg.motor_count
+    assert sorted(i for _, i in cfg.joint_map) == list(range(cfg.motor_count))
+
+
+def test_agibot_groups_get_offsets():
+    cfg = load_config(REPO / "robots/agibot/x2.yaml")
+    assert [(g.name, g.size, g.offset) for g in cfg.transport_options.groups] == [
+        ("leg", 12, 0), ("waist", 3, 12), ("arm", 14, 15), ("head", 2, 29)]
+
+
+@pytest.mark.parametrize("text, line, key, words", [
+    (BASE.replace("transport: generic_topics", "transport: generic_topic"), 4, "transport",
+     "did you mean 'generic_topics'"),
+    (BASE + "joint_mapp: {}\n", 10, "joint_mapp", "did you mean 'joint_map'"),
+    (BASE.replace("  j3: 2", "  j3: 1"), 9, "joint_map.j3", "already used by 'j2'"),
+    (BASE.replace("  j3: 2", "  j3: 3"), 9, "joint_map.j3", "out of range 0..2"),
+    (BASE.replace("  j3: 2", "  j3: -1"), 9, "joint_map.j3", "out of range"),
+    (BASE.replace("  j3: 2", "  j3: two"), 9, "joint_map.j3", "whole number"),
+    (BASE.replace("  j3: 2", "  j3: true"), 9, "joint_map.j3", "whole number"),
+    (BASE.replace("  j3: 2", "  j2: 2"), 9, "joint_map.j2", "duplicate key"),
+    (BASE + "float_type: half\n", 10, "float_type", "float, double"),
+    (BASE.replace("motor_count: 3", "motor_count: many"), 5, "motor_count", "whole number"),
+    (BASE.replace("motor_count: 3", "motor_count: 0"), 5, "motor_count", "out of range"),
+    (BASE.replace("robot: arm", "robot: ../x"), 2, "robot", "lowercase letters"),
+    (BASE.replace("robot: arm", "robot: /abs"), 2, "robot", "lowercase letters"),
+    (BASE.replace("vendor: acme", "vendor: namespace"), 1, "vendor", "C++ keyword"),
+    (BASE.replace("vendor: acme", "vendor: std"), 1, "vendor", "clash"),
+    (BASE.replace("robot: arm", "robot: Arm"), 2, "robot", "lowercase"),
+    (BASE + "parameters:\n  state_decimation: 0\n", 11, "parameters.state_decimation", "out of range"),
+    (BASE + "parameters:\n  command_writer_period_us: fast\n", 11, "parameters.command_writer_period_us",
+     "whole number"),
+    (BASE + "parameters:\n  enable_monitor: maybe\n", 11, "parameters.enable_monitor", "true or false"),
+    (BASE + "parameters:\n  network_iface: eth0\n", 11, "parameters.network_iface", "did you mean 'network_interface'"),
+    (BASE + "transport_options:\n  lowcmd_topic: rt/lowcmd\n", 11, "transport_options.lowcmd_topic", "unknown key"),
+    (BASE + "transport_options:\n  state_topic: 'bad topic'\n", 11, "transport_options.state_topic",
+     "not a valid ROS topic"),
+    (BASE + "unmapped_joints: [j1]\n", 10, "unmapped_joints[0]", "also in joint_map"),
+    (BASE + "imu: {enabled: yes please}\n", 10, "imu.enabled", "true or false"),
+])
+def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
+    err = error_of(tmp_path, text)
+    assert err.line == line, str(err)
+    assert err.key == key, str(err)
+    assert words in str(err)
+
+
+def test_unitree_motor_count_above_slots(tmp_path):
+    text = (BASE.replace("transport: generic_topics", "transport: unitree_dds")
+            .replace("motor_count: 3", "motor_count: 36") + "transport_options: {family: hg}\n")
+    err = error_of(tmp_path, text)
+    assert err.key == "motor_count" and "35 motor slots" in str(err)
+
+
+def test_unknown_unitree_robot_must_name_its_family(tmp_path):
+    text = BASE.replace("transport: generic_topics", "transport: unitree_dds")
+    err = error_of(tmp_path, text)
+    assert err.key == "transport_options" and "family: hg" in str(err) and "go (" in str(err)
+    go = text + "transport_options: {family: go}\n"
+    assert "20 motor slots" in str(error_of(tmp_path, go.replace("motor_count: 3", "motor_count: 21")))
+
+
+def test_agibot_groups_must_sum_to_motor_count(tmp_path):
+    text = BASE.replace("transport: generic_topics", "transport: agibot_topics") + (
+        "transport_options:\n  groups:\n    - {name: leg, size: 2}\n")
+    err = error_of(tmp_path, text)
+    assert err.key == "motor_count" and "groups hold 2 slots" in str(err)
+
+
+@pytest.mark.parametrize("text, words", [
+    ("", "empty"),
+    ("   \n# only a comment\n", "empty"),
+    ("- a\n- b\n", "not a mapping"),
+    ("just text\n", "not a mapping"),
+    ("a: [unclosed\n", "invalid YAML"),
+    ("a: &x [*x]\n", "refers to itself"),
+    ("vendor: !!python/object:os.system x\n", "cannot read this value"),
+    ("a: 1\n---\nb: 2\n", "several YAML documents"),
+])
+def test_malformed_files(tmp_path, text, words):
+    err = error_of(tmp_path, text)
+    assert words in str(err)
+
+
+def test_missing_required_key(tmp_path):
+    err = error_of(tmp_path, BASE.replace("motor_count: 3\n", ""))
+    assert err.key == "motor_count" and "missing" in str(err)
+
+
+def test_missing_file_and_directory(tmp_path):
+    with pytest.raises(ConfigError, match="not found"):
+        load_config(tmp_path / "nope.yaml")
+    with pytest.raises(ConfigError, match="directory"):
+        load_config(tmp_path)
+
+
+def test_non_utf8(tmp_path):
+    path = tmp_path / "arm.yaml"
+    path.write_bytes(b"vendor: \xff\xfe\n")
+    with pytest.raises(ConfigError, match="UTF-8"):
+        load_config(path)
+
+
+def test_yaml_booleans_as_joint_names_stay_names(tmp_path):
+    text = BASE.replace("  j1: 0", "  on: 0").replace("  j2: 1", "  no: 1")
+    cfg = load_config(write(tmp_path, text))
+    assert [n for n, _ in cfg.joint_map] == ["on", "no", "j3"]

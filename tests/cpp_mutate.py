@@ -46,13 +46,22 @@ _PUNCTUATORS = sorted((
     "%=", "&=", "|=", "^=", ".*", "##",
     *"{}[]()<>;:,.?+-*/%^&|~!=#",
 ), key=len, reverse=True)
-_PUNCT_RE = re.compile("|".join(re.escape(p) for p in _PUNCTUATORS))
-_SPACE_RE = re.compile(r"(?:\s|\\\n)+")  # a backslash-newline splices lines: whitespace here
-_IDENT_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-# pp-number: a digit (or . digit), then digits, letters, _, ., digit separators, exponent signs.
-_NUMBER_RE = re.compile(r"\.?[0-9](?:[eEpP][+-]|'[0-9A-Za-z_]|[0-9A-Za-z_.])*")
-_ENCODING_PREFIX_RE = re.compile(r"(u8|u|U|L)?(?:(R)(?=\")|(?=[\"']))")
-_RAW_DELIMITER_RE = re.compile(r'R"([^()\\\s]{0,16})\(')
+_PREFIX = r"(?:u8|u|U|L)?"
+_SUFFIX = r"(?:[A-Za-z_][A-Za-z0-9_]*)?"  # a user-defined-literal suffix ("abc"sv) is part of the token
+# One alternative per kind of lexeme, tried in this order at each position.
+_LEXEME_RE = re.compile("|".join((
+    r"(?P<space>(?:\s|\\\n)+)",                          # a backslash-newline splices lines
+    r"(?P<comment>//(?:[^\n\\]|\\[\s\S])*|/\*[\s\S]*?\*/)",
+    r"(?P<open_comment>/\*)",                            # no */ after it: an error, not two punctuators
+    rf"(?P<raw>{_PREFIX}R\")",                           # the rest of a raw string: _raw_string_end
+    rf"(?P<string>{_PREFIX}\"(?:[^\"\\\n]|\\[\s\S])*\"{_SUFFIX})",
+    rf"(?P<char>{_PREFIX}'(?:[^'\\\n]|\\[\s\S])*'{_SUFFIX})",
+    # pp-number: a digit (or . digit), then digits, letters, _, ., digit separators, exponent signs
+    r"(?P<number>\.?[0-9](?:[eEpP][+-]|'[0-9A-Za-z_]|[0-9A-Za-z_.])*)",
+    r"(?P<identifier>[A-Za-z_][A-Za-z0-9_]*)",
+    "(?P<punct>" + "|".join(re.escape(p) for p in _PUNCTUATORS) + ")",
+)))
+_RAW_DELIMITER_RE = re.compile(r'([^()\\\s"]{0,16})\(')
 
 
 def _line_col(text: str, pos: int) -> str:
@@ -66,77 +75,43 @@ def tokenize(text: str, *, pattern: bool = False) -> list[Token]:
     tokens: list[Token] = []
     pos, n = 0, len(text)
     while pos < n:
-        space = _SPACE_RE.match(text, pos)
-        if space:
-            pos = space.end()
-            continue
-        if text.startswith("//", pos):
-            end = text.find("\n", pos)
-            while end != -1 and text[end - 1] == "\\":  # a line comment continued by backslash-newline
-                end = text.find("\n", end + 1)
-            pos = n if end == -1 else end
-            continue
-        if text.startswith("/*", pos):
-            end = text.find("*/", pos + 2)
-            if end == -1:
-                raise ValueError(f"unterminated /* comment at {_line_col(text, pos)}")
-            pos = end + 2
-            continue
         if pattern and text.startswith(WILDCARD, pos):
             tokens.append(Token("wildcard", WILDCARD, pos, pos + 2))
             pos += 2
             continue
-        literal = _literal_end(text, pos)
-        if literal is not None:
-            end, kind = literal
+        m = _LEXEME_RE.match(text, pos)
+        if m is None or m.lastgroup == "open_comment":
+            raise ValueError(_lexing_error(text, pos))
+        kind, end = m.lastgroup, m.end()
+        if kind == "raw":
+            kind, end = "string", _raw_string_end(text, pos, end)
+        if kind not in ("space", "comment"):
             tokens.append(Token(kind, text[pos:end], pos, end))
-            pos = end
-            continue
-        for kind, regex in (("number", _NUMBER_RE), ("identifier", _IDENT_RE), ("punct", _PUNCT_RE)):
-            m = regex.match(text, pos)
-            if m:
-                tokens.append(Token(kind, m.group(), pos, m.end()))
-                pos = m.end()
-                break
-        else:
-            raise ValueError(f"character {text[pos]!r} is not C++ at {_line_col(text, pos)}")
+        pos = end
     return tokens
 
 
-def _literal_end(text: str, pos: int) -> tuple[int, str] | None:
-    """(end, kind) of a string or character literal starting at ``pos`` (prefix included), else None.
-    A user-defined-literal suffix (``"abc"sv``) is part of the token."""
-    m = _ENCODING_PREFIX_RE.match(text, pos)
-    if not m:
-        return None
-    quote_at = m.end()
-    quote = text[quote_at]
-    if m.group(2):  # raw string R"delim( ... )delim"
-        raw = _RAW_DELIMITER_RE.match(text, quote_at - 1)
-        if not raw:
-            raise ValueError(f"malformed raw string at {_line_col(text, pos)}")
-        close = ")" + raw.group(1) + '"'
-        end = text.find(close, raw.end())
-        if end == -1:
-            raise ValueError(f"unterminated raw string at {_line_col(text, pos)}")
-        end += len(close)
-    else:
-        i = quote_at + 1
-        while True:
-            if i >= len(text) or text[i] == "\n":
-                raise ValueError(f"unterminated {'string' if quote == chr(34) else 'character'} literal "
-                                 f"at {_line_col(text, pos)}")
-            if text[i] == "\\":
-                i += 2
-                continue
-            if text[i] == quote:
-                break
-            i += 1
-        end = i + 1
-    suffix = _IDENT_RE.match(text, end)
-    if suffix:
-        end = suffix.end()
-    return end, ("string" if quote == '"' else "char")
+def _raw_string_end(text: str, pos: int, body: int) -> int:
+    """End of the raw string R"delim( ... )delim" that starts at ``pos``, its delimiter at ``body``."""
+    delimiter = _RAW_DELIMITER_RE.match(text, body)
+    if delimiter is None:
+        raise ValueError(f"malformed raw string at {_line_col(text, pos)}")
+    close = ")" + delimiter.group(1) + '"'
+    end = text.find(close, delimiter.end())
+    if end == -1:
+        raise ValueError(f"unterminated raw string at {_line_col(text, pos)}")
+    suffix = re.compile(_SUFFIX).match(text, end + len(close))
+    return suffix.end() if suffix else end + len(close)
+
+
+def _lexing_error(text: str, pos: int) -> str:
+    where = _line_col(text, pos)
+    if text.startswith("/*", pos):
+        return f"unterminated /* comment at {where}"
+    quote = re.compile(_PREFIX + "([\"'])").match(text, pos)
+    if quote:
+        return f"unterminated {'string' if quote.group(1) == chr(34) else 'character'} literal at {where}"
+    return f"character {text[pos]!r} is not C++ at {where}"
 
 
 # ------------------------------------------------------------------------------------ matching

@@ -44,6 +44,7 @@ def test_comments_and_whitespace_are_skipped_and_offsets_point_into_the_text():
     tokens = tokenize(source)
     assert [t.text for t in tokens] == ["int", "a", "=", "1", ";", "b", ";"]
     assert all(source[t.start:t.end] == t.text for t in tokens)
+    assert texts("a // continued \\\n still comment\nc") == ["a", "c"]
 
 
 def test_preprocessor_lines_tokenize():

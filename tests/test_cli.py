@@ -10,11 +10,11 @@ import yaml
 
 from rhi_gen.cli import main
 from rhi_gen.transports.unitree_dds import G1_ORDER
+from tests import upstream_urdf
 from tests.cpp_build import syntax_check_driver
 
 REPO = Path(__file__).resolve().parents[1]
-SHARED = REPO.parent / "shared"
-UPSTREAM_G1 = SHARED / "upstream" / "urdf" / "unitree_g1.urdf"
+UPSTREAM_G1 = upstream_urdf.find("unitree_g1.urdf")  # the repository's copy (tests/data/upstream_urdf)
 FIXTURES = REPO / "tests" / "fixtures" / "urdf"
 
 
@@ -25,8 +25,7 @@ def run(args: list[str], capsys) -> tuple[int, str, str]:
 
 
 def test_new_on_upstream_g1_uses_the_sdk_order_and_compiles(tmp_path, capsys):
-    if not UPSTREAM_G1.is_file():
-        pytest.skip("../shared/upstream/urdf/unitree_g1.urdf is not present on this machine")
+    assert UPSTREAM_G1 is not None, "tests/data/upstream_urdf/unitree_g1.urdf is missing"
     code, out, err = run(["new", "--vendor", "unitree", "--robot", "g1", "--urdf", str(UPSTREAM_G1),
                           "--project", str(tmp_path)], capsys)
     assert code == 0, err

@@ -74,7 +74,7 @@ def test_standin_struct_is_the_msg_definition(package, name):
     expected = msg_members(package, name)
     got = standin_members(package, name)
     assert [n for n, _ in got] == [n for n, _ in expected], f"{name}_: member names or order differ"
-    for (field, want), (_, have) in zip(expected, got):
+    for (field, want), (_, have) in zip(expected, got, strict=True):
         allowed = SDK_DIFFERENCES.get((package, name, field))
         if allowed is not None:
             assert (want, have) == allowed, f"{name}_.{field}: expected the SDK's {allowed[1]}, got {have}"

@@ -136,7 +136,7 @@ def package_key(p: VendorPackage) -> str:
     h = hashlib.sha256(RECIPE.encode())
     h.update(wheel_versions((*GENERATOR_WHEELS, *(DEPENDENCY_WHEELS[d] for d in p.dependencies))).encode())
     h.update(f"\0{p.name}\0{p.dependencies}".encode())
-    for m, path in zip(p.messages, p.files()):
+    for m, path in zip(p.messages, p.files(), strict=True):
         h.update(f"\0{Path(m).name}\0".encode())
         h.update(path.read_bytes())
     return h.hexdigest()[:24]

@@ -3,6 +3,7 @@
 Run (from the repository root):
 
     .venv/bin/python benchmarks/bench_hot_paths.py [--iterations N] [--count-iterations N] [--robot g1]
+                                                      [--distro jazzy] [--no-callgrind]
 
 It renders the package of the reference robots of robots/ (Unitree G1 unitree_dds, AgiBot X2
 agibot_topics, EngineAI PM01 engineai_topics) into a temporary folder, compiles
@@ -30,7 +31,20 @@ read() + write()), so it includes what the driver itself calls (the SDK or rclcp
 command); "stand-in" = total - driver is the stand-in transport's dispatch around it (registry
 look-up, the copy of the message it keeps). "x memcpy" = instructions / the memcpy floor.
 
-Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/support/cpp_build.py).
+A robot whose vendor message definitions are not available here (AgiBot X2 without ../shared: the
+AimDK messages are not carried in the repository, tests/support/vendor_msgs.py) is skipped with one line saying
+why and how to provide them; the others are measured.
+
+--distro picks the ros2_control stand-ins the driver is compiled against (tests/cpp/standins; README
+"Benchmarks"). It changes only `readwrite`: with humble (hardware_interface 2.x) the exported interfaces
+point at the driver's own doubles, so read() + write() touch nothing else; with jazzy (4.x, 4.34+),
+kilted (5.x) and rolling (6.x, also Lyrical) the framework owns the handles, so read() ends by copying
+every state value into its handle and write() starts by fetching every command from its handle (each
+handle's lock taken without blocking), and readwrite includes that. `state`, `state_dec4` and `writer`
+are the transport side and the same code on every distro.
+
+Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/support/cpp_build.py); RHI_UPSTREAM
+as for the tests (tests/support/vendor_msgs.py).
 """
 from __future__ import annotations
 
@@ -47,10 +61,11 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from tests.support import cpp_build  # noqa: E402
+from tests.support import cpp_build, vendor_msgs  # noqa: E402
 
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
+TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics"}
 DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite")
 FLOOR_OF = {"state": "state", "state_dec4": "state", "writer": "writer", "readwrite": "readwrite"}
 FLAGS = ("-O2", "-g")  # -g: function names for callgrind's per-function figures; code is the same
@@ -63,9 +78,10 @@ def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild, distro: str) 
     tag = f"{m.vendor}_{m.robot}_{distro}"
     driver = builder.compile(cpp_build.driver_source(rb.package_dir, m.vendor, m.robot), FLAGS,
                              [pkg_include, *standins], digest_parts=[cpp_build.package_digest(rb.package_dir)],
-                             name=f"bench_driver_{tag}", distro=distro)
+                             name=f"bench_driver_{tag}", distro=distro, transport=m.transport)
     bench = builder.compile(BENCH_SOURCE, FLAGS, [rb.data_dir, cpp_build.HARNESS_DIR, *standins],
-                            digest_parts=[rb.data_header, builder._harness], name=f"bench_{tag}", distro=distro)
+                            digest_parts=[rb.data_header, builder._harness], name=f"bench_{tag}", distro=distro,
+                            transport=m.transport)
     for step in (driver, bench):
         if not step.ok:
             sys.exit(f"compiling {step.command[-3:]} failed:\n{step.stderr[:4000]}")
@@ -129,11 +145,22 @@ def main() -> None:
     ap.add_argument("--iterations", type=int, default=200_000, help="timed calls per path")
     ap.add_argument("--count-iterations", type=int, default=2_000, help="calls per path under callgrind")
     ap.add_argument("--robot", action="append", help="only this robot (g1, x2, pm01); repeatable")
-    ap.add_argument("--distro", default="humble", choices=sorted(cpp_build.DISTROS))
+    ap.add_argument("--distro", default="humble", choices=sorted(cpp_build.DISTROS),
+                    help="the ros2_control stand-ins compiled against; changes readwrite only (see the docstring)")
     ap.add_argument("--no-callgrind", action="store_true", help="latency only")
     args = ap.parse_args()
 
     robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
+    unknown = sorted(set(args.robot or ()) - {r.split("/")[1] for r in ROBOTS})
+    if unknown:
+        ap.error(f"unknown --robot {', '.join(unknown)} (choose from {', '.join(r.split('/')[1] for r in ROBOTS)})")
+    for label in list(robots):
+        reason = vendor_msgs.skip_reason(TRANSPORT_OF[label])
+        if reason:
+            print(f"skipped {label}: {reason}", flush=True)
+            robots.remove(label)
+    if not robots:
+        sys.exit("nothing to measure: every robot asked for was skipped (see above)")
     have_valgrind = shutil.which("valgrind") is not None and not args.no_callgrind
     cache = Path(os.environ.get("RHI_CPP_CACHE") or Path(tempfile.gettempdir()) / "rhi_bench_cache")
     builder = cpp_build.CppBuilder(cache)

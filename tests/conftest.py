@@ -40,3 +40,10 @@ def project(robots_project: Path, capsys: pytest.CaptureFixture[str]) -> Path:
     tests/cli/test_hostile_inputs.py overrides it with its own one-robot project (the hostile arm)."""
     assert cli(capsys, robots_project, "generate")[0] == 0
     return robots_project
+
+
+def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list[pytest.Item]) -> None:
+    """tests/cli/test_fresh_clone.py runs last, so the clone it tests reuses every object the session
+    compiled (its RHI_CPP_CACHE)."""
+    last = [item for item in items if item.nodeid.split("::")[0].endswith("test_fresh_clone.py")]
+    items[:] = [item for item in items if item not in last] + last

@@ -1,7 +1,7 @@
 """View-models: what the package templates and the robot's YAML/XML templates place, decided in Python.
 
 Templates only place values and loop over prepared lists; every name, rounded number, list and
-dependency is computed here, where it is typed and tested (tests/test_views.py) instead of being
+dependency is computed here, where it is typed and tested (tests/unit/render/test_views.py) instead of being
 spread over Jinja ``set`` blocks. Escaping stays with the filters (render/literals.py) and XML
 autoescape: views hold raw text.
 

@@ -10,11 +10,12 @@ import yaml
 
 from rhi_gen.cli import main
 from rhi_gen.transports.unitree_dds import G1_ORDER
+from tests.support import upstream_urdf
 from tests.support.cpp_build import syntax_check_driver
-from tests.support.repo import REPO, UPSTREAM_URDF
+from tests.support.repo import REPO
 from tests.support.repo import URDF_FIXTURES as FIXTURES
 
-UPSTREAM_G1 = UPSTREAM_URDF / "unitree_g1.urdf"
+UPSTREAM_G1 = upstream_urdf.find("unitree_g1.urdf")  # the repository's copy (tests/data/upstream_urdf)
 
 
 def run(args: list[str], capsys) -> tuple[int, str, str]:
@@ -25,8 +26,7 @@ def run(args: list[str], capsys) -> tuple[int, str, str]:
 
 @pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_new_on_upstream_g1_uses_the_sdk_order_and_compiles(tmp_path, capsys):
-    if not UPSTREAM_G1.is_file():
-        pytest.skip("../shared/upstream/urdf/unitree_g1.urdf is not present on this machine")
+    assert UPSTREAM_G1 is not None, "tests/data/upstream_urdf/unitree_g1.urdf is missing"
     code, _, err = run(["new", "--vendor", "unitree", "--robot", "g1", "--urdf", str(UPSTREAM_G1),
                           "--project", str(tmp_path)], capsys)
     assert code == 0, err

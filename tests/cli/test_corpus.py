@@ -31,10 +31,11 @@ from lxml import etree
 
 from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, is_xacro
 from rhi_gen.inputs.xacro_expand import expand_xacro
+from tests.support import upstream_urdf
 from tests.support.cli import run_cli, snapshot
 from tests.support.corpus import EXPECTED_REJECTIONS, Description, corpus
 from tests.support.cpp_build import syntax_check_driver
-from tests.support.repo import PACKAGE, TESTS, UPSTREAM_URDF
+from tests.support.repo import PACKAGE, TESTS
 
 REPORT = TESTS / ".corpus_report.txt"
 COMPILE_WORKERS = 2
@@ -207,7 +208,7 @@ def test_every_description_generates_a_compiling_driver_or_is_rejected_clearly(t
                + f" ({elapsed:.1f} s: {generate_time:.1f} s rhi-gen new, {elapsed - generate_time:.1f} s g++ "
                  f"with {COMPILE_WORKERS} workers)")
     lines = ["rhi-gen corpus: example-robot-data"
-             + (f" + {UPSTREAM_URDF}" if UPSTREAM_URDF.is_dir() else " (shared upstream folder absent)")]
+             + (f" + {upstream_urdf.SHARED}" if upstream_urdf.SHARED.is_dir() else " (shared upstream folder absent)")]
     for o in outcomes:
         mark = {"generated": "NO-COMPILE" if o.compile_error else "generated" if o.status_note else "compiled"
                 }.get(o.status, o.status)

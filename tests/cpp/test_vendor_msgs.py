@@ -5,8 +5,10 @@
   the .msg files;
 * generation is deterministic and cached by content: a second generation gives the same bytes, and a
   changed .msg gives another cache key;
-* without ../shared the reason is clear and only the robots whose transport needs these messages skip.
-The tests that need ../shared skip with that reason when it is missing (a fresh clone).
+* without ../shared the reason is one line, names how to provide the folder, and only the robots whose
+  transport needs the missing package (aimdk_msgs) skip; interface_protocol is the repository's copy
+  (tests/data/vendor_msgs) and never missing.
+The aimdk_msgs cases skip with that reason when ../shared is missing (a fresh clone).
 """
 from __future__ import annotations
 
@@ -71,47 +73,53 @@ def _ros_type(cpp: str) -> str:
 
 def _struct(label: str) -> str:
     package, name = label.split("/")
-    root = vendor_msgs.generated_root()
-    return (root / "include" / package / package / "msg" / "detail" / f"{_snake(name)}__struct.hpp").read_text()
-
-
-@pytest.fixture(scope="module")
-def needs_shared():
-    reason = vendor_msgs.missing_reason()
+    reason = vendor_msgs.missing_reason((vendor_msgs.package(package),))
     if reason:
         pytest.skip(reason)
+    return (vendor_msgs.header_dir(package) / "detail" / f"{_snake(name)}__struct.hpp").read_text()
 
 
-@pytest.mark.parametrize("label", sorted(EXPECTED_FIELDS))
-def test_fields_are_those_of_sdk_facts(needs_shared, label):
-    text = _struct(label)
-    types = dict(re.findall(r"using _(\w+)_type =\s*([^;]+);", text))
-    members = re.findall(r"^  _(\w+)_type (\w+);$", text, re.M)
-    assert all(a == b for a, b in members), members
-    got = [(name, _ros_type(types[name])) for name, _ in members]
-    assert got == EXPECTED_FIELDS[label]
+def _labels(package: str, table: dict) -> list[str]:
+    return sorted(label for label in table if label.startswith(package + "/"))
 
 
-@pytest.mark.parametrize("label", sorted(EXPECTED_CONSTANTS))
-def test_constants_are_those_of_sdk_facts(needs_shared, label):
-    found = {name: int(value) for name, value in
-             re.findall(r"static constexpr uint8_t (\w+) =\s*(\d+)u;", _struct(label))}
-    assert found == EXPECTED_CONSTANTS[label]
+# One case per package (each checks every message of it): without ../shared, aimdk_msgs is one skip.
+@pytest.mark.parametrize("package", [p.name for p in vendor_msgs.PACKAGES])
+def test_fields_are_those_of_sdk_facts(package):
+    for label in _labels(package, EXPECTED_FIELDS):
+        text = _struct(label)
+        types = dict(re.findall(r"using _(\w+)_type =\s*([^;]+);", text))
+        members = re.findall(r"^  _(\w+)_type (\w+);$", text, re.M)
+        assert all(a == b for a, b in members), members
+        got = [(name, _ros_type(types[name])) for name, _ in members]
+        assert got == EXPECTED_FIELDS[label], label
 
 
-def test_every_driver_include_is_generated(needs_shared):
-    root = vendor_msgs.generated_root()
-    for p in vendor_msgs.PACKAGES:
-        for m in p.messages:
-            header = root / "include" / p.name / p.name / "msg" / f"{_snake(Path(m).stem)}.hpp"
-            assert header.is_file(), header
+@pytest.mark.parametrize("package", [p.name for p in vendor_msgs.PACKAGES])
+def test_constants_are_those_of_sdk_facts(package):
+    for label in _labels(package, EXPECTED_CONSTANTS):
+        found = {name: int(value) for name, value in
+                 re.findall(r"static constexpr uint8_t (\w+) =\s*(\d+)u;", _struct(label))}
+        assert found == EXPECTED_CONSTANTS[label], label
 
 
-def test_generation_is_deterministic_and_cached(needs_shared, tmp_path, monkeypatch):
-    first = vendor_msgs.generated_root()
-    assert vendor_msgs.generated_root() == first          # cached: same folder, not generated again
+@pytest.mark.parametrize("name", [p.name for p in vendor_msgs.PACKAGES])
+def test_every_driver_include_is_generated(name):
+    p = vendor_msgs.package(name)
+    if vendor_msgs.missing_reason((p,)):
+        pytest.skip(vendor_msgs.missing_reason((p,)))
+    for m in p.messages:
+        header = vendor_msgs.header_dir(name) / f"{_snake(Path(m).stem)}.hpp"
+        assert header.is_file(), header
+
+
+def test_generation_is_deterministic_and_cached(tmp_path, monkeypatch):
+    # interface_protocol: the repository's copy, so this runs on every machine
+    p = vendor_msgs.package("interface_protocol")
+    first = vendor_msgs.package_root(p)
+    assert vendor_msgs.package_root(p) == first          # cached: same folder, not generated again
     monkeypatch.setenv("RHI_MSGS_CACHE", str(tmp_path / "cache"))
-    second = vendor_msgs.generated_root()
+    second = vendor_msgs.package_root(p)
     assert second.parent == tmp_path / "cache" and second.name == first.name
     cmp = filecmp.dircmp(first, second)
     assert _identical(cmp), f"generated headers differ between two runs: {cmp.report_full_closure()}"
@@ -124,27 +132,29 @@ def _identical(cmp: filecmp.dircmp) -> bool:
     return not mismatch and not errors and all(_identical(sub) for sub in cmp.subdirs.values())
 
 
-def test_a_changed_msg_changes_the_cache_key(needs_shared, tmp_path, monkeypatch):
-    key = vendor_msgs.cache_key()
+def test_a_changed_msg_changes_the_cache_key(tmp_path, monkeypatch):
+    p = vendor_msgs.package("interface_protocol")
+    key = vendor_msgs.package_key(p)
     copy = tmp_path / "msgs"
-    for p in vendor_msgs.PACKAGES:
-        for m in p.messages:
-            (copy / p.source / m).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(vendor_msgs.UPSTREAM_MSGS / p.source / m, copy / p.source / m)
-    monkeypatch.setattr(vendor_msgs, "UPSTREAM_MSGS", copy)
-    assert vendor_msgs.cache_key() == key
-    joint_state = copy / "aimdk_msgs/interface/robot/hal/msg/JointState.msg"
+    for m in p.messages:
+        (copy / p.source / m).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(vendor_msgs.IN_REPO_MSGS / p.source / m, copy / p.source / m)
+    monkeypatch.setattr(vendor_msgs, "IN_REPO_MSGS", copy)
+    assert vendor_msgs.package_key(p) == key               # the key holds contents, not paths
+    joint_state = copy / p.source / "msg/JointState.msg"
     joint_state.write_text(joint_state.read_text() + "\nuint8 motor_temp\n")
-    assert vendor_msgs.cache_key() != key
+    assert vendor_msgs.package_key(p) != key
 
 
-def test_missing_shared_skips_only_vendor_transports(tmp_path, monkeypatch):
+def test_missing_shared_skips_only_the_agibot_transport(tmp_path, monkeypatch):
     monkeypatch.setattr(vendor_msgs, "UPSTREAM_MSGS", tmp_path / "no_shared")
     reason = vendor_msgs.missing_reason()
-    assert reason and str(tmp_path / "no_shared") in reason and "hal/msg/JointCommand.msg" in reason
-    agibot, engineai = vendor_msgs.skip_reason("agibot_topics"), vendor_msgs.skip_reason("engineai_topics")
-    assert agibot.startswith("agibot_topics needs the vendor messages") and "aimdk_msgs/" in agibot, agibot
-    assert engineai.startswith("engineai_topics needs the vendor messages") and "interface_protocol/" in engineai
-    assert "aimdk_msgs/" not in engineai, engineai
-    assert vendor_msgs.skip_reason("unitree_dds") is None and vendor_msgs.skip_reason("generic_topics") is None
-    assert vendor_msgs.include_dirs() == []
+    assert reason and str(tmp_path / "no_shared" / "aimdk_msgs") in reason, reason
+    assert "\n" not in reason and "RHI_UPSTREAM" in reason and "../shared" in reason, reason
+    agibot = vendor_msgs.skip_reason("agibot_topics")
+    assert agibot.startswith("agibot_topics needs vendor messages: message definitions of aimdk_msgs"), agibot
+    assert "\n" not in agibot, agibot
+    for transport in ("engineai_topics", "unitree_dds", "generic_topics", "custom"):
+        assert vendor_msgs.skip_reason(transport) is None, transport   # the repository has what they need
+    assert [d.name for d in vendor_msgs.include_dirs()] == ["interface_protocol"]
+    assert vendor_msgs.include_dirs(vendor_msgs.packages_of("agibot_topics")) == []

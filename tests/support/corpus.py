@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support.repo import UPSTREAM_URDF
+from tests.support import upstream_urdf
 
 # label -> (words the one-line reason must contain, why the input itself is at fault)
 EXPECTED_REJECTIONS: dict[str, tuple[tuple[str, ...], str]] = {
@@ -73,8 +73,7 @@ def corpus() -> list[Description]:
             continue
         under = text.split("example-robot-data/robots/", 1)[-1]
         found.append((f"example-robot-data:{under}", Path(dist.locate_file(f))))
-    if UPSTREAM_URDF.is_dir():
-        found += [(f"upstream:{p.name}", p) for p in UPSTREAM_URDF.glob("*.urdf")]
+    found += [(f"upstream:{p.name}", p) for p in (*upstream_urdf.in_repo(), *upstream_urdf.shared_only())]
     found.sort(key=lambda item: item[0])
     taken: set[str] = set()
     return [Description(label, path, robot_name(path.name.split(".")[0], taken)) for label, path in found]

@@ -9,9 +9,8 @@ TESTS = REPO / "tests"
 FIXTURES = TESTS / "fixtures"
 URDF_FIXTURES = FIXTURES / "urdf"
 HOSTILE = FIXTURES / "hostile"
-# The upstream material next to the repository (SDK facts, vendor URDFs and messages); absent in a fresh clone.
-SHARED = REPO.parent / "shared"
-UPSTREAM_URDF = SHARED / "upstream" / "urdf"
+# The optional upstream vendor data (../shared/upstream or $RHI_UPSTREAM): tests/support/vendor_msgs.py and
+# tests/support/upstream_urdf.py, which also know the copies the repository carries (tests/data/).
 PACKAGE = "robot_hardware_interface"
 
 

@@ -1,6 +1,6 @@
 // Runs one generated driver against a simulated robot (the rhi_fake stand-ins).
 //
-// Built per robot by tests/cpp_build.py: this file + robot_data.hpp (tables written from the
+// Built per robot by tests/support/cpp_build.py: this file + robot_data.hpp (tables written from the
 // vendor YAML, the URDF and the expanded ros2_control xacro) + the generated driver's object file
 // (+ crc_probe.cpp for unitree_dds). The driver is created through pluginlib's registry
 // (PLUGINLIB_EXPORT_CLASS), exactly as ros2_control's ResourceManager does: this translation unit

@@ -1,7 +1,7 @@
 // Shared pieces of the driver harness: frames exchanged with the fake robot, value encodings,
 // the HardwareInfo built from the generated ros2_control description, interface lookup.
 //
-// robot_data.hpp (written per robot by tests/cpp_build.py) provides namespace rhi_data: the
+// robot_data.hpp (written per robot by tests/support/cpp_build.py) provides namespace rhi_data: the
 // expected joint -> SDK slot table read from the vendor YAML (NOT from the generated
 // jointIndexMap), limits from the URDF, transport topics, parameter defaults and kInfoRecords,
 // the <ros2_control> block of the expanded xacro. Interfaces are read and written through

@@ -1,8 +1,9 @@
 """The three reference robots under robots/ match their upstream facts.
 
-Oracles are independent of rhi-gen's own code: the upstream URDFs in the shared
-folder (../shared/upstream/urdf, next to the repository) and joint orders hard-coded
-here from SDK_FACTS.md. Only lxml and PyYAML are used.
+Oracles are independent of rhi-gen's own code: the upstream URDFs (the repository's copies in
+tests/data/upstream_urdf for G1 and PM01; AgiBot X2's from ../shared/upstream/urdf, skipped with one line
+without it: tests/support/upstream_urdf.py) and joint orders hard-coded here from SDK_FACTS.md. Only lxml and
+PyYAML are used.
 """
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ import pytest
 import yaml
 from lxml import etree
 
-from tests.support.repo import REPO, SHARED, UPSTREAM_URDF
+from tests.support import upstream_urdf
+from tests.support.repo import REPO
 
 ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
 
@@ -93,9 +95,7 @@ def _ours(vendor: str, robot: str) -> etree._Element:
 
 
 def _upstream(upstream_file: str) -> etree._Element:
-    if not SHARED.is_dir():
-        pytest.skip(f"shared upstream folder {SHARED} does not exist (upstream URDFs unavailable)")
-    return _root(UPSTREAM_URDF / upstream_file)
+    return _root(upstream_urdf.require(upstream_file))
 
 
 def _yaml(vendor: str, robot: str) -> dict:
@@ -143,8 +143,9 @@ def test_urdf_is_a_skeleton_not_a_copy(vendor, robot, upstream_file, robot_name)
     text = path.read_text(encoding="utf-8")
     assert text.startswith("<!--"), "must start with the provenance comment"
     assert "written for rhi-gen from the joint facts of" in text.split("-->", 1)[0].lower()
-    if SHARED.is_dir():
-        assert text != (UPSTREAM_URDF / upstream_file).read_text(encoding="utf-8")
+    upstream = upstream_urdf.find(upstream_file)
+    if upstream is not None:
+        assert text != upstream.read_text(encoding="utf-8")
 
 
 def test_imu_frames_present():

@@ -25,7 +25,8 @@ from rhi_gen.errors import RhiGenError, UrdfError
 from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes, load_urdf, parse_urdf_bytes, portable_xml
 from rhi_gen.inputs.xacro_expand import expand_xacro
 from rhi_gen.model import JointLimits, Mimic
-from tests.support.repo import REPO, UPSTREAM_URDF
+from tests.support import upstream_urdf
+from tests.support.repo import REPO
 from tests.support.repo import URDF_FIXTURES as FIX
 
 XACRO = FIX / "xacro"
@@ -583,12 +584,13 @@ def _oracle_cases():
     cases = [pytest.param(FIX / name, id=name) for name in VALID_URDFS]
     cases.append(pytest.param(XACRO / "robot.urdf.xacro", id="xacro/robot.urdf.xacro"))
     cases.append(pytest.param(XACRO / "plain_name_with_ns.urdf", id="xacro/plain_name_with_ns"))
-    if UPSTREAM_URDF.is_dir():
-        cases += [pytest.param(p, id=f"upstream/{p.name}")
-                  for p in sorted(UPSTREAM_URDF.glob("*.urdf"))]
+    # the repository's upstream copies always; the shared folder's others when it is there
+    cases += [pytest.param(p, id=f"upstream/{p.name}") for p in upstream_urdf.in_repo()]
+    if upstream_urdf.SHARED.is_dir():
+        cases += [pytest.param(p, id=f"upstream/{p.name}") for p in upstream_urdf.shared_only()]
     else:
-        cases.append(pytest.param(None, id="upstream", marks=pytest.mark.skip(
-            reason=f"{UPSTREAM_URDF} is missing")))
+        cases.append(pytest.param(None, id="upstream/not-carried", marks=pytest.mark.skip(
+            reason=upstream_urdf.missing_reason("agibot_x2.urdf, engineai_pm01_edu.urdf"))))
     return cases
 
 

@@ -16,8 +16,8 @@ import pytest
 import yaml
 
 from rhi_gen.inputs.urdf_loader import canonical_urdf_bytes
+from tests.support import upstream_urdf
 from tests.support.cli import assert_rejected, new_rejected, run_cli, snapshot
-from tests.support.repo import UPSTREAM_URDF as UPSTREAM
 from tests.support.repo import URDF_FIXTURES as FIX
 
 
@@ -55,7 +55,7 @@ def workspace(tmp_path: Path) -> Path:
 
 # ---------------------------------------------------------------- outside: copied or expanded
 def test_plain_urdf_outside_is_copied(tmp_path):
-    source = UPSTREAM / "unitree_g1.urdf" if (UPSTREAM / "unitree_g1.urdf").is_file() else FIX / "simple_arm.urdf"
+    source = upstream_urdf.find("unitree_g1.urdf") or FIX / "simple_arm.urdf"
     root = tmp_path / "proj"
     result = new(root, "g1", source)
     copy = root / "robots/acme/g1.urdf"

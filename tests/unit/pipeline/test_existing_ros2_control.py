@@ -14,11 +14,12 @@ from pathlib import Path
 
 import pytest
 
+from tests.support import upstream_urdf
 from tests.support.cli import assert_rejected, run_cli, snapshot
-from tests.support.repo import HOSTILE, UPSTREAM_URDF
+from tests.support.repo import HOSTILE
 from tests.support.repo import URDF_FIXTURES as FIX
 
-UPSTREAM_G1 = UPSTREAM_URDF / "unitree_g1.urdf"
+UPSTREAM_G1 = upstream_urdf.find("unitree_g1.urdf")  # the repository's copy (tests/data/upstream_urdf)
 ANY = -1  # assert_rejected(line=ANY): some line number
 
 
@@ -186,7 +187,7 @@ def test_a_tag_on_joints_the_driver_leaves_alone(tmp_path):
 
 
 def test_a_description_without_a_tag_gives_no_warning(tmp_path):
-    urdf = UPSTREAM_G1 if UPSTREAM_G1.is_file() else FIX / "simple_arm.urdf"
+    urdf = UPSTREAM_G1 if UPSTREAM_G1 is not None else FIX / "simple_arm.urdf"
     assert new(tmp_path / "proj", "unitree", "g1", urdf).err == ""
 
 

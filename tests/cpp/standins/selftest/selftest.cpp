@@ -1,8 +1,8 @@
-// Self-test of the rhi-gen C++ stand-ins and rhi_fake hooks (run by tests/test_standins.py).
+// Self-test of the rhi-gen C++ stand-ins and rhi_fake hooks (run by tests/cpp/test_standins.py).
 // Exercises every stand-in header and every hook with the real ROS 2 message headers, counts heap
 // allocations on the hot paths, and checks the SDK struct layouts. Exit code 0 = all checks passed.
 // With -DRHI_SELFTEST_VENDOR_MSGS it also checks the rosidl-generated vendor messages (they need
-// ../shared: tests/vendor_msgs.py).
+// ../shared: tests/support/vendor_msgs.py).
 
 // ---- headers as a generated driver includes them (stand-ins and real messages) ----
 #ifdef RHI_SELFTEST_VENDOR_MSGS

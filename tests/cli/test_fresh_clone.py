@@ -1,0 +1,116 @@
+"""Issue 24: a fresh clone passes its own tests and runs its own benchmark.
+
+`git clone` of the repository's HEAD into an empty temporary folder (nothing beside it: no ../shared), then
+the README's own commands, parsed from README.md so the test runs them word for word:
+
+* "Run the tests": the whole command (install-test-deps, venv, pip, pytest) must pass, and the number of
+  skipped tests must be the one README states ("without the AimDK message definitions N tests skip"),
+  plus one: the inner copy of this test, which skips (RHI_FRESH_CLONE_INNER is set) so the clone does not
+  clone itself again;
+* "Benchmarks": the command with `--robot g1 --robot pm01` measures both; with `--robot x2` it says in
+  one line that it skipped X2 and why (no raw compiler error).
+
+Cost: this runs last in the session (tests/conftest.py) and passes the session's compiled-object cache
+to the clone (RHI_CPP_CACHE: object keys hold contents, never paths, so the clone's compiles are cache
+hits); pip installs from its own cache. What is left is the Python tests, the uncached compiles (the
+stand-in self-tests, -fsyntax-only checks, gtests) and running the harness binaries again. The clone
+tests HEAD: commit first when running this on a working tree with changes.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+from tests.support import cpp_build
+
+REPO = Path(__file__).resolve().parents[2]
+INNER = "RHI_FRESH_CLONE_INNER"
+# What a user's machine does not have: the project's shared vendor data and this session's own settings.
+DROPPED_ENV = ("RHI_UPSTREAM", "RHI_UPSTREAM_MSGS", "VIRTUAL_ENV", "PYTEST_ADDOPTS", "PYTEST_CURRENT_TEST",
+               "PYTHONPATH")
+TIMEOUT = 3600
+
+
+def readme_block(heading: str) -> str:
+    """The first ```sh block of README.md's section ``heading``."""
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    section = text.split(f"\n## {heading}\n", 1)[1].split("\n## ", 1)[0]
+    match = re.search(r"```sh\n(.*?)```", section, re.S)
+    assert match, f"README.md, {heading!r}: no ```sh block"
+    return match[1].strip()
+
+
+def readme_skip_count() -> int:
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    match = re.search(r"without the AimDK message definitions (\d+) tests skip", text)
+    assert match, "README.md does not say how many tests skip without the AimDK message definitions"
+    return int(match[1])
+
+
+@pytest.fixture(scope="module")
+def clone(tmp_path_factory):
+    if os.environ.get(INNER):
+        pytest.skip(f"inner run of tests/cli/test_fresh_clone.py ({INNER} is set): a fresh clone does not clone "
+                    "itself again")
+    if not (REPO / ".git").exists() or shutil.which("git") is None:
+        pytest.skip("not a git checkout (or no git): nothing to clone")
+    root = tmp_path_factory.mktemp("fresh")
+    dest = root / "clone"                      # root holds nothing else: no ../shared beside the clone
+    subprocess.run(["git", "clone", "--quiet", str(REPO), str(dest)], check=True, capture_output=True)
+    assert not (dest.parent / "shared").exists()
+    env = {k: v for k, v in os.environ.items() if k not in DROPPED_ENV}
+    env[INNER] = "1"
+    env["TMPDIR"] = str(root / "tmp")          # the inner pytest's basetemp, away from this session's
+    (root / "tmp").mkdir()
+    # The session's object cache (the same content gives the same key in any folder).
+    env["RHI_CPP_CACHE"] = str(os.environ.get("RHI_CPP_CACHE") or
+                               cpp_build.session_builder(tmp_path_factory).cache_dir)
+    return dest, env
+
+
+def run(cmd: str, cwd: Path, env: dict[str, str]) -> tuple[subprocess.CompletedProcess, float]:
+    start = time.monotonic()
+    proc = subprocess.run(["bash", "-c", cmd], cwd=cwd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
+    return proc, time.monotonic() - start
+
+
+def test_readme_test_command_passes_in_a_fresh_clone(clone, report):
+    dest, env = clone
+    command = readme_block("Run the tests")
+    proc, seconds = run(command, dest, env)
+    tail = proc.stdout[-6000:] + proc.stderr[-3000:]
+    report(f"fresh clone: `{command}` took {seconds:.0f} s")
+    assert proc.returncode == 0, f"exit {proc.returncode} after {seconds:.0f} s:\n{tail}"
+    summary = proc.stdout.strip().splitlines()[-1]
+    report(f"fresh clone: {summary}")
+    skipped = int(m[1]) if (m := re.search(r"(\d+) skipped", summary)) else 0
+    assert skipped == readme_skip_count() + 1, (
+        f"README says {readme_skip_count()} tests skip without the AimDK message definitions (+1: the inner copy "
+        f"of this test); the clone skipped {skipped}:\n"
+        + "\n".join(line for line in proc.stdout.splitlines() if line.startswith("SKIPPED")))
+    reasons = [line for line in proc.stdout.splitlines() if line.startswith("SKIPPED")]
+    allowed = ("aimdk_msgs", "upstream URDF", "upstream is missing", INNER)
+    assert all(any(a in line for a in allowed) for line in reasons), "\n".join(reasons)
+
+
+def test_readme_benchmark_runs_in_a_fresh_clone(clone, report):
+    dest, env = clone
+    if not (dest / ".venv" / "bin" / "python").is_file():
+        pytest.fail("the README's test command did not create .venv (see the test above)")
+    command = readme_block("Benchmarks").split("#", 1)[0].strip()
+    proc, seconds = run(f"{command} --robot g1 --robot pm01", dest, env)
+    report(f"fresh clone: benchmark (g1, pm01) took {seconds:.0f} s")
+    assert proc.returncode == 0, f"exit {proc.returncode}:\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}"
+    assert "== unitree/g1" in proc.stdout and "== engineai/pm01" in proc.stdout, proc.stdout[-4000:]
+    assert "skipped" not in proc.stdout, proc.stdout[-4000:]
+    # X2's messages are not in the repository: one line says so, no compiler runs.
+    proc, _ = run(f"{command} --robot x2", dest, env)
+    lines = (proc.stdout + proc.stderr).strip().splitlines()
+    assert proc.returncode != 0 and lines[0].startswith("skipped agibot/x2: agibot_topics needs vendor messages"), lines
+    assert "RHI_UPSTREAM" in lines[0] and "error:" not in proc.stderr, lines

@@ -13,7 +13,7 @@ from pathlib import Path
 from .. import transports
 from ..errors import ConfigError, UrdfError
 from ..model.config import VendorConfig
-from ..model.naming import joint_name_problem, pascal_case, suggest, upper_snake
+from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
 from ..model.robot import InputProvenance, MotorJoint, RobotModel
 from ..model.urdf import UrdfJoint, UrdfRobot
 
@@ -126,7 +126,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
     return RobotModel(
         vendor=config.vendor, robot=config.robot, robot_pascal=pascal,
         robot_upper=upper_snake(config.robot) if not config.class_prefix else upper_snake(pascal),
-        class_name=f"{pascal}HardwareInterface", plugin_name=f"{config.vendor}/{pascal}HardwareInterface",
+        class_name=f"{pascal}HardwareInterface", plugin_name=plugin_name(config.vendor, f"{pascal}HardwareInterface"),
         node_name=f"{config.robot}_hardware_interface", transport=config.transport,
         motor_count=config.motor_count, float_type=config.float_type, joints=tuple(joints),
         unmapped_joints=tuple(config.unmapped_joints),

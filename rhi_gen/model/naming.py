@@ -12,6 +12,10 @@ import re
 
 from .c_library_names import C_LIBRARY_NAMES
 
+# The package's C++ namespace: a robot's driver is robot_hardware_interface::<vendor>::<Class>, its
+# pluginlib name robot_hardware_interface/<vendor>/<Class> (the namespace path with '/').
+PACKAGE_NAMESPACE = "robot_hardware_interface"
+
 # At most 26 characters: vendor, robot and class prefix become C++ names that generated lines
 # combine (Vendor::RobotHardwareInterface::RobotHardwareInterface(), the header guard
 # ROBOT_HARDWARE_INTERFACE__VENDOR__ROBOT_HPP_), and ROS 2 code stays within
@@ -39,6 +43,14 @@ RESERVED_NAMESPACES = frozenset({
 # Folders of include/robot_hardware_interface/ that hold rhi-gen's shared headers: a vendor of that
 # name would put its robot headers there (vendor "common", robot "types" would overwrite types.hpp).
 RESERVED_VENDOR_FOLDERS = frozenset({"common", "transport"})
+# Names the shared headers declare in namespace robot_hardware_interface (nested namespaces, free
+# functions and variables spelt like a vendor): the vendor namespace robot_hardware_interface::<vendor>
+# would be that namespace (its names mixed with the driver's) or clash with that function.
+# tests/test_naming.py checks that every such name of rhi_gen/cpp and rhi_gen/transports is here.
+PACKAGE_SCOPE_NAMES = frozenset({
+    "unitree_crc", "unitree_go", "unitree_hg",                     # namespaces
+    "bounded", "trimmed",                                           # functions
+})
 # Vendor namespaces that are ours to use (the reference vendors) even though SDKs use some of them.
 ALLOWED_VENDOR_NAMESPACES = frozenset({"unitree", "agibot", "engineai"})
 
@@ -64,10 +76,24 @@ def vendor_problem(name: object) -> str | None:
     if problem is None and name in C_LIBRARY_NAMES:
         return (f"vendor {name!r} is a function, type or macro the C library declares at global scope, so it "
                 "cannot be the driver's C++ namespace")
+    if problem is None and name in PACKAGE_SCOPE_NAMES:
+        return (f"vendor {name!r} would clash with {PACKAGE_NAMESPACE}::{name} of rhi-gen's shared headers "
+                f"(the driver's namespace is {PACKAGE_NAMESPACE}::<vendor>)")
     if problem is None and name in RESERVED_VENDOR_FOLDERS:
         return (f"vendor {name!r} is the folder of rhi-gen's shared headers "
                 f"(include/robot_hardware_interface/{name}/)")
     return problem
+
+
+def plugin_name(vendor: str, class_name: str) -> str:
+    """The pluginlib lookup name of robot_hardware_interface::<vendor>::<Class>, as <plugin> names it."""
+    return f"{PACKAGE_NAMESPACE}/{vendor}/{class_name}"
+
+
+def legacy_plugin_name(vendor: str, class_name: str) -> str:
+    """The plugin name of rhi-gen before the package namespace (<vendor>/<Class>, C++ <vendor>::<Class>):
+    a description that still names it gets a warning saying what to write instead."""
+    return f"{vendor}/{class_name}"
 
 
 def pascal_case(name: str) -> str:

@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .config import ImuConfig, Parameters, TransportOptions
+from .naming import PACKAGE_NAMESPACE
 from .urdf import JointLimits
 
 
@@ -36,12 +37,12 @@ class InputProvenance:
 
 @dataclass(frozen=True)
 class RobotModel:
-    vendor: str               # C++ namespace and folder, e.g. "unitree"
+    vendor: str               # C++ namespace robot_hardware_interface::<vendor> and folder, e.g. "unitree"
     robot: str                # file stem, e.g. "g1"
     robot_pascal: str         # "G1", "PM01", "MyArm"
     robot_upper: str          # "G1", "PM01", "MY_ARM"
     class_name: str           # "G1HardwareInterface"
-    plugin_name: str          # "unitree/G1HardwareInterface"
+    plugin_name: str          # "robot_hardware_interface/unitree/G1HardwareInterface"
     node_name: str            # "g1_hardware_interface"
     transport: str            # a name registered in rhi_gen/transports/
     motor_count: int          # N of MotorCommand<N, T>
@@ -54,6 +55,16 @@ class RobotModel:
     transport_options: TransportOptions
     provenance: InputProvenance
     urdf_name: str = ""
+
+    @property
+    def cpp_namespace(self) -> str:
+        """The driver's C++ namespace: robot_hardware_interface::unitree."""
+        return f"{PACKAGE_NAMESPACE}::{self.vendor}"
+
+    @property
+    def qualified_class_name(self) -> str:
+        """The plugin's C++ type: robot_hardware_interface::unitree::G1HardwareInterface."""
+        return f"{self.cpp_namespace}::{self.class_name}"
 
     @property
     def joints_by_index(self) -> tuple[MotorJoint, ...]:

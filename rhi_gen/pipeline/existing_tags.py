@@ -19,6 +19,7 @@ from pathlib import Path
 from ..errors import InputWarning
 from ..inputs.urdf_loader import is_xacro
 from ..model import RobotModel, UrdfRobot
+from ..model.naming import legacy_plugin_name
 from ..model.urdf import Ros2ControlBlock
 from ..render.package import ROBOT_FILES
 from .load import LoadedRobot
@@ -60,6 +61,15 @@ def existing_tag_warning(urdf: UrdfRobot, model: RobotModel, *, xacro: bool = Fa
               if b.plugin != model.plugin_name and any(j.name in driven for j in b.joints)]
     if not blocks:
         return None
+    old = legacy_plugin_name(model.vendor, model.class_name)
+    renamed = next((b for b in blocks if b.plugin == old), None)
+    if renamed is not None:
+        return InputWarning(
+            f'<ros2_control name="{renamed.name}"> names plugin {old}, which rhi-gen now generates as '
+            f"{model.plugin_name} (C++ {model.qualified_class_name}): pluginlib cannot load the old name",
+            file=urdf.source, line=None if xacro else renamed.line,
+            fix=f"write <plugin>{model.plugin_name}</plugin> in that tag, or replace the tag with the generated "
+                f"{description_macro(model)}")
     covered = list(dict.fromkeys(j.name for b in blocks for j in b.joints))
     shared = [name for name in covered if name in driven]
     which = "the same joints" if len(shared) == len(covered) else f"{len(shared)} of them ({_few(shared)})"

@@ -85,7 +85,7 @@ def find_clash(robots: Sequence[LoadedRobot]) -> Clash | None:
         if m.robot in names:
             return Clash("robot name", m.robot, r, names[m.robot])
         names[m.robot] = r
-        cls = f"{m.vendor}::{m.class_name}"
+        cls = m.qualified_class_name
         if cls in classes:
             return Clash("plugin class", cls, r, classes[cls])
         classes[cls] = r

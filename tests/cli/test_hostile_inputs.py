@@ -13,6 +13,7 @@ been generated, so "nothing changed" also means "nothing half-overwritten".
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -23,6 +24,7 @@ import pytest
 import yaml
 from lxml import etree
 
+from rhi_gen.model.naming import vendor_problem
 from tests.support.cli import (
     URDF_REL,
     YAML_REL,
@@ -37,7 +39,7 @@ from tests.support.cli import (
     write_project,
 )
 from tests.support.cpp_build import syntax_check_driver
-from tests.support.repo import HOSTILE, PACKAGE
+from tests.support.repo import HOSTILE, PACKAGE, REPO
 
 
 @pytest.fixture
@@ -237,6 +239,9 @@ def test_hostile_joint_name_through_generate(project, label):
     ("--robot", "arm\"; system(\"rm -rf /", "lowercase letters"),
     ("--vendor", "common", "shared headers"),
     ("--vendor", "transport", "shared headers"),
+    ("--vendor", "unitree_hg", "clash with the C++ namespace"),
+    ("--vendor", "unitree_go", "robot_hardware_interface::unitree_go of rhi-gen's shared headers"),
+    ("--vendor", "bounded", "robot_hardware_interface::bounded of rhi-gen's shared headers"),
     ("--vendor", "system", "the C library declares at global scope"),
     ("--vendor", "errno", "the C library declares at global scope"),
 ])
@@ -244,6 +249,23 @@ def test_vendor_or_robot_name_that_breaks_cpp_through_new(tmp_path, option, valu
     names = {"--vendor": "acme", "--robot": "arm", option: value}
     new_rejected(tmp_path / "proj", "--vendor", names["--vendor"], "--robot", names["--robot"],
                  "--urdf", HOSTILE / "arm.urdf", file=option, words=(words,))
+
+
+def test_names_the_shared_headers_declare_in_the_package_namespace_are_refused_as_vendor():
+    """robot_hardware_interface::<vendor> must not be one of the package namespace's own names: a
+    nested namespace (the vendor's driver would land in it) or a function (a redeclaration error).
+    The shared headers declare namespace-scope names at column 0 (ROS 2 style): collect them."""
+    root = REPO / "rhi_gen"
+    decl = re.compile(r"^(?!using |class |struct |enum |namespace |template|typedef |return |#|//|\}|\{)"
+                      r"[A-Za-z_][\w:<>, ]*?[ *&]([a-z][a-z0-9_]*)\s*(?:\(|=|\[|\{|;)")
+    names = set()
+    for header in [*root.glob("cpp/common/*.hpp"), *root.glob("transports/*/*.hpp")]:
+        for line in header.read_text(encoding="utf-8").splitlines():
+            found = decl.match(line) or re.match(r"^namespace (\w+)$", line)
+            if found and found.group(1) != "robot_hardware_interface":
+                names.add(found.group(1))
+    assert {"unitree_hg", "bounded"} <= names
+    assert {n for n in names if vendor_problem(n) is None} == set()
 
 
 @pytest.mark.parametrize("key, value, line, words", [

@@ -195,7 +195,8 @@ def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path)
             "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
             "linear_acceleration.z"]
     assert d.plugin == b.model.plugin_name
-    assert plugin_types(reference.package_dir).get(d.plugin) == f"{b.model.vendor}::{b.model.class_name}"
+    assert plugin_types(reference.package_dir).get(d.plugin) == \
+        f"robot_hardware_interface::{b.model.vendor}::{b.model.class_name}"
     params = b.model.parameters
     assert d.parameters["command_writer_period_us"] == str(params.command_writer_period_us)
     assert d.parameters["state_decimation"] == str(params.state_decimation)

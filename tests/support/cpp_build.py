@@ -353,7 +353,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     elif model.transport == "unitree_dds":
         groups = [("all", 0, model.motor_count, opts.lowcmd_topic, opts.lowstate_topic)]
     else:
-        groups = [("all", 0, model.motor_count, opts.command_topic, opts.state_topic)]
+        # custom carries no topics (its options are the base TransportOptions): the fake bus needs none
+        groups = [("all", 0, model.motor_count, getattr(opts, "command_topic", ""), getattr(opts, "state_topic", ""))]
 
     def group_of(slot: int) -> int:
         for g, (_, offset, size, _, _) in enumerate(groups):
@@ -415,9 +416,10 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr size_t kGroupCount = {len(groups)};",
         f"inline constexpr char kCommandTopic[] = {_c_string(groups[0][3])};",
         f"inline constexpr char kStateTopic[] = {_c_string(groups[0][4])};",
-        f"inline constexpr char kImuTopic[] = {_c_string(opts.imu_topic)};",
-        f"inline constexpr uint8_t kModePr = {opts.mode_pr};",
-        f"inline constexpr uint8_t kParallelParserType = {opts.parallel_parser_type};",
+        # each transport's options carry only its own fields (transports/<name>/): the others are unused
+        f"inline constexpr char kImuTopic[] = {_c_string(getattr(opts, 'imu_topic', ''))};",
+        f"inline constexpr uint8_t kModePr = {getattr(opts, 'mode_pr', 0)};",
+        f"inline constexpr uint8_t kParallelParserType = {getattr(opts, 'parallel_parser_type', 0)};",
         "// unitree go: MotorCmd_.mode of every LowCmd_ slot (the YAML's motor_modes, else the known robot's)",
         f"inline constexpr uint8_t kMotorModes[] = {{{', '.join(str(m) for m in motor_modes) or '0'}}};",
         "// parameter defaults: the vendor YAML's parameters (spec defaults where it gives none)",

@@ -42,7 +42,8 @@ def test_model_keeps_urdf_order_and_yaml_indices(tmp_path):
     assert [(j.name, j.index) for j in m.joints] == [("shoulder_pan", 2), ("shoulder_lift", 0), ("elbow", 1)]
     assert [j.name for j in m.joints_by_index] == ["shoulder_lift", "elbow", "shoulder_pan"]
     assert m.slot_names == ("shoulder_lift", "elbow", "shoulder_pan")
-    assert (m.class_name, m.plugin_name, m.node_name) == ("ArmHardwareInterface", "acme/ArmHardwareInterface",
+    assert (m.class_name, m.plugin_name, m.node_name) == ("ArmHardwareInterface",
+                                                          "robot_hardware_interface/acme/ArmHardwareInterface",
                                                           "arm_hardware_interface")
     assert m.provenance.yaml_path == "robot.yaml"
     assert not Path(m.provenance.urdf_path).is_absolute()

@@ -49,7 +49,8 @@ def new(root: Path, vendor: str, robot: str, urdf: Path, *extra: str):
 XARM_WARNING = (
     'already has <ros2_control name="uf_robot_hardware/UFRobotSystemHardware"> with plugin '
     "uf_robot_hardware/UFRobotSystemHardware for 7 joints (joint1, joint2, joint3 and 4 more); the generated "
-    "description/xarm7.ros2_control.xacro drives the same joints with plugin uf/XARM7HardwareInterface -> "
+    "description/xarm7.ros2_control.xacro drives the same joints with plugin "
+    "robot_hardware_interface/uf/XARM7HardwareInterface -> "
     "replace that tag with the generated macro, or keep the tag and do not include the generated macro; never "
     "both (two plugins would claim the same joint interfaces)")
 
@@ -100,7 +101,7 @@ def test_generate_warns_once_per_robot_with_a_tag(tagged_project):
                                '("RRBotSystem" with plugin ros2_control_demo_hardware/RRBotSystemPositionOnlyHardware, '
                                '"GazeboSystem" with plugin gazebo_ros2_control/GazeboSystem) for 2 joints (joint1, '
                                "joint2); the generated description/rrbot.ros2_control.xacro drives the same joints "
-                               "with plugin acme/RrbotHardwareInterface -> ")
+                               "with plugin robot_hardware_interface/acme/RrbotHardwareInterface -> ")
     assert lines[1].startswith("warning: robots/acme/xarm7.urdf:26: already has <ros2_control name=")
     assert "summary:" in result.out and "warning" not in result.out
 
@@ -160,8 +161,19 @@ def _with_tag(plugin: str, joints: list[str]) -> str:
 def test_a_tag_with_the_generated_plugin_is_the_generated_macro(tmp_path):
     """The description already includes the generated macro (README step 4): nothing to warn about."""
     urdf = tmp_path / "arm.urdf"
-    urdf.write_text(_with_tag("acme/ArmHardwareInterface", ["shoulder_pan", "elbow"]))
+    urdf.write_text(_with_tag("robot_hardware_interface/acme/ArmHardwareInterface", ["shoulder_pan", "elbow"]))
     assert new(tmp_path / "proj", "acme", "arm", urdf).err == ""
+
+
+def test_a_tag_with_the_plugin_name_before_the_package_namespace_says_what_to_write(tmp_path):
+    """Migration: acme/ArmHardwareInterface became robot_hardware_interface/acme/ArmHardwareInterface."""
+    urdf = tmp_path / "arm.urdf"
+    urdf.write_text(_with_tag("acme/ArmHardwareInterface", ["shoulder_pan", "elbow"]))
+    err = new(tmp_path / "proj", "acme", "arm", urdf).err
+    assert err.count("warning:") == 1, err
+    assert ('names plugin acme/ArmHardwareInterface, which rhi-gen now generates as '
+            'robot_hardware_interface/acme/ArmHardwareInterface') in err, err
+    assert "write <plugin>robot_hardware_interface/acme/ArmHardwareInterface</plugin> in that tag" in err, err
 
 
 def test_a_tag_on_joints_the_driver_leaves_alone(tmp_path):

@@ -38,7 +38,8 @@ def h1_2(tmp_path: Path) -> Path:
 
 def test_new_refuses_a_plugin_class_clash(h1_2):
     message = new_rejected(h1_2, "--vendor", "unitree", "--robot", "h12", "--urdf", ARM, file="--robot",
-                           words=("robot 'h12' would generate plugin class unitree::H12HardwareInterface",
+                           words=(("robot 'h12' would generate plugin class "
+                                   "robot_hardware_interface::unitree::H12HardwareInterface"),
                                   "which robots/unitree/h1_2.yaml already generates",
                                   "choose another --robot name", "--class-prefix NAME"))
     assert "class_prefix:" in message
@@ -51,7 +52,8 @@ def test_the_class_prefix_fix_works(h1_2):
     new(h1_2, "unitree", "h12", "--class-prefix", "H12V2")
     assert "class_prefix: H12V2\n" in (h1_2 / "robots/unitree/h12.yaml").read_text()
     plugins = (h1_2 / PLUGINS).read_text()
-    assert 'type="unitree::H12HardwareInterface"' in plugins and 'type="unitree::H12V2HardwareInterface"' in plugins
+    assert 'type="robot_hardware_interface::unitree::H12HardwareInterface"' in plugins
+    assert 'type="robot_hardware_interface::unitree::H12V2HardwareInterface"' in plugins
     assert run_cli("check", "--project", h1_2).code == 0
     assert run_cli("generate", "--project", h1_2).code == 0
 
@@ -64,8 +66,9 @@ def test_the_other_robot_name_fix_works(h1_2):
 def test_a_class_prefix_that_clashes_names_the_option(h1_2):
     new_rejected(h1_2, "--vendor", "unitree", "--robot", "h2", "--urdf", ARM, "--class-prefix", "H12",
                  "--transport-option", "family=hg",
-                 file="--class-prefix", words=(("plugin class unitree::H12HardwareInterface is already generated "
-                                                "for robots/unitree/h1_2.yaml"), "choose another --class-prefix"))
+                 file="--class-prefix",
+                 words=(("plugin class robot_hardware_interface::unitree::H12HardwareInterface is already "
+                         "generated for robots/unitree/h1_2.yaml"), "choose another --class-prefix"))
 
 
 @pytest.mark.parametrize("value", ["h12", "H 12", "1H", "Class", "H12_b"])
@@ -81,7 +84,8 @@ def test_new_refuses_a_robot_name_of_another_vendor(h1_2):
 
 
 def test_the_same_class_name_in_two_vendors_is_fine(h1_2):
-    """Different namespaces, different plugin names: acme::H12HardwareInterface is another class."""
+    """Different namespaces, different plugin names: robot_hardware_interface::acme::H12HardwareInterface is
+    another class."""
     new(h1_2, "acme", "h12")
     assert run_cli("check", "--project", h1_2).code == 0
 
@@ -109,8 +113,9 @@ def test_a_class_clash_in_the_project_is_named_in_yaml_words(h1_2, command):
     before = snapshot(h1_2)
     # robots/unitree/h12.yaml sorts before h1_2.yaml ('2' < '_'), so h1_2.yaml is the second one
     message = assert_rejected(run_cli(command, "--project", h1_2), file="robots/unitree/h1_2.yaml", line=5,
-                              key="robot", words=(("plugin class unitree::H12HardwareInterface is also generated "
-                                                   "for robots/unitree/h12.yaml"), "set class_prefix: <Name>"))
+                              key="robot",
+                              words=(("plugin class robot_hardware_interface::unitree::H12HardwareInterface is also "
+                                      "generated for robots/unitree/h12.yaml"), "set class_prefix: <Name>"))
     assert "--" not in message.split(" -> ")[1]
     assert snapshot(h1_2) == before
 

@@ -8,6 +8,7 @@ namespace skeleton and include lists every C++ file shares).
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -17,6 +18,7 @@ from tests.support.repo import PACKAGE, REPO
 PKG = REPO / "generated" / PACKAGE
 REFERENCE = ("unitree/g1", "agibot/x2", "engineai/pm01")
 SKELETON = {"{", "}", "};", "});", "public:", "private:", "protected:"}
+NAMESPACE_LINE = re.compile(r"^(namespace(\s+[\w:]+)?|\}\s*// namespace(\s+[\w:]+)?)$")  # opening or closing one
 
 
 def driver_files(robot: str) -> tuple[Path, Path]:
@@ -28,7 +30,7 @@ def code_lines(robot: str) -> list[str]:
     for path in driver_files(robot):
         for line in path.read_text(encoding="utf-8").splitlines():
             s = line.strip()
-            if s and not s.startswith(("//", "#")) and s not in SKELETON:
+            if s and not s.startswith(("//", "#")) and s not in SKELETON and not NAMESPACE_LINE.match(s):
                 out.append(s)
     return out
 

@@ -17,6 +17,8 @@
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
+namespace robot_hardware_interface
+{
 namespace agibot
 {
 namespace
@@ -69,7 +71,7 @@ static_assert(robot_hardware_interface::slotsAreValid(kJoints, X2_NUM_MOTOR), "j
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
-constexpr robot_hardware_interface::RobotSpec kRobot{"agibot/X2HardwareInterface",
+constexpr RobotSpec kRobot{"robot_hardware_interface/agibot/X2HardwareInterface",
   "x2_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
   {"lo", true, 2000, 1, 100}};
 
@@ -99,5 +101,7 @@ X2HardwareInterface::X2HardwareInterface()
 // rhi-gen:end-user-region callbacks
 
 }  // namespace agibot
+}  // namespace robot_hardware_interface
 
-PLUGINLIB_EXPORT_CLASS(agibot::X2HardwareInterface, hardware_interface::SystemInterface)
+PLUGINLIB_EXPORT_CLASS(
+  robot_hardware_interface::agibot::X2HardwareInterface, hardware_interface::SystemInterface)

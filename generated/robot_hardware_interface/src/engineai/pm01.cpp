@@ -17,6 +17,8 @@
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
+namespace robot_hardware_interface
+{
 namespace engineai
 {
 namespace
@@ -57,7 +59,7 @@ static_assert(robot_hardware_interface::slotsAreValid(kJoints, PM01_NUM_MOTOR), 
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
-constexpr robot_hardware_interface::RobotSpec kRobot{"engineai/PM01HardwareInterface",
+constexpr RobotSpec kRobot{"robot_hardware_interface/engineai/PM01HardwareInterface",
   "pm01_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
   {"lo", true, 2000, 1, 100}};
 
@@ -80,5 +82,7 @@ PM01HardwareInterface::PM01HardwareInterface()
 // rhi-gen:end-user-region callbacks
 
 }  // namespace engineai
+}  // namespace robot_hardware_interface
 
-PLUGINLIB_EXPORT_CLASS(engineai::PM01HardwareInterface, hardware_interface::SystemInterface)
+PLUGINLIB_EXPORT_CLASS(
+  robot_hardware_interface::engineai::PM01HardwareInterface, hardware_interface::SystemInterface)

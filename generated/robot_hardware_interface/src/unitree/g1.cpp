@@ -18,6 +18,8 @@
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
+namespace robot_hardware_interface
+{
 namespace unitree
 {
 namespace
@@ -64,7 +66,7 @@ static_assert(robot_hardware_interface::slotsAreValid(kJoints, G1_NUM_MOTOR), "j
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
-constexpr robot_hardware_interface::RobotSpec kRobot{"unitree/G1HardwareInterface",
+constexpr RobotSpec kRobot{"robot_hardware_interface/unitree/G1HardwareInterface",
   "g1_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
   {"eth0", true, 2000, 1, 100}};
 
@@ -88,5 +90,7 @@ G1HardwareInterface::G1HardwareInterface()
 // rhi-gen:end-user-region callbacks
 
 }  // namespace unitree
+}  // namespace robot_hardware_interface
 
-PLUGINLIB_EXPORT_CLASS(unitree::G1HardwareInterface, hardware_interface::SystemInterface)
+PLUGINLIB_EXPORT_CLASS(
+  robot_hardware_interface::unitree::G1HardwareInterface, hardware_interface::SystemInterface)

@@ -15,6 +15,8 @@
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
+namespace robot_hardware_interface
+{
 namespace agibot
 {
 
@@ -24,8 +26,9 @@ using X2MotorCommand = robot_hardware_interface::MotorCommand<X2_NUM_MOTOR, doub
 using X2MotorState = robot_hardware_interface::MotorState<X2_NUM_MOTOR, double>;
 using X2ImuState = robot_hardware_interface::ImuSample<double>;
 
-// agibot/X2HardwareInterface over agibot_topics. The joint table and transport options are in
-// src/agibot/x2.cpp; the logic is robot_hardware_interface::SystemDriver.
+// Plugin robot_hardware_interface/agibot/X2HardwareInterface over agibot_topics. The joint table
+// and transport options
+// are in src/agibot/x2.cpp; the logic is robot_hardware_interface::SystemDriver.
 class X2HardwareInterface : public robot_hardware_interface::SystemDriver<X2_NUM_MOTOR, double>
 {
 public:
@@ -45,5 +48,6 @@ private:
 };
 
 }  // namespace agibot
+}  // namespace robot_hardware_interface
 
 #endif  // ROBOT_HARDWARE_INTERFACE__AGIBOT__X2_HPP_

@@ -15,6 +15,8 @@
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
+namespace robot_hardware_interface
+{
 namespace engineai
 {
 
@@ -24,8 +26,9 @@ using PM01MotorCommand = robot_hardware_interface::MotorCommand<PM01_NUM_MOTOR, 
 using PM01MotorState = robot_hardware_interface::MotorState<PM01_NUM_MOTOR, double>;
 using PM01ImuState = robot_hardware_interface::ImuSample<double>;
 
-// engineai/PM01HardwareInterface over engineai_topics. The joint table and transport options are in
-// src/engineai/pm01.cpp; the logic is robot_hardware_interface::SystemDriver.
+// Plugin robot_hardware_interface/engineai/PM01HardwareInterface over engineai_topics. The joint
+// table and transport options
+// are in src/engineai/pm01.cpp; the logic is robot_hardware_interface::SystemDriver.
 class PM01HardwareInterface : public robot_hardware_interface::SystemDriver<PM01_NUM_MOTOR, double>
 {
 public:
@@ -45,5 +48,6 @@ private:
 };
 
 }  // namespace engineai
+}  // namespace robot_hardware_interface
 
 #endif  // ROBOT_HARDWARE_INTERFACE__ENGINEAI__PM01_HPP_

@@ -15,6 +15,8 @@
 // rhi-gen:begin-user-region includes
 // rhi-gen:end-user-region includes
 
+namespace robot_hardware_interface
+{
 namespace unitree
 {
 
@@ -24,8 +26,9 @@ using G1MotorCommand = robot_hardware_interface::MotorCommand<G1_NUM_MOTOR, floa
 using G1MotorState = robot_hardware_interface::MotorState<G1_NUM_MOTOR, float>;
 using G1ImuState = robot_hardware_interface::ImuSample<float>;
 
-// unitree/G1HardwareInterface over unitree_dds. The joint table and transport options are in
-// src/unitree/g1.cpp; the logic is robot_hardware_interface::SystemDriver.
+// Plugin robot_hardware_interface/unitree/G1HardwareInterface over unitree_dds. The joint table and
+// transport options
+// are in src/unitree/g1.cpp; the logic is robot_hardware_interface::SystemDriver.
 class G1HardwareInterface : public robot_hardware_interface::SystemDriver<G1_NUM_MOTOR, float>
 {
 public:
@@ -45,5 +48,6 @@ private:
 };
 
 }  // namespace unitree
+}  // namespace robot_hardware_interface
 
 #endif  // ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_

@@ -21,7 +21,7 @@ namespace plugins {
 
 struct PluginClass
 {
-  std::string derived;   // as written in PLUGINLIB_EXPORT_CLASS, e.g. "unitree::G1HardwareInterface"
+  std::string derived;   // as written in PLUGINLIB_EXPORT_CLASS, e.g. "robot_hardware_interface::unitree::G1HardwareInterface"
   std::string base;      // e.g. "hardware_interface::SystemInterface"
 };
 

@@ -13,7 +13,7 @@ namespace detail {
 
 struct PluginEntry
 {
-  std::string derived;      // e.g. "unitree::G1HardwareInterface" (as written in the macro)
+  std::string derived;      // e.g. "robot_hardware_interface::unitree::G1HardwareInterface" (as written in the macro)
   std::string base;         // e.g. "hardware_interface::SystemInterface"
   std::type_index base_type;
   std::function<std::shared_ptr<void>()> create;   // returns shared_ptr<Base> as shared_ptr<void>
@@ -22,8 +22,8 @@ struct PluginEntry
 // One <class name=".." type=".." base_class_type=".."> of a pluginlib plugin description.
 struct PluginDescription
 {
-  std::string lookup_name;  // e.g. "agibot/X2HardwareInterface" (what a <plugin> tag names)
-  std::string type;         // e.g. "agibot::X2HardwareInterface"
+  std::string lookup_name;  // e.g. "robot_hardware_interface/agibot/X2HardwareInterface" (what a <plugin> tag names)
+  std::string type;         // e.g. "robot_hardware_interface::agibot::X2HardwareInterface"
   std::string base;         // e.g. "hardware_interface::SystemInterface"
 };
 

@@ -70,7 +70,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
 
     lines = [
         f"# Vendor YAML for {vendor}/{robot}, written by `rhi-gen new`.",
-        "# Edit freely, then run `rhi-gen generate`; README.md has the full YAML reference.",
+        "# Edit freely, then run `rhi-gen generate`; docs/vendor-yaml.md has the full YAML reference.",
     ]
     if known is not None:
         lines.append(f"# joint_map follows the vendor's motor order: {known.note}.")

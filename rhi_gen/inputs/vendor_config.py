@@ -51,7 +51,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     for key in REQUIRED_KEYS:
         if key not in data:
             raise ConfigError(f"required key {key!r} is missing", file=shown, key=key,
-                              fix="see the YAML reference in README.md")
+                              fix="see the YAML reference in docs/vendor-yaml.md")
 
     vendor = v.string(data["vendor"], "vendor")
     if (problem := vendor_problem(vendor)):

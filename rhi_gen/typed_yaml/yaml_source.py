@@ -102,7 +102,7 @@ def read_text(path: Path, shown: str) -> str:
         size = path.stat().st_size
         if size > MAX_YAML_BYTES:
             raise ConfigError(f"file is {size} bytes; a vendor YAML is a few kB", file=shown,
-                              fix="start from `rhi-gen new` or the README's YAML reference")
+                              fix="start from `rhi-gen new` or the YAML reference (docs/vendor-yaml.md)")
         data = path.read_bytes()
     except OSError as exc:
         raise ConfigError(f"cannot read: {exc.strerror}", file=shown,
@@ -116,7 +116,8 @@ def read_text(path: Path, shown: str) -> str:
 def parse_yaml_text(text: str, shown: str) -> tuple[dict[str, Any], dict[str, int]]:
     """Parse YAML text to a mapping of plain values (scalars as Scalar) plus key path -> line."""
     if not text.strip():
-        raise ConfigError("file is empty", file=shown, fix="start from `rhi-gen new` or the README's YAML reference")
+        raise ConfigError("file is empty", file=shown,
+                          fix="start from `rhi-gen new` or the YAML reference (docs/vendor-yaml.md)")
     try:
         docs = list(yaml.compose_all(text, Loader=yaml.SafeLoader))
     except yaml.MarkedYAMLError as exc:
@@ -131,7 +132,7 @@ def parse_yaml_text(text: str, shown: str) -> tuple[dict[str, Any], dict[str, in
     docs = [d for d in docs if d is not None]
     if not docs:
         raise ConfigError("file is empty (only comments)", file=shown,
-                          fix="start from `rhi-gen new` or the README's YAML reference")
+                          fix="start from `rhi-gen new` or the YAML reference (docs/vendor-yaml.md)")
     if len(docs) > 1:
         raise ConfigError("holds several YAML documents; a vendor YAML is one mapping", file=shown,
                           line=docs[1].start_mark.line + 1, fix="remove the '---' and everything after it")

@@ -29,6 +29,8 @@ import pytest
 
 from tests.support import cpp_build
 
+pytestmark = pytest.mark.cpp  # it runs the whole suite, compiles included, in the clone
+
 REPO = Path(__file__).resolve().parents[2]
 INNER = "RHI_FRESH_CLONE_INNER"
 # What a user's machine does not have: the project's shared vendor data and this session's own settings.

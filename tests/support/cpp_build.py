@@ -184,17 +184,6 @@ def load_models(project_root: Path):
     return load_robots(Project(project_root.resolve()))
 
 
-def template_env_factory(template_dir: Path):
-    """An env_factory for render_package: make_environment()'s settings, sources (templates/, cpp/,
-    transports/) from a copy of rhi_gen's."""
-    from rhi_gen.render.environment import make_environment
-
-    def factory():
-        return make_environment(template_dir)
-
-    return factory
-
-
 def render_package_to(loaded_robots, package_dir: Path, env_factory=None) -> dict[str, str]:
     """Render the package for ``loaded_robots`` into ``package_dir``; returns the plan."""
     from rhi_gen.render.package import render_package
@@ -797,8 +786,8 @@ def fill_custom_regions(loaded_robots, package_dir: Path, regions: Path = TOY_BU
     return filled
 
 
-def render_test_package(root: Path, *, only: Sequence[str] | None = None, template_dir: Path | None = None,
-                        extra_robots: bool = True, fill_custom: bool = True) -> RenderedPackage:
+def render_test_package(root: Path, *, only: Sequence[str] | None = None, extra_robots: bool = True,
+                        fill_custom: bool = True) -> RenderedPackage:
     """Project (robots/ + test robots) -> rendered package -> robot_data.hpp per robot, under root.
 
     ``fill_custom``: custom-transport robots get the toy bus filled into their user regions (without
@@ -806,8 +795,7 @@ def render_test_package(root: Path, *, only: Sequence[str] | None = None, templa
     project = make_test_project(root / "project", extra_robots=extra_robots, only=only)
     loaded = load_models(project)
     package_dir = root / "generated" / PACKAGE
-    factory = template_env_factory(template_dir) if template_dir is not None else None
-    render_package_to(loaded, package_dir, factory)
+    render_package_to(loaded, package_dir)
     if fill_custom:
         fill_custom_regions(loaded, package_dir)
     builds = prepare_robot_builds(loaded, package_dir, root / "work")

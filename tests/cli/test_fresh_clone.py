@@ -28,10 +28,10 @@ from pathlib import Path
 import pytest
 
 from tests.support import cpp_build
+from tests.support.repo import REPO
 
 pytestmark = pytest.mark.cpp  # it runs the whole suite, compiles included, in the clone
 
-REPO = Path(__file__).resolve().parents[2]
 INNER = "RHI_FRESH_CLONE_INNER"
 # What a user's machine does not have: the project's shared vendor data and this session's own settings.
 DROPPED_ENV = ("RHI_UPSTREAM", "RHI_UPSTREAM_MSGS", "VIRTUAL_ENV", "PYTEST_ADDOPTS", "PYTEST_CURRENT_TEST",

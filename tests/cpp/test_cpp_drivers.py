@@ -3,8 +3,9 @@
 For every robot of robots/ (and the harness's test-only generic_topics robot, tests/cpp/harness/robots/)
 the package is rendered into a temporary folder, then:
 
-* each common header (and the unitree CRC header) compiles on its own, twice included, with
-  -std=c++17 -Wall -Wextra -Wpedantic -Werror; so does each robot's driver header;
+* each robot's driver header compiles on its own, twice included, with -std=c++17 -Wall -Wextra
+  -Wpedantic -Werror (the shared headers are checked the same way where they live:
+  tests/cpp/test_cpp_sources.py);
 * the ros2_control description, expanded by xacro as a user includes it, lists exactly the YAML's
   mapped joints with their interfaces, the IMU sensor, and a plugin the plugin descriptor exports;
 * the driver and the harness (through rhi_fake/hw.hpp) are compiled against every distro's stand-ins
@@ -27,7 +28,6 @@ from __future__ import annotations
 
 import re
 import subprocess
-from pathlib import Path
 
 import pytest
 
@@ -38,7 +38,6 @@ from tests.support.cpp_build import (
     WARNING_FLAGS,
     build_driver_object,
     build_harness,
-    crc_header,
     expand_description,
     message_include_flags,
     plugin_types,
@@ -130,34 +129,8 @@ def test_every_robot_of_the_project_gets_a_harness(reference):
 
 
 # ------------------------------------------------------------------------------------ headers alone
-def _headers_alone(reference) -> list[Path]:
-    include = reference.package_dir / "include" / PACKAGE
-    headers = sorted((include / "common").glob("*.hpp"))
-    crcs = [crc_header(reference.package_dir, family) for family in ("hg", "go")]
-    return headers + [crc for crc in crcs if crc]
-
-
-def test_common_headers_compile_on_their_own(reference, tmp_path):
-    cxx = require_compiler()
-    include = reference.package_dir / "include"
-    headers = _headers_alone(reference)
-    names = {h.name for h in headers}
-    assert {"data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp"} <= names, names
-
-    def compile_one(header: Path):
-        rel = header.relative_to(include).as_posix()
-        src = tmp_path / f"alone_{header.stem}.cpp"
-        # Twice: the include guard / #pragma once works; alone: it includes what it uses.
-        src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
-        proc = subprocess.run([cxx, *WARNING_FLAGS, "-fsyntax-only", f"-I{include}", *standin_flags(DISTRO),
-                               *message_include_flags(), str(src)], capture_output=True, text=True)
-        return rel, proc
-
-    failures = [f"{rel}:\n{proc.stderr[:3000]}" for rel, proc in run_parallel(headers, compile_one)
-                if proc.returncode != 0]
-    assert not failures, "\n".join(failures)
-
-
+# The shared headers compile alone where they live (tests/cpp/test_cpp_sources.py); the package holds
+# them byte for byte (tests/unit/render/test_static_files.py). The robot's own header is checked here.
 @pytest.mark.parametrize("label", ROBOTS)
 def test_driver_header_compiles_on_its_own(reference, label, tmp_path):
     cxx = require_compiler()

@@ -45,7 +45,7 @@ def anchors(page: Path) -> set[str]:
     return found
 
 
-def broken_links(page: Path) -> list[str]:
+def broken_links(page: Path, root: Path = REPO) -> list[str]:
     problems = []
     for number, line in enumerate(_prose(page.read_text(encoding="utf-8")), 1):
         for target in LINK.findall(re.sub(r"`[^`]*`", "", line)):
@@ -53,11 +53,11 @@ def broken_links(page: Path) -> list[str]:
                 continue  # an address, not a file of the repository
             path, _, anchor = target.partition("#")
             dest = (page.parent / path).resolve() if path else page
-            where = f"{page.relative_to(REPO)}:{number}"
+            where = f"{page.relative_to(root)}:{number}"
             if not dest.exists():
                 problems.append(f"{where}: no file {target}")
             elif anchor and dest.suffix == ".md" and anchor not in anchors(dest):
-                problems.append(f"{where}: no heading for #{anchor} in {dest.relative_to(REPO)}")
+                problems.append(f"{where}: no heading for #{anchor} in {dest.relative_to(root)}")
     return problems
 
 
@@ -71,8 +71,8 @@ def test_every_relative_link_resolves(page):
     assert not broken_links(page)
 
 
-def test_a_broken_link_is_found(tmp_path, monkeypatch):
-    monkeypatch.setattr(__import__(__name__, fromlist=["REPO"]), "REPO", tmp_path)
+def test_a_broken_link_is_found(tmp_path):
     page = tmp_path / "page.md"
     page.write_text("# Title\n\n## Step\n\n## Step\n\nSee [a](missing.md), [b](#title), [c](#step-1), [d](#nowhere).\n")
-    assert broken_links(page) == ["page.md:7: no file missing.md", "page.md:7: no heading for #nowhere in page.md"]
+    assert broken_links(page, tmp_path) == ["page.md:7: no file missing.md",
+                                            "page.md:7: no heading for #nowhere in page.md"]

@@ -184,12 +184,12 @@ def load_models(project_root: Path):
     return load_robots(Project(project_root.resolve()))
 
 
-def render_package_to(loaded_robots, package_dir: Path, env_factory=None) -> dict[str, str]:
+def render_package_to(loaded_robots, package_dir: Path) -> dict[str, str]:
     """Render the package for ``loaded_robots`` into ``package_dir``; returns the plan."""
     from rhi_gen.render.package import render_package
 
     models = [r.model for r in loaded_robots]
-    plan = render_package(models) if env_factory is None else render_package(models, env_factory=env_factory)
+    plan = render_package(models)
     for rel, text in plan.items():
         path = package_dir / rel
         path.parent.mkdir(parents=True, exist_ok=True)

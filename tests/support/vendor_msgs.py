@@ -33,9 +33,9 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
+from tests.support.repo import REPO
 from tests.support.ros_msgs import require_dir, wheel_versions
 
-REPO = Path(__file__).resolve().parents[2]
 # The vendor messages the repository carries (tests/data/vendor_msgs/README.md).
 IN_REPO_MSGS = REPO / "tests" / "data" / "vendor_msgs"
 # The project's shared vendor data (optional): ../shared/upstream beside the clone, or $RHI_UPSTREAM.

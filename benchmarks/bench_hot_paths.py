@@ -107,7 +107,7 @@ def run_times(binary: Path, iterations: int) -> dict[str, dict[str, int]]:
 DRIVER_ENTRY = re.compile(
     r"^std::_Function_handler<[^,]*, robot_hardware_interface::"
     r"|^rclcpp::GenericTimer<robot_hardware_interface::.*>::execute_callback\("
-    r"|^robot_hardware_interface::.*::(onLowState|onGroupState|onJointState|writeCommand)\(")
+    r"|^robot_hardware_interface::.*::(on_low_state|on_group_state|on_joint_state|write_command)\(")
 
 
 def callgrind(binary: Path, path: str, iterations: int, work: Path) -> tuple[float, dict[str, int]]:

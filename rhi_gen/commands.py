@@ -16,6 +16,7 @@ from .errors import InputWarning, ProjectError, RhiGenError
 
 if TYPE_CHECKING:
     from .project import Project
+    from .write.api_migration import ApiRename
     from .write.changes import FileChange
     from .write.semantic_diff import RobotDiff
 
@@ -125,6 +126,12 @@ def _version_line(old: str, new: str) -> str:
             "the new version and rewrites only files whose content changes")
 
 
+def _print_renames(renames: Sequence[ApiRename], *, dry_run: bool = False) -> None:
+    """Old C++ API names rewritten in user regions: the user's code changed, so say where."""
+    for r in renames:
+        _out(f"  {'would rename' if dry_run else 'renamed'} in {r.note()}")
+
+
 def generate(*, robots: Sequence[str] | None, dry_run: bool, verbose: bool, force: bool,
              project: Path | None) -> int:
     """(Re)generate generated/robot_hardware_interface; a hand-edited file blocks the run unless force."""
@@ -143,6 +150,7 @@ def generate(*, robots: Sequence[str] | None, dry_run: bool, verbose: bool, forc
                 _out(f"blocked: {b.note()}")
         raise plan.blocked_error()
     counts = _print_changes([*plan.files, plan.manifest_change], verbose=verbose)
+    _print_renames(plan.renames, dry_run=dry_run)
     if not dry_run:
         apply(proj.generated_dir, plan.changes)
     for c in plan.backups:
@@ -168,6 +176,7 @@ def diff(*, robots: Sequence[str] | None, project: Path | None) -> int:
     if plan.other_version:
         _out(_version_line(plan.other_version, plan.generator_version))
     _print_robot_diffs(plan.robot_diffs, colour)
+    _print_renames(plan.renames, dry_run=True)
     files = [c for c in plan.files if c.status != "unchanged"]
     if files:
         _out("")

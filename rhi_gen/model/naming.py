@@ -46,10 +46,17 @@ RESERVED_VENDOR_FOLDERS = frozenset({"common", "transport"})
 # Names the shared headers declare in namespace robot_hardware_interface (nested namespaces, free
 # functions and variables spelt like a vendor): the vendor namespace robot_hardware_interface::<vendor>
 # would be that namespace (its names mixed with the driver's) or clash with that function.
-# tests/test_naming.py checks that every such name of rhi_gen/cpp and rhi_gen/transports is here.
+# tests/cli/test_hostile_inputs.py checks that every such name of rhi_gen/cpp and rhi_gen/transports is here.
 PACKAGE_SCOPE_NAMES = frozenset({
     "unitree_crc", "unitree_go", "unitree_hg",                     # namespaces
-    "bounded", "trimmed",                                           # functions
+    # functions (snake_case, ROS 2 style, so a vendor name could redeclare one)
+    "all_finite", "bound_command_block", "bounded", "components_initialized", "copy_state_block",
+    "cpu_has_clmul", "elapsed_us", "for_each_slot_block", "load_word", "low_cmd_crc", "low_state_crc",
+    "make_joint_index_map", "make_qos", "make_resource_manager", "make_tables", "masked_crc",
+    "masked_crc_clmul", "masked_crc_portable", "message_crc", "parse_bool", "parse_unsigned",
+    "power_of_x_mod", "publish_ros_imu", "read_bool_parameter", "read_driver_parameters",
+    "read_unsigned_parameter", "slots_are_valid", "steady_now_ns", "steady_now_us", "steady_ns", "trimmed",
+    "word_masks",
 })
 # Vendor namespaces that are ours to use (the reference vendors) even though SDKs use some of them.
 ALLOWED_VENDOR_NAMESPACES = frozenset({"unitree", "agibot", "engineai"})

@@ -18,6 +18,7 @@ from ..model import PackageInfo, RobotModel
 from ..project import PACKAGE_NAME, Project
 from ..render.banner import GENERATOR_MARK
 from ..render.package import render_package, robot_paths
+from ..write.api_migration import ApiRename
 from ..write.backups import backup_changes
 from ..write.changes import CHANGED, CREATED, REMOVED, UNCHANGED, FileChange
 from ..write.manifest import MANIFEST_NAME, Manifest, RobotRecord, robot_key, robot_record
@@ -71,6 +72,7 @@ class GenerationPlan:
     robot_diffs: list[RobotDiff]     # in robot terms, per robot in scope (and removed robots)
     old_manifest: Manifest | None
     generator_version: str           # the rhi-gen making this plan
+    renames: tuple[ApiRename, ...] = ()  # old API names rewritten in user regions
 
     @property
     def changes(self) -> list[FileChange]:
@@ -141,6 +143,7 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
 
     files: list[FileChange] = []
     blocked: list[Blocked] = []
+    renames: list[ApiRename] = []
     new_hashes: dict[str, str] = {}
     for rel, data in rendered.items():
         text = data.decode("utf-8")
@@ -149,10 +152,11 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
             files.append(FileChange(rel, CREATED, None, data))
             continue
         old_bytes = _read(project, rel)
-        new_bytes, problem = merge_existing(rel, text, old_bytes, recorded, have_manifest)
-        if problem:
-            blocked.append(problem)
-        files.append(FileChange(rel, UNCHANGED if new_bytes == old_bytes else CHANGED, old_bytes, new_bytes))
+        merged = merge_existing(rel, text, old_bytes, recorded, have_manifest)
+        if merged.problem:
+            blocked.append(merged.problem)
+        renames.extend(merged.renames)
+        files.append(FileChange(rel, UNCHANGED if merged.data == old_bytes else CHANGED, old_bytes, merged.data))
 
     if only is None:
         candidates = set(recorded) if have_manifest else set(owned_files_on_disk(project))
@@ -189,4 +193,5 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
         if corrupt and manifest_bytes is not None and manifest_change.status != UNCHANGED:
             originals[MANIFEST_NAME] = manifest_bytes
         backups = backup_changes(gen, originals)
-    return GenerationPlan(files, manifest_change, backups, blocked, robot_diffs, old_manifest, version)
+    return GenerationPlan(files, manifest_change, backups, blocked, robot_diffs, old_manifest, version,
+                          tuple(renames))

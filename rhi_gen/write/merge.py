@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..errors import GenerationError, RegionError, WriteBlockedError
+from .api_migration import ApiRename, migrate_region_bodies
 from .manifest import MANIFEST_NAME, generated_hash
 from .regions import FIX_MARKERS, OrphanedRegion, splice, user_code_regions
 
@@ -89,28 +90,38 @@ def _orphan_problem(rel: str, orphans: list[OrphanedRegion], why: str) -> Blocke
                    fix, line=orphans[0].line)
 
 
+@dataclass(frozen=True)
+class Merged:
+    """What regenerating one existing file gives: its bytes, what blocks writing them, what was renamed."""
+    data: bytes
+    problem: Blocked | None = None
+    renames: tuple[ApiRename, ...] = ()
+
+
 def merge_existing(rel: str, rendered: str, old_bytes: bytes, recorded: dict[str, str],
-                   have_manifest: bool) -> tuple[bytes, Blocked | None]:
-    """The bytes to write for ``rel`` (fresh render + the old region bodies) and what blocks it, if anything."""
+                   have_manifest: bool) -> Merged:
+    """The bytes to write for ``rel`` (fresh render + the old region bodies, old API names renamed)
+    and what blocks it, if anything."""
     shown = f"generated/{rel}"
     try:
         old_text = old_bytes.decode("utf-8")
     except UnicodeDecodeError:
-        return rendered.encode("utf-8"), Blocked(rel, "edited", "is no longer UTF-8 text (edited outside rhi-gen)",
-                                                 f"restore it from version control, {FIX_FORCE}")
+        return Merged(rendered.encode("utf-8"), Blocked(rel, "edited", "is no longer UTF-8 text (edited outside "
+                                                        "rhi-gen)", f"restore it from version control, {FIX_FORCE}"))
     try:
-        merged, orphans = splice(rendered, old_text, shown)
+        bodies, renames = migrate_region_bodies(old_text, shown)
+        merged, orphans = splice(rendered, bodies, shown)
     except RegionError as exc:
         if exc.file != shown:  # the fresh render itself: a template bug
             raise GenerationError(f"templates produced broken user-region markers: {exc.message}", file=exc.file,
                                   line=exc.line, fix=FIX_TEMPLATE_BUG) from exc
-        return rendered.encode("utf-8"), Blocked(rel, "markers", exc.message, FIX_MARKERS, line=exc.line)
+        return Merged(rendered.encode("utf-8"), Blocked(rel, "markers", exc.message, FIX_MARKERS, line=exc.line))
     data = merged.encode("utf-8")
     if data == old_bytes:
-        return data, None
+        return Merged(data)
     if orphans:
-        return data, _orphan_problem(rel, orphans, "the new template has no such region")
-    return data, _edit_problem(rel, old_text, recorded, have_manifest)
+        return Merged(data, _orphan_problem(rel, orphans, "the new template has no such region"), tuple(renames))
+    return Merged(data, _edit_problem(rel, old_text, recorded, have_manifest), tuple(renames))
 
 
 def removal_problem(rel: str, old_bytes: bytes, recorded: dict[str, str], have_manifest: bool) -> Blocked | None:

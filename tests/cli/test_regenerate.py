@@ -550,3 +550,24 @@ def test_code_in_a_region_retired_by_the_shared_core_names_the_hook_that_takes_i
     assert "generated/robot_hardware_interface/src/unitree/g1.cpp:" in err and "'on_activate'" in err
     assert "override on_activate_hook()" in err and "'callbacks' region" in err and "--force" in err
     assert tree(project) == inputs and inputs != before  # nothing written
+
+
+def test_old_api_names_in_user_regions_are_renamed_and_reported(project, capsys):
+    """Code a user wrote against the lowerCamel API (before the snake_case rename) is carried over
+    with the new names, `diff` says it would be, `generate` says where it was, and only once."""
+    body = ("static bool arm_ready(const G1HardwareInterface & driver)\n"
+            "{\n  return driver.getJointIndex(\"left_elbow_joint\") >= 0;  // getData() stays\n}\n")
+    fill_region(project / G1_CPP, "callbacks", body)
+    line = next(i for i, text in enumerate((project / G1_CPP).read_text().splitlines(), start=1)
+                if "getJointIndex" in text)
+    code, out, _ = cli(capsys, project, "diff")
+    where = f"{G1_CPP}:{line}: user region 'callbacks': getJointIndex -> get_joint_index"
+    assert code == 1 and f"would rename in {where}" in out, out
+    code, out, err = cli(capsys, project, "generate")
+    assert code == 0, err
+    assert f"renamed in {where}" in out, out
+    kept = region_bodies((project / G1_CPP).read_text())["callbacks"]
+    assert kept == body.replace("getJointIndex", "get_joint_index")
+    assert cli(capsys, project, "check")[0] == 0
+    code, out, _ = cli(capsys, project, "generate")
+    assert code == 0 and "renamed" not in out

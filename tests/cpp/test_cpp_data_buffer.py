@@ -3,7 +3,7 @@
 tests/cpp/harness/data_buffer_stress.cpp is compiled against the generated common/data_buffer.hpp
 (-std=c++17 -Wall -Wextra -Werror) in three flavours: plain -O2, ASan+UBSan and TSan. It checks the
 contract (nullptr before the first frame, newest frame afterwards, the consumer's frame untouched by
-any number of writes until its next getData(), no heap allocation, not copyable), then hands 10^6
+any number of writes until its next get_data(), no heap allocation, not copyable), then hands 10^6
 frames whose last field is a checksum of the rest from one producer through a
 DataBuffer<T, Producers::kOne> (no mutex: the driver's state and IMU buffers), and again from two
 producers through a DataBuffer<T> (the driver's command buffer has two: write() and the first-state
@@ -11,7 +11,7 @@ callback), to a consumer that
 verifies every frame, holds it a while and verifies it again. Torn frames, frames changed while
 held and frames going backwards must all be zero, and the sanitizers must report nothing.
 
-The last test proves the stress bites: the seed's double buffer (getData() returns a slot the
+The last test proves the stress bites: the seed's double buffer (get_data() returns a slot the
 producer may overwrite) must fail it.
 """
 from __future__ import annotations

@@ -15,7 +15,7 @@
 namespace robot_hardware_interface
 {
 
-// Who calls setData(): any number of threads (a mutex orders them), or one producer whose calls
+// Who calls set_data(): any number of threads (a mutex orders them), or one producer whose calls
 // are already ordered with each other (a single callback thread: no mutex needed).
 enum class Producers
 {
@@ -30,7 +30,7 @@ enum class Producers
 //   - back_   : the slot producers copy into (guarded by write_mutex_, which is held only for the
 //               copy, so the consumer never waits on it);
 //   - front_  : the slot the consumer is reading (owned by the consumer, never written by a
-//               producer until the consumer calls getData() again);
+//               producer until the consumer calls get_data() again);
 //   - middle_ : the newest complete frame, handed over with one atomic exchange.
 // A producer publishes by swapping back_ with middle_; the consumer picks up a new frame by
 // swapping front_ with middle_. The exchanges are acq_rel, so a slot's contents are fully written
@@ -48,7 +48,7 @@ public:
   // Producer side: copy `data` into the back slot and publish it as the newest frame.
   // Producers::kMany: any number of producer threads, serialised by a mutex held only for this
   // copy. Producers::kOne: the caller guarantees its calls never overlap.
-  void setData(const T & data)
+  void set_data(const T & data)
   {
     if constexpr (kProducers == Producers::kMany) {
       std::lock_guard<std::mutex> lock(write_mutex_);
@@ -58,9 +58,9 @@ public:
     }
   }
 
-  // Consumer side (one thread only): the newest complete frame, or nullptr if setData() was
-  // never called. The pointed-to slot stays untouched by producers until the next getData().
-  const T * getData()
+  // Consumer side (one thread only): the newest complete frame, or nullptr if set_data() was
+  // never called. The pointed-to slot stays untouched by producers until the next get_data().
+  const T * get_data()
   {
     if ((middle_.load(std::memory_order_relaxed) & kFreshBit) != 0U) {
       const uint8_t previous = middle_.exchange(front_, std::memory_order_acq_rel);

@@ -38,7 +38,7 @@ namespace robot_hardware_interface
 
 // True when every value is finite: NaN and infinity never reach ros2_control or the motors.
 template<typename ... Values>
-bool allFinite(Values... values)
+bool all_finite(Values... values)
 {
   for (const double value : {static_cast<double>(values)...}) {
     if (!std::isfinite(value)) {
@@ -53,18 +53,18 @@ bool allFinite(Values... values)
 // ros2_control's API (SystemDriver adapts it) nor of any SDK (transports feed it).
 //
 // Threads:
-//   - controller: read() / write() through readState() and writeCommand();
-//   - state: the transport's callbacks fill stateFrame() / imuFrame() and publish them; the
+//   - controller: read() / write() through read_state() and write_command();
+//   - state: the transport's callbacks fill state_frame() / imu_frame() and publish them; the
 //     state callbacks never overlap each other, nor do the IMU ones (they share those frames);
-//   - commands: the transport's writer takes nextCommand() every command_writer_period_us.
+//   - commands: the transport's writer takes next_command() every command_writer_period_us.
 // They hand frames over only through DataBuffers, never by sharing mutable data.
 //
-// Safe start (three layers): (1) nextCommand() yields nothing before the first valid state of an
+// Safe start (three layers): (1) next_command() yields nothing before the first valid state of an
 // activation; (2) that first state seeds the command buffer with "hold the measured position, all
-// gains zero"; (3) writeCommand() forwards nothing until readState() has copied a real state, and
+// gains zero"; (3) write_command() forwards nothing until read_state() has copied a real state, and
 // its first command is the measured position with zero gains.
 //
-// Command safety: writeCommand() clamps targets to the URDF limits; nextCommand() turns a joint
+// Command safety: write_command() clamps targets to the URDF limits; next_command() turns a joint
 // with a non-finite command or a negative gain, and every joint while no valid state has arrived
 // for state_timeout_ms, into damping only (last safe target, kp = 0, no velocity or feed-forward).
 template<size_t N, typename T>
@@ -101,7 +101,7 @@ public:
       }
     }
     std::sort(mapped_slots_.begin(), mapped_slots_.end());
-    updateCommandBounds();
+    update_command_bounds();
   }
 
   DriverCore(const DriverCore &) = delete;
@@ -112,18 +112,18 @@ public:
   DriverParameters & parameters() {return parameters_;}
   const DriverParameters & parameters() const {return parameters_;}
   const rclcpp::Logger & logger() const {return logger_;}
-  void setLogger(const rclcpp::Logger & logger) {logger_ = logger;}
-  rclcpp::Clock & throttleClock() {return throttle_clock_;}
-  bool hasImu() const {return spec_.imu_name != nullptr;}
+  void set_logger(const rclcpp::Logger & logger) {logger_ = logger;}
+  rclcpp::Clock & throttle_clock() {return throttle_clock_;}
+  bool has_imu() const {return spec_.imu_name != nullptr;}
   // SDK slots that drive a URDF joint, ascending; fixed after construction.
-  const std::vector<size_t> & mappedSlots() const {return mapped_slots_;}
+  const std::vector<size_t> & mapped_slots() const {return mapped_slots_;}
   // URDF joint name of every slot ("" where the slot drives no joint).
-  const std::array<const char *, N> & slotJointNames() const {return slot_joint_names_;}
+  const std::array<const char *, N> & slot_joint_names() const {return slot_joint_names_;}
 
-  CommandMode modeOf(size_t slot) const {return slot_modes_[slot];}
+  CommandMode mode_of(size_t slot) const {return slot_modes_[slot];}
 
   // The SDK motor slot of a URDF joint, -1 for none.
-  int slotOf(const std::string & joint_name) const
+  int slot_of(const std::string & joint_name) const
   {
     for (size_t i = 0; i < spec_.joint_count; ++i) {
       if (joint_name == spec_.joints[i].name) {
@@ -135,11 +135,11 @@ public:
 
   // ros2_control storage, exported as interfaces: controller thread only.
   JointStorage<N> & joints() {return frames_.joints;}
-  ImuData & imuData() {return imu_data_;}
+  ImuData & imu_data() {return imu_data_;}
 
   // on_activate: re-arm the safe start. After a deactivation the robot may have moved, so nothing
   // from the previous activation may be sent. Called while no transport thread runs.
-  void resetForActivation()
+  void reset_for_activation()
   {
     first_state_received_.store(false);
     command_initialized_.store(false);
@@ -156,7 +156,7 @@ public:
   // Decimation of a single state stream: true when this frame must be parsed. The first frame of
   // an activation always is. A skipped frame still proves that state arrives: it keeps the state
   // fresh for the stale-state check, unless the last parsed frame was rejected.
-  bool startStateFrame()
+  bool start_state_frame()
   {
     const bool is_first_state = !first_state_received_.load(std::memory_order_acquire);
     const uint32_t frame_count = state_frame_counter_.fetch_add(1, std::memory_order_relaxed);
@@ -164,28 +164,28 @@ public:
       return true;
     }
     if (state_frames_valid_) {
-      markStateFresh(steadyNowNs());
+      mark_state_fresh(steady_now_ns());
     }
     return false;
   }
 
   // The parsing buffer of the state thread.
-  State & stateFrame() {return motor_state_cache_;}
+  State & state_frame() {return motor_state_cache_;}
 
-  // The frame in stateFrame() is complete and valid: hand it to read(), and on the first one of
+  // The frame in state_frame() is complete and valid: hand it to read(), and on the first one of
   // an activation seed the command buffer (layer 2) before the writer may send.
-  void publishState(int64_t state_time_ns)
+  void publish_state(int64_t state_time_ns)
   {
     state_frames_valid_ = true;
-    motor_state_buffer_.setData(motor_state_cache_);
-    markStateFresh(state_time_ns);
+    motor_state_buffer_.set_data(motor_state_cache_);
+    mark_state_fresh(state_time_ns);
     if (first_state_received_.load(std::memory_order_acquire)) {
       return;
     }
     // Layer 2: the first command is "stay where you are": measured position, all gains zero.
     initial_cmd_cache_ = Command{};
     initial_cmd_cache_.q_target = motor_state_cache_.q;
-    motor_command_buffer_.setData(initial_cmd_cache_);
+    motor_command_buffer_.set_data(initial_cmd_cache_);
     first_state_received_.store(true, std::memory_order_release);
     RCLCPP_INFO(
       logger_, "first state received: command initialized to the measured position with zero "
@@ -194,32 +194,32 @@ public:
 
   // The frame being parsed is invalid: count it and return the count. Until a parsed frame is
   // accepted again, skipped (decimated) frames no longer keep the state fresh.
-  uint64_t rejectState()
+  uint64_t reject_state()
   {
     state_frames_valid_ = false;
     return ++invalid_state_count_;
   }
 
   // The newest valid state is this old (steady time): multi-stream transports report the age of
-  // their oldest stream here instead of calling startStateFrame().
-  void markStateFresh(int64_t state_time_ns)
+  // their oldest stream here instead of calling start_state_frame().
+  void mark_state_fresh(int64_t state_time_ns)
   {
     last_state_time_ns_.store(state_time_ns, std::memory_order_release);
   }
 
-  bool firstStateReceived() const {return first_state_received_.load(std::memory_order_acquire);}
+  bool first_state_received() const {return first_state_received_.load(std::memory_order_acquire);}
 
   // The parsing buffer of the IMU callback and its hand-off.
-  Imu & imuFrame() {return imu_state_cache_;}
-  void publishImu() {imu_state_buffer_.setData(imu_state_cache_);}
-  uint64_t rejectImu() {return ++invalid_imu_count_;}
+  Imu & imu_frame() {return imu_state_cache_;}
+  void publish_imu() {imu_state_buffer_.set_data(imu_state_cache_);}
+  uint64_t reject_imu() {return ++invalid_imu_count_;}
 
   // State-thread latency check; `start` is when the callback began. (Each path has its own
   // check: a throttled log call site must not be shared between threads.)
-  void checkStateLatency(std::chrono::steady_clock::time_point start)
+  void check_state_latency(std::chrono::steady_clock::time_point start)
   {
     uint64_t duration_us = 0;
-    if (tooSlow(start, MonitorThresholds::STATE_HANDLER_WARN_US, duration_us)) {
+    if (too_slow(start, MonitorThresholds::STATE_HANDLER_WARN_US, duration_us)) {
       RCLCPP_WARN_THROTTLE(
         logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
         "state callback took %" PRIu64 " us (threshold: %" PRIu64 " us)", duration_us,
@@ -229,12 +229,12 @@ public:
 
   // ---------------------------------------------------------------- writer thread (transport)
   // Warns when the send interval deviates from command_writer_period_us (monitor on).
-  void checkWriterJitter()
+  void check_writer_jitter()
   {
     if (!parameters_.enable_monitor) {
       return;
     }
-    const uint64_t now_us = steadyNowUs();
+    const uint64_t now_us = steady_now_us();
     const uint64_t last_us = cmd_writer_last_time_us_.exchange(now_us, std::memory_order_relaxed);
     if (last_us == 0 || now_us < last_us) {
       return;
@@ -252,19 +252,19 @@ public:
   }
 
   // Layer 1 and command safety: the frame to send now, or nullptr while nothing may be sent.
-  const Command * nextCommand()
+  const Command * next_command()
   {
     // Layer 1: send nothing before the first valid state of this activation.
     if (!first_state_received_.load(std::memory_order_acquire)) {
       return nullptr;
     }
-    const Command * cmd = motor_command_buffer_.getData();
+    const Command * cmd = motor_command_buffer_.get_data();
     if (cmd == nullptr) {
       return nullptr;  // unreachable: layer 2 published a command before setting the flag
     }
     // Stale state: the controller is working blind, so every joint holds its last safe target
     // with damping only (kp = 0, no velocity target, no feed-forward).
-    const bool stale = stateIsStale();
+    const bool stale = state_is_stale();
     if (stale) {
       RCLCPP_WARN_THROTTLE(
         logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
@@ -298,7 +298,7 @@ public:
     for (size_t i = 0; i < N; ++i) {
       // Non-finite values or negative gains are never forwarded: that joint holds damping only.
       const bool valid =
-        allFinite(cmd->q_target[i], cmd->dq_target[i], cmd->kp[i], cmd->kd[i], cmd->tau_ff[i]) &&
+        all_finite(cmd->q_target[i], cmd->dq_target[i], cmd->kp[i], cmd->kd[i], cmd->tau_ff[i]) &&
         cmd->kp[i] >= 0 && cmd->kd[i] >= 0;
       if (stale || !valid) {
         // Keep the last safe position target and damping of this joint.
@@ -325,10 +325,10 @@ public:
   }
 
   // Writer-thread latency check; `start` is when the cycle began.
-  void checkWriterLatency(std::chrono::steady_clock::time_point start)
+  void check_writer_latency(std::chrono::steady_clock::time_point start)
   {
     uint64_t duration_us = 0;
-    if (tooSlow(start, MonitorThresholds::CMD_WRITER_WARN_US, duration_us)) {
+    if (too_slow(start, MonitorThresholds::CMD_WRITER_WARN_US, duration_us)) {
       RCLCPP_WARN_THROTTLE(
         logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
         "command writer took %" PRIu64 " us (threshold: %" PRIu64 " us)", duration_us,
@@ -346,16 +346,16 @@ public:
 
   // prepare_command_mode_switch (controller manager, non-real-time): the claims after starting
   // and stopping the given "<joint>/<interface>" names; names of other components are ignored.
-  // Applied only if commitClaims() follows.
+  // Applied only if commit_claims() follows.
   template<typename Names>
-  void prepareClaims(const Names & start, const Names & stop)
+  void prepare_claims(const Names & start, const Names & stop)
   {
     Claims next = committed_;
     for (const auto & name : stop) {
-      updateClaim(next, name, false);
+      update_claim(next, name, false);
     }
     for (const auto & name : start) {
-      updateClaim(next, name, true);
+      update_claim(next, name, true);
     }
     next.generation = committed_.generation + 1;
     prepared_ = next;
@@ -364,17 +364,17 @@ public:
 
   // perform_command_mode_switch: hand the prepared claims to write(), which applies them at its
   // next cycle (never from this thread: write() may be running).
-  void commitClaims()
+  void commit_claims()
   {
     if (!claims_prepared_.exchange(false, std::memory_order_acquire)) {
       return;
     }
     committed_ = prepared_;
-    claim_buffer_.setData(committed_);
+    claim_buffer_.set_data(committed_);
   }
 
   // Position-commanded joints without default stiffness: limp under a position-only controller.
-  size_t jointsWithoutDefaultStiffness() const
+  size_t joints_without_default_stiffness() const
   {
     size_t count = 0;
     for (const size_t slot : mapped_slots_) {
@@ -386,30 +386,30 @@ public:
 
   // ---------------------------------------------------------------- controller thread
   // read(): the newest state and IMU sample into the exported storage.
-  void readState()
+  void read_state()
   {
     // Load the flag before fetching: the state thread sets it only after publishing the first
     // state of this activation, so when it is set the frame fetched below is at least that new.
     const bool state_is_current = first_state_received_.load(std::memory_order_acquire);
-    const State * state = motor_state_buffer_.getData();
+    const State * state = motor_state_buffer_.get_data();
     if (state != nullptr) {
-      forEachSlotBlock<N>(
+      for_each_slot_block<N>(
         [this, state](auto count, size_t begin) {
-          copyStateBlock<decltype(count)::value>(*state, frames_.joints, begin);
+          copy_state_block<decltype(count)::value>(*state, frames_.joints, begin);
         });
       if (state_is_current) {
         state_copied_.store(true, std::memory_order_relaxed);
       }
     }
-    const Imu * imu = imu_state_buffer_.getData();
+    const Imu * imu = imu_state_buffer_.get_data();
     if (imu != nullptr) {
-      imu_data_.ori_[0] = static_cast<double>(imu->quat[1]);  // x
-      imu_data_.ori_[1] = static_cast<double>(imu->quat[2]);  // y
-      imu_data_.ori_[2] = static_cast<double>(imu->quat[3]);  // z
-      imu_data_.ori_[3] = static_cast<double>(imu->quat[0]);  // w
+      imu_data_.orientation[0] = static_cast<double>(imu->quat[1]);  // x
+      imu_data_.orientation[1] = static_cast<double>(imu->quat[2]);  // y
+      imu_data_.orientation[2] = static_cast<double>(imu->quat[3]);  // z
+      imu_data_.orientation[3] = static_cast<double>(imu->quat[0]);  // w
       for (size_t i = 0; i < 3; ++i) {
-        imu_data_.angularVel_[i] = static_cast<double>(imu->omega[i]);
-        imu_data_.linearAcc_[i] = static_cast<double>(imu->acc[i]);
+        imu_data_.angular_velocity[i] = static_cast<double>(imu->omega[i]);
+        imu_data_.linear_acceleration[i] = static_cast<double>(imu->acc[i]);
       }
     }
   }
@@ -418,15 +418,15 @@ public:
   // writer. Only claimed interfaces count: an unclaimed stiffness / damping is the joint's default
   // gain while its position (or velocity) is claimed, and zero otherwise. Returns true when it
   // rewrote the command storage itself (safe start, mode switch), false otherwise.
-  bool writeCommand()
+  bool write_command()
   {
-    // Layer 3: nothing is forwarded before readState() has copied a state of this activation;
+    // Layer 3: nothing is forwarded before read_state() has copied a state of this activation;
     // stale zeros in the storage must never become a position target.
     if (!state_copied_.load(std::memory_order_relaxed)) {
       return false;
     }
     // A mode switch first, so that the safe start below has the last word on a first cycle.
-    bool rewritten = applyClaimChanges();
+    bool rewritten = apply_claim_changes();
     if (!command_initialized_.load(std::memory_order_relaxed)) {
       // Target = measured position, zero gains: the robot stays passive until a controller
       // commands it.
@@ -439,24 +439,24 @@ public:
       rewritten = true;
       RCLCPP_INFO(logger_, "command initialized to the measured position with zero gains");
     }
-    forEachSlotBlock<N>(
+    for_each_slot_block<N>(
       [this](auto count, size_t begin) {
-        boundCommandBlock<decltype(count)::value>(frames_, begin);
+        bound_command_block<decltype(count)::value>(frames_, begin);
       });
     // A velocity-commanded joint has no position target: its measured position (its kp is 0).
     for (size_t k = 0; k < velocity_slot_count_; ++k) {
       const size_t slot = velocity_slots_[k];
       frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);
     }
-    motor_command_buffer_.setData(frames_.command);
+    motor_command_buffer_.set_data(frames_.command);
     return rewritten;
   }
 
   // Controller-thread latency checks of read() and write().
-  void checkReadLatency(std::chrono::steady_clock::time_point start)
+  void check_read_latency(std::chrono::steady_clock::time_point start)
   {
     uint64_t duration_us = 0;
-    if (tooSlow(start, MonitorThresholds::READ_WARN_US, duration_us)) {
+    if (too_slow(start, MonitorThresholds::READ_WARN_US, duration_us)) {
       RCLCPP_WARN_THROTTLE(
         logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
         "read() took %" PRIu64 " us (threshold: %" PRIu64 " us)", duration_us,
@@ -464,10 +464,10 @@ public:
     }
   }
 
-  void checkWriteLatency(std::chrono::steady_clock::time_point start)
+  void check_write_latency(std::chrono::steady_clock::time_point start)
   {
     uint64_t duration_us = 0;
-    if (tooSlow(start, MonitorThresholds::WRITE_WARN_US, duration_us)) {
+    if (too_slow(start, MonitorThresholds::WRITE_WARN_US, duration_us)) {
       RCLCPP_WARN_THROTTLE(
         logger_, throttle_clock_, MonitorThresholds::WARN_THROTTLE_MS,
         "write() took %" PRIu64 " us (threshold: %" PRIu64 " us)", duration_us,
@@ -477,7 +477,7 @@ public:
 
 private:
   // Command limits of one SDK slot (URDF <limit>); infinite where there is none. A NaN target
-  // passes the clamp unchanged and is caught by nextCommand().
+  // passes the clamp unchanged and is caught by next_command().
   struct SlotLimits
   {
     double position_min;
@@ -487,14 +487,14 @@ private:
   };
 
   // Monitor on and the path took longer than `threshold_us` (then `duration_us` is set).
-  bool tooSlow(
+  bool too_slow(
     std::chrono::steady_clock::time_point start, uint64_t threshold_us,
     uint64_t & duration_us) const
   {
     if (!parameters_.enable_monitor) {
       return false;
     }
-    duration_us = elapsedUs(start);
+    duration_us = elapsed_us(start);
     return duration_us > threshold_us;
   }
 
@@ -506,14 +506,14 @@ private:
 
   // "<joint>/<interface>": the claim bit it sets or clears (joint names may contain '/').
   template<typename Name>
-  void updateClaim(Claims & claims, const Name & full_name, bool claimed) const
+  void update_claim(Claims & claims, const Name & full_name, bool claimed) const
   {
     const std::string name(full_name);
     const auto separator = name.rfind('/');
     if (separator == std::string::npos) {
       return;
     }
-    const int slot = slotOf(name.substr(0, separator));
+    const int slot = slot_of(name.substr(0, separator));
     if (slot < 0) {
       return;  // another component's interface
     }
@@ -528,9 +528,9 @@ private:
   // Controller thread: take over claims a mode switch committed. A joint whose claims changed
   // starts from a command that cannot jump or carry another controller's gains: target = measured
   // position, no velocity or effort, the default gains. Returns true when the storage changed.
-  bool applyClaimChanges()
+  bool apply_claim_changes()
   {
-    const Claims * next = claim_buffer_.getData();
+    const Claims * next = claim_buffer_.get_data();
     if (next == nullptr || next->generation == applied_generation_) {
       return false;
     }
@@ -549,7 +549,7 @@ private:
       changed = true;
     }
     if (changed) {
-      updateCommandBounds();
+      update_command_bounds();
     }
     return changed;
   }
@@ -561,11 +561,11 @@ private:
   }
 
   // The bounds write() applies per slot, from the claims. A claimed interface is bounded by the
-  // URDF limits (a claimed gain is not bounded: nextCommand() rejects a negative one). An
+  // URDF limits (a claimed gain is not bounded: next_command() rejects a negative one). An
   // unclaimed one is pinned: to the joint's default gain while its position (stiffness) or its
   // position or velocity (damping) is claimed, to zero otherwise. Velocity-commanded joints get
-  // kp = 0 and their measured position (writeCommand()).
-  void updateCommandBounds()
+  // kp = 0 and their measured position (write_command()).
+  void update_command_bounds()
   {
     constexpr T kUnbounded = std::numeric_limits<T>::infinity();
     for (size_t i = 0; i < N; ++i) {
@@ -602,9 +602,9 @@ private:
     }
   }
 
-  bool stateIsStale() const
+  bool state_is_stale() const
   {
-    const int64_t age_ns = steadyNowNs() - last_state_time_ns_.load(std::memory_order_acquire);
+    const int64_t age_ns = steady_now_ns() - last_state_time_ns_.load(std::memory_order_acquire);
     return age_ns > static_cast<int64_t>(parameters_.state_timeout_ms) * 1000000;
   }
 
@@ -625,13 +625,13 @@ private:
   Claims prepared_{};
   Claims committed_{};
   std::atomic<bool> claims_prepared_{false};
-  DataBuffer<Claims> claim_buffer_;   // commitClaims() -> write()
+  DataBuffer<Claims> claim_buffer_;   // commit_claims() -> write()
   std::array<uint8_t, N> claims_{};   // controller thread: the claims write() applies
   uint64_t applied_generation_{0};    // controller thread
 
   // Thread-safe state/command exchange (producer -> one consumer each)
-  // The state and IMU callbacks never overlap (they share the parsing buffers stateFrame() and
-  // imuFrame()), so their buffers need no producer mutex; commands come from two threads.
+  // The state and IMU callbacks never overlap (they share the parsing buffers state_frame() and
+  // imu_frame()), so their buffers need no producer mutex; commands come from two threads.
   DataBuffer<State, Producers::kOne> motor_state_buffer_;  // state thread -> read()
   DataBuffer<Command> motor_command_buffer_;  // write() / layer 2 -> command writer
   DataBuffer<Imu, Producers::kOne> imu_state_buffer_;      // IMU callback -> read()

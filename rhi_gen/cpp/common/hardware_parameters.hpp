@@ -50,7 +50,7 @@ inline std::string_view trimmed(std::string_view text)
   return text.substr(first, last - first + 1);
 }
 
-inline bool parseUnsigned(std::string_view text, uint64_t & value)
+inline bool parse_unsigned(std::string_view text, uint64_t & value)
 {
   text = trimmed(text);
   if (text.empty() || text.size() > 18) {  // 18 digits always fit in uint64_t
@@ -67,7 +67,7 @@ inline bool parseUnsigned(std::string_view text, uint64_t & value)
   return true;
 }
 
-inline bool parseBool(std::string_view text, bool & value)
+inline bool parse_bool(std::string_view text, bool & value)
 {
   text = trimmed(text);
   // xacro renders Python booleans as True/False.
@@ -84,7 +84,7 @@ inline bool parseBool(std::string_view text, bool & value)
 
 // Reads an optional unsigned parameter in [min, max]; a missing one keeps `value` (the default).
 template<typename Parameters>
-bool readUnsignedParameter(
+bool read_unsigned_parameter(
   const rclcpp::Logger & logger, const Parameters & parameters, const char * name,
   uint64_t min, uint64_t max, uint64_t & value)
 {
@@ -93,7 +93,7 @@ bool readUnsignedParameter(
     return true;
   }
   uint64_t parsed = 0;
-  if (!parseUnsigned(it->second, parsed) || parsed < min || parsed > max) {
+  if (!parse_unsigned(it->second, parsed) || parsed < min || parsed > max) {
     RCLCPP_ERROR(
       logger, "hardware parameter '%s' is '%s': expected an integer from %" PRIu64 " to %" PRIu64,
       name, it->second.c_str(), min, max);
@@ -104,14 +104,14 @@ bool readUnsignedParameter(
 }
 
 template<typename Parameters>
-bool readBoolParameter(
+bool read_bool_parameter(
   const rclcpp::Logger & logger, const Parameters & parameters, const char * name, bool & value)
 {
   const auto it = parameters.find(name);
   if (it == parameters.end()) {
     return true;
   }
-  if (!parseBool(it->second, value)) {
+  if (!parse_bool(it->second, value)) {
     RCLCPP_ERROR(
       logger, "hardware parameter '%s' is '%s': expected true or false", name,
       it->second.c_str());
@@ -123,16 +123,16 @@ bool readBoolParameter(
 // Every <hardware> parameter of the driver, over the defaults in `out`, in the ranges rhi-gen
 // accepts in the vendor YAML. false (with an error line naming the parameter) on a bad value.
 template<typename Parameters>
-bool readDriverParameters(
+bool read_driver_parameters(
   const rclcpp::Logger & logger, const Parameters & parameters, DriverParameters & out)
 {
   uint64_t decimation = out.state_decimation;
-  if (!readBoolParameter(logger, parameters, "enable_monitor", out.enable_monitor) ||
-    !readUnsignedParameter(
+  if (!read_bool_parameter(logger, parameters, "enable_monitor", out.enable_monitor) ||
+    !read_unsigned_parameter(
       logger, parameters, "command_writer_period_us", 100, 10000000,
       out.command_writer_period_us) ||
-    !readUnsignedParameter(logger, parameters, "state_decimation", 1, 10000, decimation) ||
-    !readUnsignedParameter(
+    !read_unsigned_parameter(logger, parameters, "state_decimation", 1, 10000, decimation) ||
+    !read_unsigned_parameter(
       logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms))
   {
     return false;

@@ -66,7 +66,7 @@ struct RobotSpec
 
 // True when every joint has its own slot below `motor_count`: robot sources static_assert it.
 template<size_t M>
-constexpr bool slotsAreValid(const std::array<JointSpec, M> & joints, size_t motor_count)
+constexpr bool slots_are_valid(const std::array<JointSpec, M> & joints, size_t motor_count)
 {
   for (size_t i = 0; i < M; ++i) {
     if (joints[i].slot >= motor_count) {
@@ -81,9 +81,9 @@ constexpr bool slotsAreValid(const std::array<JointSpec, M> & joints, size_t mot
   return true;
 }
 
-// The spec's jointIndexMap (URDF joint name -> SDK motor slot), built from a joint table.
+// The spec's joint_index_map (URDF joint name -> SDK motor slot), built from a joint table.
 template<size_t M>
-std::map<std::string, size_t> makeJointIndexMap(const std::array<JointSpec, M> & joints)
+std::map<std::string, size_t> make_joint_index_map(const std::array<JointSpec, M> & joints)
 {
   std::map<std::string, size_t> map;
   for (const JointSpec & joint : joints) {

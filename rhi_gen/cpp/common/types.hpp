@@ -38,9 +38,9 @@ struct JointStorage
 // ros2_control storage of the IMU, in the order of the exported interfaces.
 struct ImuData
 {
-  double ori_[4]{0.0, 0.0, 0.0, 0.0};    // orientation x, y, z, w (all zero until the first sample)
-  double angularVel_[3]{0.0, 0.0, 0.0};  // [rad/s]
-  double linearAcc_[3]{0.0, 0.0, 0.0};   // [m/s^2]
+  double orientation[4]{0.0, 0.0, 0.0, 0.0};  // x, y, z, w (all zero until the first sample)
+  double angular_velocity[3]{0.0, 0.0, 0.0};     // [rad/s]
+  double linear_acceleration[3]{0.0, 0.0, 0.0};  // [m/s^2]
 };
 
 // IMU sample as handed from a transport callback to read(). Quaternion order is w, x, y, z

@@ -56,7 +56,7 @@ struct RobotUnderTest
   size_t command_interface_count;
 };
 
-inline const std::vector<std::string> & imuStateInterfaces()
+inline const std::vector<std::string> & imu_state_interfaces()
 {
   static const std::vector<std::string> interfaces = {
     "orientation.x", "orientation.y", "orientation.z", "orientation.w",
@@ -65,7 +65,7 @@ inline const std::vector<std::string> & imuStateInterfaces()
   return interfaces;
 }
 
-inline std::string ros2ControlXml(const RobotUnderTest & robot)
+inline std::string ros2_control_xml(const RobotUnderTest & robot)
 {
   std::string xml = "  <ros2_control name=\"" + robot.hardware_name + "\" type=\"system\">\n";
   xml += "    <hardware>\n";
@@ -89,7 +89,7 @@ inline std::string ros2ControlXml(const RobotUnderTest & robot)
   }
   if (!robot.imu_name.empty()) {
     xml += "    <sensor name=\"" + robot.imu_name_xml + "\">\n";
-    for (const std::string & interface : imuStateInterfaces()) {
+    for (const std::string & interface : imu_state_interfaces()) {
       xml += "      <state_interface name=\"" + interface + "\"/>\n";
     }
     xml += "      <param name=\"frame_id\">" + robot.imu_frame_xml + "</param>\n";
@@ -101,7 +101,7 @@ inline std::string ros2ControlXml(const RobotUnderTest & robot)
 
 // A URDF whose kinematic chain holds every driven joint (link i -> joint i -> link i+1): newer
 // ros2_control releases reject <ros2_control> joints that the URDF does not define.
-inline std::string testUrdf(const RobotUnderTest & robot)
+inline std::string test_urdf(const RobotUnderTest & robot)
 {
   std::string urdf = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<robot name=\"rhi_test\">\n";
   urdf += "  <link name=\"rhi_test_link_0\"/>\n";
@@ -118,7 +118,7 @@ inline std::string testUrdf(const RobotUnderTest & robot)
     urdf += "  </joint>\n";
     urdf += "  <link name=\"" + child + "\"/>\n";
   }
-  urdf += ros2ControlXml(robot);
+  urdf += ros2_control_xml(robot);
   urdf += ros2_control_test_assets::urdf_tail;
   return urdf;
 }
@@ -137,11 +137,11 @@ protected:
     // validated (construction throws unless the plugin exports exactly what the <ros2_control>
     // block lists); later releases create the handles from the block themselves.
     ASSERT_NO_THROW(
-      rm_ = robot_hardware_interface::makeResourceManager<hardware_interface::ResourceManager>(
-        testUrdf(robot))) << "URDF under test:\n" << testUrdf(robot);
+      rm_ = robot_hardware_interface::make_resource_manager<hardware_interface::ResourceManager>(
+        test_urdf(robot))) << "URDF under test:\n" << test_urdf(robot);
     ASSERT_NE(rm_, nullptr);
-    ASSERT_TRUE(robot_hardware_interface::componentsInitialized(*rm_))
-      << "on_init() of " << robot.plugin_name << " failed; URDF under test:\n" << testUrdf(robot);
+    ASSERT_TRUE(robot_hardware_interface::components_initialized(*rm_))
+      << "on_init() of " << robot.plugin_name << " failed; URDF under test:\n" << test_urdf(robot);
   }
 
   std::unique_ptr<hardware_interface::ResourceManager> rm_;
@@ -176,7 +176,7 @@ TEST_P(HardwareInterfaceTest, exports_every_state_interface)
     }
   }
   if (!robot.imu_name.empty()) {
-    for (const std::string & interface : imuStateInterfaces()) {
+    for (const std::string & interface : imu_state_interfaces()) {
       const std::string key = robot.imu_name + "/" + interface;
       EXPECT_TRUE(rm_->state_interface_exists(key)) << "missing IMU state interface " << key;
       expected.push_back(key);

@@ -5,7 +5,7 @@ user regions: the SDK headers go into the ``includes`` region, SDK objects into
 ``transport_members``, and the bodies of ``connect()`` (on_activate), ``disconnect()``
 (on_deactivate) and ``send(command)`` (the command writer thread, every command_writer_period_us)
 into ``transport_connect``, ``transport_disconnect`` and ``transport_send``. State reaches the driver
-through ``receiveState(fill)`` / ``receiveImu(fill)``, called from the SDK's callback. Everything else
+through ``receive_state(fill)`` / ``receive_imu(fill)``, called from the SDK's callback. Everything else
 (threads, safe start, decimation, stale-state hold, limits, monitoring) is the shared core, in
 transports/custom/custom.hpp.
 

@@ -12,8 +12,8 @@
 //   - on_activate (controller manager thread): connect(), then the command writer starts;
 //   - command writer (an executor thread spinning the driver's node, a wall timer at
 //     command_writer_period_us): send(command), never before the first valid state;
-//   - the SDK's own thread(s): receiveState() / receiveImu() from its callbacks, never two
-//     receiveState() (or two receiveImu()) calls at once;
+//   - the SDK's own thread(s): receive_state() / receive_imu() from its callbacks, never two
+//     receive_state() (or two receive_imu()) calls at once;
 //   - on_deactivate and destruction: the writer stops and is joined, then disconnect().
 
 #include <array>
@@ -86,10 +86,10 @@ public:
       return false;
     }
     connected_ = true;
-    activated_ns_ = steadyNowNs();
+    activated_ns_ = steady_now_ns();
     no_state_warned_ = false;
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
     return true;
   }
 
@@ -117,7 +117,7 @@ protected:
   // May block and allocate. Return false (after logging why) to refuse the activation.
   virtual bool connect() = 0;
   // on_deactivate and destruction, after the writer thread has stopped (also after a failed
-  // connect()): no SDK callback may call receiveState() / receiveImu() once it returns.
+  // connect()): no SDK callback may call receive_state() / receive_imu() once it returns.
   virtual void disconnect() = 0;
   // Command writer thread, every command_writer_period_us once a valid state has arrived: send
   // `command` (slots 0..N-1: q_target, dq_target, kp, kd, tau_ff; already safe: limits clamped,
@@ -130,87 +130,87 @@ protected:
   // with a non-finite value in a driven slot are dropped too. Decimation (state_decimation), the
   // first-state safe start and the stale-state clock are handled here. Allocates nothing itself.
   template<typename Fill>
-  void receiveState(Fill && fill)
+  void receive_state(Fill && fill)
   {
     const auto start = std::chrono::steady_clock::now();
-    if (core_ == nullptr || !core_->startStateFrame()) {
+    if (core_ == nullptr || !core_->start_state_frame()) {
       return;  // not configured, or decimated
     }
     if (!fill(state_scratch_)) {
-      rejectState("the state callback dropped it");
+      reject_state("the state callback dropped it");
       return;
     }
-    for (const size_t slot : core_->mappedSlots()) {
-      if (!allFinite(state_scratch_.q[slot], state_scratch_.dq[slot], state_scratch_.tau[slot])) {
-        rejectState("non-finite value for a driven joint");
+    for (const size_t slot : core_->mapped_slots()) {
+      if (!all_finite(state_scratch_.q[slot], state_scratch_.dq[slot], state_scratch_.tau[slot])) {
+        reject_state("non-finite value for a driven joint");
         return;
       }
     }
-    core_->stateFrame() = state_scratch_;
-    core_->publishState(steadyNs(start));
-    core_->checkStateLatency(start);
+    core_->state_frame() = state_scratch_;
+    core_->publish_state(steady_ns(start));
+    core_->check_state_latency(start);
   }
 
   // From the SDK's IMU callback: `fill(Imu & imu)` writes quat (w, x, y, z), omega and acc and
   // returns true, or false to drop the sample; non-finite samples are dropped.
   template<typename Fill>
-  void receiveImu(Fill && fill)
+  void receive_imu(Fill && fill)
   {
-    if (core_ == nullptr || !core_->hasImu()) {
+    if (core_ == nullptr || !core_->has_imu()) {
       return;
     }
     if (!fill(imu_scratch_) ||
-      !allFinite(imu_scratch_.quat[0], imu_scratch_.quat[1], imu_scratch_.quat[2],
+      !all_finite(imu_scratch_.quat[0], imu_scratch_.quat[1], imu_scratch_.quat[2],
         imu_scratch_.quat[3]) ||
-      !allFinite(imu_scratch_.omega[0], imu_scratch_.omega[1], imu_scratch_.omega[2]) ||
-      !allFinite(imu_scratch_.acc[0], imu_scratch_.acc[1], imu_scratch_.acc[2]))
+      !all_finite(imu_scratch_.omega[0], imu_scratch_.omega[1], imu_scratch_.omega[2]) ||
+      !all_finite(imu_scratch_.acc[0], imu_scratch_.acc[1], imu_scratch_.acc[2]))
     {
-      const uint64_t dropped = core_->rejectImu();
+      const uint64_t dropped = core_->reject_imu();
       RCLCPP_WARN_THROTTLE(
-        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "custom transport: dropped IMU sample (%" PRIu64 " dropped so far)", dropped);
       return;
     }
-    core_->imuFrame() = imu_scratch_;
-    core_->publishImu();
+    core_->imu_frame() = imu_scratch_;
+    core_->publish_imu();
   }
 
   // The <hardware> parameter network_interface, the driver's logger and node, and the joints:
   // for connect().
-  const std::string & networkInterface() const {return core_->parameters().network_interface;}
+  const std::string & network_interface() const {return core_->parameters().network_interface;}
   const rclcpp::Logger & logger() const {return core_->logger();}
   const rclcpp::Node::SharedPtr & node() const {return node_;}
   // Slots that drive a URDF joint (ascending) and the joint name of every slot ("" for none).
-  const std::vector<size_t> & mappedSlots() const {return core_->mappedSlots();}
-  const std::array<const char *, N> & slotJointNames() const {return core_->slotJointNames();}
+  const std::vector<size_t> & mapped_slots() const {return core_->mapped_slots();}
+  const std::array<const char *, N> & slot_joint_names() const {return core_->slot_joint_names();}
 
 private:
-  void rejectState(const char * reason)
+  void reject_state(const char * reason)
   {
-    const uint64_t dropped = core_->rejectState();
+    const uint64_t dropped = core_->reject_state();
     RCLCPP_WARN_THROTTLE(
-      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
       "custom transport: dropped state frame: %s (%" PRIu64 " dropped so far)", reason, dropped);
   }
 
   // Executor thread (wall timer).
-  void writeCommand()
+  void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->checkWriterJitter();
-    const Command * cmd = core_->nextCommand();
+    core_->check_writer_jitter();
+    const Command * cmd = core_->next_command();
     if (cmd == nullptr) {
-      warnWithoutState();
+      warn_without_state();
       return;
     }
     send(*cmd);
-    core_->checkWriterLatency(start);
+    core_->check_writer_latency(start);
   }
 
   // Nothing is sent before the first valid state: say so once if none has come in time.
-  void warnWithoutState()
+  void warn_without_state()
   {
-    const int64_t waited_ns = steadyNowNs() - activated_ns_;
+    const int64_t waited_ns = steady_now_ns() - activated_ns_;
     if (no_state_warned_ ||
       waited_ns <= static_cast<int64_t>(core_->parameters().state_timeout_ms) * 1000000)
     {
@@ -219,7 +219,7 @@ private:
     no_state_warned_ = true;
     RCLCPP_WARN(
       core_->logger(), "custom transport: no valid state %" PRIu64 " ms after activation, so "
-      "nothing is sent: does the SDK callback that connect() registers call receiveState()?",
+      "nothing is sent: does the SDK callback that connect() registers call receive_state()?",
       core_->parameters().state_timeout_ms);
   }
 

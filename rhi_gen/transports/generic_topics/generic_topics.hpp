@@ -57,7 +57,7 @@ public:
 
   const char * name() const override {return "generic_topics";}
   // sensor_msgs/JointState has no stiffness or damping: the receiver applies its own gains.
-  bool carriesGains() const override {return false;}
+  bool carries_gains() const override {return false;}
 
   bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) override
   {
@@ -65,24 +65,24 @@ public:
     node_ = node;
     // State entries are matched by joint name: build the lookup once, so the callback only reads
     // it. Commands name every driven joint in slot order; sized once, the writer fills in numbers.
-    const auto & slots = core.mappedSlots();
+    const auto & slots = core.mapped_slots();
     slot_by_joint_name_.reserve(slots.size());
     command_msg_.name.clear();
     for (const size_t slot : slots) {
-      slot_by_joint_name_.emplace(core.slotJointNames()[slot], slot);
-      command_msg_.name.emplace_back(core.slotJointNames()[slot]);
+      slot_by_joint_name_.emplace(core.slot_joint_names()[slot], slot);
+      command_msg_.name.emplace_back(core.slot_joint_names()[slot]);
     }
     command_msg_.position.assign(slots.size(), 0.0);
     command_msg_.velocity.assign(slots.size(), 0.0);
     command_msg_.effort.assign(slots.size(), 0.0);
-    const rclcpp::QoS qos = makeQos(options_.qos);
+    const rclcpp::QoS qos = make_qos(options_.qos);
     publisher_ = node->create_publisher<JointState>(options_.command_topic, qos);
     state_subscription_ = node->create_subscription<JointState>(
-      options_.state_topic, qos, [this](const JointState & msg) {onJointState(msg);});
-    if (core.hasImu()) {
+      options_.state_topic, qos, [this](const JointState & msg) {on_joint_state(msg);});
+    if (core.has_imu()) {
       imu_subscription_ = node->create_subscription<Imu>(
         options_.imu_topic, qos, [this](const Imu & msg) {
-          publishRosImu(*core_, msg.orientation, msg.angular_velocity, msg.linear_acceleration);
+          publish_ros_imu(*core_, msg.orientation, msg.angular_velocity, msg.linear_acceleration);
         });
     }
     executor_.configure(node);
@@ -96,7 +96,7 @@ public:
     slots_reported_ = 0;
     slot_state_time_ns_.fill(0);
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
     return true;
   }
 
@@ -115,7 +115,7 @@ private:
   // Executor thread: entries matched by name. velocity and effort may be empty (sensor_msgs
   // allows it); then the previous values are kept. state_decimation counts JointState messages:
   // keep it at 1 when the joints arrive spread over several publishers.
-  void onJointState(const JointState & msg)
+  void on_joint_state(const JointState & msg)
   {
     const auto start = std::chrono::steady_clock::now();
     // Every frame: array sizes must agree with the names.
@@ -128,7 +128,7 @@ private:
       reject("name/position/velocity/effort sizes differ");
       return;
     }
-    if (!core_->startStateFrame()) {
+    if (!core_->start_state_frame()) {
       return;  // decimated
     }
     // Validate the whole frame before touching the parsing buffer: a rejected frame must leave
@@ -137,15 +137,15 @@ private:
       if (slot_by_joint_name_.find(msg.name[i]) == slot_by_joint_name_.end()) {
         continue;  // a joint this driver does not drive
       }
-      if (!allFinite(msg.position[i]) || (has_velocity && !allFinite(msg.velocity[i])) ||
-        (has_effort && !allFinite(msg.effort[i])))
+      if (!all_finite(msg.position[i]) || (has_velocity && !all_finite(msg.velocity[i])) ||
+        (has_effort && !all_finite(msg.effort[i])))
       {
         reject("non-finite value for a driven joint");
         return;
       }
     }
-    const int64_t now_ns = steadyNs(start);
-    auto & state = core_->stateFrame();
+    const int64_t now_ns = steady_ns(start);
+    auto & state = core_->state_frame();
     for (size_t i = 0; i < count; ++i) {
       const auto it = slot_by_joint_name_.find(msg.name[i]);
       if (it == slot_by_joint_name_.end()) {
@@ -167,44 +167,44 @@ private:
     }
     // First-state rule: only once every driven joint has been reported is the state complete.
     // Its age is the age of the joint reported longest ago.
-    if (slots_reported_ == core_->mappedSlots().size()) {
+    if (slots_reported_ == core_->mapped_slots().size()) {
       int64_t oldest_ns = now_ns;
-      for (const size_t slot : core_->mappedSlots()) {
+      for (const size_t slot : core_->mapped_slots()) {
         oldest_ns = std::min(oldest_ns, slot_state_time_ns_[slot]);
       }
-      core_->publishState(oldest_ns);
+      core_->publish_state(oldest_ns);
     }
-    core_->checkStateLatency(start);
+    core_->check_state_latency(start);
   }
 
   void reject(const char * reason)
   {
-    const uint64_t dropped = core_->rejectState();
+    const uint64_t dropped = core_->reject_state();
     RCLCPP_WARN_THROTTLE(
-      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
       "dropped state frame: %s (%" PRIu64 " dropped so far)", reason, dropped);
   }
 
   // Executor thread (wall timer): one JointState command every command_writer_period_us. Only
   // position, velocity and effort travel; a held joint gets its last safe position with zero
   // velocity and effort.
-  void writeCommand()
+  void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->checkWriterJitter();
-    const auto * cmd = core_->nextCommand();
+    core_->check_writer_jitter();
+    const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
     }
     command_msg_.header.stamp = node_->now();
-    const auto & slots = core_->mappedSlots();
+    const auto & slots = core_->mapped_slots();
     for (size_t i = 0; i < slots.size(); ++i) {
       command_msg_.position[i] = static_cast<double>(cmd->q_target[slots[i]]);
       command_msg_.velocity[i] = static_cast<double>(cmd->dq_target[slots[i]]);
       command_msg_.effort[i] = static_cast<double>(cmd->tau_ff[slots[i]]);
     }
     publisher_->publish(command_msg_);
-    core_->checkWriterLatency(start);
+    core_->check_writer_latency(start);
   }
 
   const GenericTopicsOptions options_;

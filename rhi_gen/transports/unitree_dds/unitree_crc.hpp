@@ -55,7 +55,7 @@ struct FieldBytes
 
 // Per CRC word, the bits of declared fields (host order: byte k of a word is bits 8k..8k+7).
 template<size_t Words, size_t Fields>
-constexpr std::array<uint32_t, Words> wordMasks(const std::array<FieldBytes, Fields> & fields)
+constexpr std::array<uint32_t, Words> word_masks(const std::array<FieldBytes, Fields> & fields)
 {
   std::array<uint32_t, Words> masks{};
   for (const FieldBytes & field : fields) {
@@ -73,7 +73,7 @@ constexpr std::array<uint32_t, Words> wordMasks(const std::array<FieldBytes, Fie
 
 // Slicing-by-8 tables (MSB-first): kTables[k][b] is byte b carried over k + 1 bytes. Four tables
 // advance the CRC by one 32-bit word, all eight by two.
-constexpr std::array<std::array<uint32_t, 256>, 8> makeTables()
+constexpr std::array<std::array<uint32_t, 256>, 8> make_tables()
 {
   std::array<std::array<uint32_t, 256>, 8> tables{};
   for (uint32_t byte = 0; byte < 256U; ++byte) {
@@ -92,9 +92,9 @@ constexpr std::array<std::array<uint32_t, 256>, 8> makeTables()
   return tables;
 }
 
-inline constexpr std::array<std::array<uint32_t, 256>, 8> kTables = makeTables();
+inline constexpr std::array<std::array<uint32_t, 256>, 8> kTables = make_tables();
 
-inline uint32_t loadWord(const unsigned char * bytes)
+inline uint32_t load_word(const unsigned char * bytes)
 {
   uint32_t word = 0;
   std::memcpy(&word, bytes, sizeof(word));
@@ -104,20 +104,20 @@ inline uint32_t loadWord(const unsigned char * bytes)
 // The CRC continued from `crc` (the value after words [0, first)) over words [first, Words) of
 // `bytes`, each ANDed with its mask: the portable slicing-by-8 implementation.
 template<size_t Words>
-uint32_t maskedCrcPortable(
+uint32_t masked_crc_portable(
   uint32_t crc, const unsigned char * bytes, const std::array<uint32_t, Words> & masks,
   size_t first)
 {
   const auto & t = kTables;
   size_t i = first;
   for (; i + 1 < Words; i += 2) {
-    const uint32_t x = crc ^ (loadWord(bytes + 4 * i) & masks[i]);
-    const uint32_t y = loadWord(bytes + 4 * i + 4) & masks[i + 1];
+    const uint32_t x = crc ^ (load_word(bytes + 4 * i) & masks[i]);
+    const uint32_t y = load_word(bytes + 4 * i + 4) & masks[i + 1];
     crc = t[7][x >> 24] ^ t[6][(x >> 16) & 0xFFU] ^ t[5][(x >> 8) & 0xFFU] ^ t[4][x & 0xFFU] ^
       t[3][y >> 24] ^ t[2][(y >> 16) & 0xFFU] ^ t[1][(y >> 8) & 0xFFU] ^ t[0][y & 0xFFU];
   }
   if (i < Words) {
-    const uint32_t x = crc ^ (loadWord(bytes + 4 * i) & masks[i]);
+    const uint32_t x = crc ^ (load_word(bytes + 4 * i) & masks[i]);
     crc = t[3][x >> 24] ^ t[2][(x >> 16) & 0xFFU] ^ t[1][(x >> 8) & 0xFFU] ^ t[0][x & 0xFFU];
   }
   return crc;
@@ -125,7 +125,7 @@ uint32_t maskedCrcPortable(
 
 #if defined(ROBOT_HARDWARE_INTERFACE_UNITREE_CRC_CLMUL)
 // x^n mod the polynomial (32-bit remainder, MSB-first like the tables).
-constexpr uint32_t powerOfXMod(size_t n)
+constexpr uint32_t power_of_x_mod(size_t n)
 {
   uint32_t r = 1U;
   for (size_t k = 0; k < n; ++k) {
@@ -137,7 +137,7 @@ constexpr uint32_t powerOfXMod(size_t n)
 inline constexpr std::array<uint32_t, 4> kAllBits{0xFFFFFFFFU, 0xFFFFFFFFU, 0xFFFFFFFFU,
   0xFFFFFFFFU};
 
-inline bool cpuHasClmul()
+inline bool cpu_has_clmul()
 {
   static const bool has = (__builtin_cpu_init(), __builtin_cpu_supports("pclmul") != 0);
   return has;
@@ -151,11 +151,12 @@ inline bool cpuHasClmul()
 // words through the tables from 0, and the words after the last block continue from there.
 template<size_t Words>
 __attribute__((target("pclmul,sse2")))
-uint32_t maskedCrcClmul(const unsigned char * bytes, const std::array<uint32_t, Words> & masks)
+uint32_t masked_crc_clmul(const unsigned char * bytes, const std::array<uint32_t, Words> & masks)
 {
   constexpr size_t kBlocks = Words / 4;
   const __m128i fold = _mm_set_epi64x(
-    static_cast<long long>(powerOfXMod(128)), static_cast<long long>(powerOfXMod(192)));  // NOLINT
+    static_cast<long long>(power_of_x_mod(128)),  // NOLINT(runtime/int): the intrinsic's type
+    static_cast<long long>(power_of_x_mod(192)));  // NOLINT(runtime/int)
   const auto * data = reinterpret_cast<const __m128i *>(bytes);
   const auto * mask = reinterpret_cast<const __m128i *>(masks.data());
   // Lanes 0..3 hold words 0..3; 0x1B reverses them so that word 0 is the top 32 bits.
@@ -172,32 +173,32 @@ uint32_t maskedCrcClmul(const unsigned char * bytes, const std::array<uint32_t, 
   std::array<uint32_t, 4> lanes{};
   _mm_storeu_si128(reinterpret_cast<__m128i *>(lanes.data()), acc);
   const std::array<uint32_t, 4> top_first{lanes[3], lanes[2], lanes[1], lanes[0]};
-  const uint32_t crc = maskedCrcPortable<4>(
+  const uint32_t crc = masked_crc_portable<4>(
     0U, reinterpret_cast<const unsigned char *>(top_first.data()), kAllBits, 0);
-  return maskedCrcPortable<Words>(crc, bytes, masks, 4 * kBlocks);
+  return masked_crc_portable<Words>(crc, bytes, masks, 4 * kBlocks);
 }
 #endif
 
 // CRC over the first Words 32-bit words of `bytes`, each ANDed with its mask.
 template<size_t Words>
-uint32_t maskedCrc(const unsigned char * bytes, const std::array<uint32_t, Words> & masks)
+uint32_t masked_crc(const unsigned char * bytes, const std::array<uint32_t, Words> & masks)
 {
 #if defined(ROBOT_HARDWARE_INTERFACE_UNITREE_CRC_CLMUL)
-  if (Words >= 8 && cpuHasClmul()) {
-    return maskedCrcClmul<Words>(bytes, masks);
+  if (Words >= 8 && cpu_has_clmul()) {
+    return masked_crc_clmul<Words>(bytes, masks);
   }
 #endif
-  return maskedCrcPortable<Words>(kInitialValue, bytes, masks, 0);
+  return masked_crc_portable<Words>(kInitialValue, bytes, masks, 0);
 }
 
 // The value the trailing `crc` word of `message` must hold (the crc word itself is not covered).
 template<typename Message, size_t Words>
-uint32_t messageCrc(const Message & message, const std::array<uint32_t, Words> & masks)
+uint32_t message_crc(const Message & message, const std::array<uint32_t, Words> & masks)
 {
   static_assert(std::is_trivially_copyable<Message>::value, "the CRC covers the raw message");
   static_assert(std::is_standard_layout<Message>::value, "the CRC covers the raw message");
   static_assert(sizeof(Message) == 4 * (Words + 1), "the crc is the message's last 32-bit word");
-  return maskedCrc(reinterpret_cast<const unsigned char *>(&message), masks);
+  return masked_crc(reinterpret_cast<const unsigned char *>(&message), masks);
 }
 
 }  // namespace unitree_crc

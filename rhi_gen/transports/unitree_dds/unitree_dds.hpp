@@ -72,7 +72,7 @@ public:
     // One DDS participant per process, bound to the robot's network interface.
     ::unitree::robot::ChannelFactory::Instance()->Init(options_.domain_id, network_interface);
     // The command message is reused for every send: fill the constant parts once.
-    Family::initCommand(low_cmd_, core.mappedSlots(), options_.mode_pr, options_.motor_modes);
+    Family::init_command(low_cmd_, core.mapped_slots(), options_.mode_pr, options_.motor_modes);
     publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowCmd>>(
       options_.lowcmd_topic);
     publisher_->InitChannel();
@@ -80,7 +80,7 @@ public:
     subscriber_ = std::make_shared<::unitree::robot::ChannelSubscriber<LowState>>(
       options_.lowstate_topic);
     subscriber_->InitChannel(
-      [this](const void * message) {onLowState(*static_cast<const LowState *>(message));},
+      [this](const void * message) {on_low_state(*static_cast<const LowState *>(message));},
       kStateQueueLength);
     RCLCPP_INFO(
       core.logger(), "unitree_sdk2 DDS (%s messages) on '%s', domain %d: publishing %s, "
@@ -91,12 +91,12 @@ public:
 
   bool start() override
   {
-    if (options_.release_motion_control && !releaseMotionControl()) {
+    if (options_.release_motion_control && !release_motion_control()) {
       return false;
     }
     writer_thread_ = ::unitree::common::CreateRecurrentThreadEx(
       "command_writer", UT_CPU_ID_NONE, core_->parameters().command_writer_period_us,
-      &UnitreeDdsTransport::writeCommand, this);
+      &UnitreeDdsTransport::write_command, this);
     return true;
   }
 
@@ -107,7 +107,7 @@ public:
     }
     // The SDK creates its threads detached and does not join them on destruction: Wait()
     // (RecurrentThread's override sets the loop's quit flag, then waits for the loop to end) is
-    // what guarantees writeCommand() has returned for good.
+    // what guarantees write_command() has returned for good.
     writer_thread_->Wait();
     writer_thread_.reset();
   }
@@ -129,31 +129,31 @@ public:
 
 private:
   // DDS listener thread: every LowState_ frame (500 Hz - 1 kHz).
-  void onLowState(const LowState & low_state)
+  void on_low_state(const LowState & low_state)
   {
     const auto start = std::chrono::steady_clock::now();
     // Every frame: integrity and the safety-critical fields (lightweight).
-    if (options_.verify_state_crc && low_state.crc() != Family::stateCrc(low_state)) {
+    if (options_.verify_state_crc && low_state.crc() != Family::state_crc(low_state)) {
       ++crc_error_count_;
       RCLCPP_WARN_THROTTLE(
-        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "dropped LowState_ with a bad CRC (%" PRIu64 " so far; if every frame is dropped, the "
         "publisher does not fill LowState_.crc: set transport_options.verify_state_crc to false)",
         crc_error_count_);
       return;
     }
-    state_tag_.store(Family::stateTag(low_state), std::memory_order_relaxed);
-    if (!core_->startStateFrame()) {
+    state_tag_.store(Family::state_tag(low_state), std::memory_order_relaxed);
+    if (!core_->start_state_frame()) {
       return;  // decimated
     }
-    auto & state = core_->stateFrame();
+    auto & state = core_->state_frame();
     const auto & motors = low_state.motor_state();
-    for (const size_t slot : core_->mappedSlots()) {
+    for (const size_t slot : core_->mapped_slots()) {
       const auto & motor = motors[slot];
-      if (!allFinite(motor.q(), motor.dq(), motor.tau_est())) {
-        const uint64_t dropped = core_->rejectState();
+      if (!all_finite(motor.q(), motor.dq(), motor.tau_est())) {
+        const uint64_t dropped = core_->reject_state();
         RCLCPP_WARN_THROTTLE(
-          core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+          core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
           "dropped state frame: non-finite value in motor slot %zu (%" PRIu64
           " dropped so far)", slot, dropped);
         return;
@@ -162,29 +162,29 @@ private:
       state.dq[slot] = static_cast<T>(motor.dq());
       state.tau[slot] = static_cast<T>(motor.tau_est());
     }
-    if (core_->hasImu()) {
-      publishImu(low_state.imu_state());
+    if (core_->has_imu()) {
+      publish_imu(low_state.imu_state());
     }
-    core_->publishState(steadyNs(start));
-    core_->checkStateLatency(start);
+    core_->publish_state(steady_ns(start));
+    core_->check_state_latency(start);
   }
 
   template<typename ImuState>
-  void publishImu(const ImuState & imu_state)
+  void publish_imu(const ImuState & imu_state)
   {
     const auto & quat = imu_state.quaternion();  // w, x, y, z
     const auto & gyro = imu_state.gyroscope();
     const auto & acc = imu_state.accelerometer();
-    if (!allFinite(quat[0], quat[1], quat[2], quat[3]) || !allFinite(gyro[0], gyro[1], gyro[2]) ||
-      !allFinite(acc[0], acc[1], acc[2]))
+    if (!all_finite(quat[0], quat[1], quat[2], quat[3]) || !all_finite(gyro[0], gyro[1], gyro[2]) ||
+      !all_finite(acc[0], acc[1], acc[2]))
     {
-      const uint64_t dropped = core_->rejectImu();
+      const uint64_t dropped = core_->reject_imu();
       RCLCPP_WARN_THROTTLE(
-        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "dropped IMU sample with non-finite values (%" PRIu64 " dropped so far)", dropped);
       return;
     }
-    auto & imu = core_->imuFrame();
+    auto & imu = core_->imu_frame();
     for (size_t i = 0; i < 4; ++i) {
       imu.quat[i] = static_cast<T>(quat[i]);
     }
@@ -192,20 +192,20 @@ private:
       imu.omega[i] = static_cast<T>(gyro[i]);
       imu.acc[i] = static_cast<T>(acc[i]);
     }
-    core_->publishImu();
+    core_->publish_imu();
   }
 
   // SDK recurrent thread: one LowCmd_ every command_writer_period_us.
-  void writeCommand()
+  void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->checkWriterJitter();
-    const auto * cmd = core_->nextCommand();
+    core_->check_writer_jitter();
+    const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
     }
-    Family::applyStateTag(low_cmd_, state_tag_.load(std::memory_order_relaxed));
-    for (const size_t slot : core_->mappedSlots()) {
+    Family::apply_state_tag(low_cmd_, state_tag_.load(std::memory_order_relaxed));
+    for (const size_t slot : core_->mapped_slots()) {
       auto & motor = low_cmd_.motor_cmd()[slot];
       motor.q() = static_cast<float>(cmd->q_target[slot]);
       motor.dq() = static_cast<float>(cmd->dq_target[slot]);
@@ -213,16 +213,16 @@ private:
       motor.kp() = static_cast<float>(cmd->kp[slot]);
       motor.kd() = static_cast<float>(cmd->kd[slot]);
     }
-    low_cmd_.crc() = Family::commandCrc(low_cmd_);
+    low_cmd_.crc() = Family::command_crc(low_cmd_);
     publisher_->Write(low_cmd_);
-    core_->checkWriterLatency(start);
+    core_->check_writer_latency(start);
   }
 
   // Unitree robots boot into a built-in motion controller (sport / locomotion mode) that also
   // writes the low-level command topic. As in the SDK's low-level examples it is released before
   // low-level control, otherwise both command the motors. Once released nothing holds the robot
   // until this driver's controllers do: support it first.
-  bool releaseMotionControl()
+  bool release_motion_control()
   {
     constexpr int kMaxAttempts = 3;
     ::unitree::robot::b2::MotionSwitcherClient client;

@@ -41,7 +41,7 @@ constexpr std::array<FieldBytes, 5> kLowCmdFields = {{
   {984, 16, 1, 0},        // reserve[4]
   {1000, 0, 0, 0},        // crc (not covered)
 }};
-constexpr auto kLowCmdMasks = unitree_crc::wordMasks<kLowCmdWords>(kLowCmdFields);
+constexpr auto kLowCmdMasks = unitree_crc::word_masks<kLowCmdWords>(kLowCmdFields);
 
 // LowState_ (2092 bytes, CRC over 522 words): version u32[2] @0, mode_pr u8 @8, mode_machine u8
 // @9, tick u32 @12, imu_state @16 (quaternion, gyroscope, accelerometer, rpy f32 @0..51,
@@ -59,18 +59,18 @@ constexpr std::array<FieldBytes, 8> kLowStateFields = {{
   {2032, 56, 1, 0},       // wireless_remote[40], reserve[4]
   {2088, 0, 0, 0},        // crc (not covered)
 }};
-constexpr auto kLowStateMasks = unitree_crc::wordMasks<kLowStateWords>(kLowStateFields);
+constexpr auto kLowStateMasks = unitree_crc::word_masks<kLowStateWords>(kLowStateFields);
 
 // The value the `crc` field of `cmd` must hold.
-inline uint32_t lowCmdCrc(const LowCmd & cmd)
+inline uint32_t low_cmd_crc(const LowCmd & cmd)
 {
-  return unitree_crc::messageCrc(cmd, kLowCmdMasks);
+  return unitree_crc::message_crc(cmd, kLowCmdMasks);
 }
 
 // The value the `crc` field of `state` must hold to be valid.
-inline uint32_t lowStateCrc(const LowState & state)
+inline uint32_t low_state_crc(const LowState & state)
 {
-  return unitree_crc::messageCrc(state, kLowStateMasks);
+  return unitree_crc::message_crc(state, kLowStateMasks);
 }
 
 // What the Unitree DDS transport needs to know about the hg messages.
@@ -84,7 +84,7 @@ struct Family
   // The constant parts of every command: mode_pr, and the enable bit of each driven slot (the
   // other slots stay disabled with all-zero targets).
   template<typename Slots>
-  static void initCommand(
+  static void init_command(
     LowCmd & cmd, const Slots & driven_slots, uint8_t mode_pr, const uint8_t * /*motor_modes*/)
   {
     cmd = LowCmd{};
@@ -95,11 +95,11 @@ struct Family
   }
 
   // mode_machine of a valid LowState_, echoed in every LowCmd_ (0 until the first state).
-  static uint8_t stateTag(const LowState & state) {return state.mode_machine();}
-  static void applyStateTag(LowCmd & cmd, uint8_t tag) {cmd.mode_machine() = tag;}
+  static uint8_t state_tag(const LowState & state) {return state.mode_machine();}
+  static void apply_state_tag(LowCmd & cmd, uint8_t tag) {cmd.mode_machine() = tag;}
 
-  static uint32_t commandCrc(const LowCmd & cmd) {return lowCmdCrc(cmd);}
-  static uint32_t stateCrc(const LowState & state) {return lowStateCrc(state);}
+  static uint32_t command_crc(const LowCmd & cmd) {return low_cmd_crc(cmd);}
+  static uint32_t state_crc(const LowState & state) {return low_state_crc(state);}
 };
 
 }  // namespace unitree_hg

@@ -16,11 +16,11 @@ uint32_t rhi_probe_low_cmd_crc(const ::RHI_PROBE_NS::msg::dds_::LowCmd_& msg);
 uint32_t rhi_probe_low_state_crc(const ::RHI_PROBE_NS::msg::dds_::LowState_& msg);
 
 uint32_t rhi_probe_low_cmd_crc(const ::RHI_PROBE_NS::msg::dds_::LowCmd_& msg) {
-  return robot_hardware_interface::RHI_PROBE_NS::lowCmdCrc(msg);
+  return robot_hardware_interface::RHI_PROBE_NS::low_cmd_crc(msg);
 }
 
 uint32_t rhi_probe_low_state_crc(const ::RHI_PROBE_NS::msg::dds_::LowState_& msg) {
-  return robot_hardware_interface::RHI_PROBE_NS::lowStateCrc(msg);
+  return robot_hardware_interface::RHI_PROBE_NS::low_state_crc(msg);
 }
 
 // The portable slicing-by-8 implementation alone (what CPUs without carry-less multiplication
@@ -30,12 +30,12 @@ uint32_t rhi_probe_low_state_crc_portable(const ::RHI_PROBE_NS::msg::dds_::LowSt
 
 uint32_t rhi_probe_low_cmd_crc_portable(const ::RHI_PROBE_NS::msg::dds_::LowCmd_& msg) {
   namespace crc = robot_hardware_interface::unitree_crc;
-  return crc::maskedCrcPortable(crc::kInitialValue, reinterpret_cast<const unsigned char*>(&msg),
+  return crc::masked_crc_portable(crc::kInitialValue, reinterpret_cast<const unsigned char*>(&msg),
                                 robot_hardware_interface::RHI_PROBE_NS::kLowCmdMasks, 0);
 }
 
 uint32_t rhi_probe_low_state_crc_portable(const ::RHI_PROBE_NS::msg::dds_::LowState_& msg) {
   namespace crc = robot_hardware_interface::unitree_crc;
-  return crc::maskedCrcPortable(crc::kInitialValue, reinterpret_cast<const unsigned char*>(&msg),
+  return crc::masked_crc_portable(crc::kInitialValue, reinterpret_cast<const unsigned char*>(&msg),
                                 robot_hardware_interface::RHI_PROBE_NS::kLowStateMasks, 0);
 }

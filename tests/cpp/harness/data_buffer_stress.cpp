@@ -1,7 +1,7 @@
 // The generated DataBuffer<T> (common/data_buffer.hpp), on its own:
-//   - contract: nullptr before the first setData(); the newest frame afterwards; the frame a
-//     consumer holds is never written by a producer until that consumer calls getData() again;
-//     no heap allocation in setData()/getData(); not copyable;
+//   - contract: nullptr before the first set_data(); the newest frame afterwards; the frame a
+//     consumer holds is never written by a producer until that consumer calls get_data() again;
+//     no heap allocation in set_data()/get_data(); not copyable;
 //   - stress: producers hand over RHI_STRESS_FRAMES frames (default 10^6) whose last field is a
 //     checksum of the rest while one consumer takes them; the consumer re-verifies each frame
 //     after holding it for a while. Torn frames (bad checksum), frames changed while held and
@@ -82,42 +82,42 @@ void test_contract() {
   static_assert(!std::is_copy_constructible<DataBuffer<Frame, Producers::kOne>>::value,
                 "a single-producer DataBuffer must not be copyable either");
   auto buffer = std::make_unique<DataBuffer<Frame>>();
-  CHECK(buffer->getData() == nullptr, "getData() before any setData() is nullptr");
-  CHECK(buffer->getData() == nullptr, "still nullptr on the second call");
+  CHECK(buffer->get_data() == nullptr, "get_data() before any set_data() is nullptr");
+  CHECK(buffer->get_data() == nullptr, "still nullptr on the second call");
 
   Frame a, b, c, d;
   fill(a, 1, 1);
   fill(b, 1, 2);
   fill(c, 1, 3);
   fill(d, 1, 4);
-  buffer->setData(a);
-  const Frame* p = buffer->getData();
-  CHECK(p != nullptr && p->seq == 1, "getData() returns the frame written");
-  const Frame* again = buffer->getData();
-  CHECK(again != nullptr && again->seq == 1 && intact(*again), "without new data getData() keeps returning it");
+  buffer->set_data(a);
+  const Frame* p = buffer->get_data();
+  CHECK(p != nullptr && p->seq == 1, "get_data() returns the frame written");
+  const Frame* again = buffer->get_data();
+  CHECK(again != nullptr && again->seq == 1 && intact(*again), "without new data get_data() keeps returning it");
 
   // The frame a consumer holds is not touched by any number of writes.
-  const Frame* held = buffer->getData();
+  const Frame* held = buffer->get_data();
   const Frame copy = *held;
-  buffer->setData(b);
-  buffer->setData(c);
-  buffer->setData(d);
-  CHECK(std::memcmp(held, &copy, sizeof(Frame)) == 0, "three setData() calls leave the held frame untouched");
-  const Frame* newest = buffer->getData();
-  CHECK(newest != nullptr && newest->seq == 4 && intact(*newest), "getData() then returns the newest frame");
+  buffer->set_data(b);
+  buffer->set_data(c);
+  buffer->set_data(d);
+  CHECK(std::memcmp(held, &copy, sizeof(Frame)) == 0, "three set_data() calls leave the held frame untouched");
+  const Frame* newest = buffer->get_data();
+  CHECK(newest != nullptr && newest->seq == 4 && intact(*newest), "get_data() then returns the newest frame");
   const Frame copy4 = *newest;
-  buffer->setData(a);
-  CHECK(std::memcmp(newest, &copy4, sizeof(Frame)) == 0, "a write after getData() leaves the new frame untouched");
-  CHECK(buffer->getData()->seq == 1, "and the next getData() sees it");
+  buffer->set_data(a);
+  CHECK(std::memcmp(newest, &copy4, sizeof(Frame)) == 0, "a write after get_data() leaves the new frame untouched");
+  CHECK(buffer->get_data()->seq == 1, "and the next get_data() sees it");
 
   // No heap allocation on either side.
   const uint64_t allocs = rhi_alloc::count_in([&] {
     for (int i = 0; i < 1000; ++i) {
-      buffer->setData((i % 2) != 0 ? b : c);
-      (void)buffer->getData();
+      buffer->set_data((i % 2) != 0 ? b : c);
+      (void)buffer->get_data();
     }
   });
-  CHECK_EQ(allocs, 0U, "heap allocations in 1000 setData()/getData()");
+  CHECK_EQ(allocs, 0U, "heap allocations in 1000 set_data()/get_data()");
 }
 
 struct StressResult {
@@ -144,7 +144,7 @@ StressResult stress(int producers, uint64_t frames) {
       Frame f;
       for (uint64_t seq = 1; seq <= per_producer; ++seq) {
         fill(f, static_cast<uint64_t>(p), seq);
-        buffer->setData(f);
+        buffer->set_data(f);
         produced.fetch_add(1, std::memory_order_relaxed);
       }
       done.fetch_add(1);
@@ -157,7 +157,7 @@ StressResult stress(int producers, uint64_t frames) {
   uint64_t spins = 0;
   while (true) {
     const bool finished = done.load() == producers;
-    const Frame* f = buffer->getData();
+    const Frame* f = buffer->get_data();
     if (f == nullptr) {
       r.null_after_data += seen_any ? 1U : 0U;
     } else {
@@ -193,9 +193,9 @@ StressResult stress(int producers, uint64_t frames) {
     t.join();
   }
   // After the producers are done the newest frame is the last one of some producer.
-  const Frame* last = buffer->getData();
+  const Frame* last = buffer->get_data();
   bool last_ok = last != nullptr && intact(*last) && last->seq == per_producer;
-  CHECK(last_ok, "after all producers finished, getData() returns a final frame");
+  CHECK(last_ok, "after all producers finished, get_data() returns a final frame");
   r.produced = produced.load();
   return r;
 }

@@ -3,7 +3,7 @@
 //
 // robot_data.hpp (written per robot by tests/support/cpp_build.py) provides namespace rhi_data: the
 // expected joint -> SDK slot table read from the vendor YAML (NOT from the generated
-// jointIndexMap), limits from the URDF, transport topics, parameter defaults and kInfoRecords,
+// joint_index_map), limits from the URDF, transport topics, parameter defaults and kInfoRecords,
 // the <ros2_control> block of the expanded xacro. Interfaces are read and written through
 // rhi_fake/hw.hpp, so the same code runs on every distro's stand-ins.
 #pragma once

@@ -187,7 +187,7 @@ private:
 };
 
 // Section crc (no driver): the reference reproduces SDK_FACTS.md's hg vectors, the generated
-// lowCmdCrc / lowStateCrc (crc_probe.cpp) agree with it on those, on every field, on frames with
+// low_cmd_crc / low_state_crc (crc_probe.cpp) agree with it on those, on every field, on frames with
 // garbage padding and on random frames.
 inline void check_crc_functions() {
   using LowCmd = Transport::LowCmd;

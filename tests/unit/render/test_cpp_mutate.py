@@ -73,7 +73,7 @@ GUARD = """\
     if (!first_state_received_.load(std::memory_order_acquire)) {
       return nullptr;
     }
-    return buffer_.getData();
+    return buffer_.get_data();
   }
 """
 GUARD_PATTERN = "if (!first_state_received_.load(std::memory_order_acquire)) { return nullptr; }"

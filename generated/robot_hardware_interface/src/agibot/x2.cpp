@@ -67,7 +67,7 @@ constexpr std::array<robot_hardware_interface::JointSpec, 31> kJoints = {{
     0.0},
   {"right_wrist_roll_joint", 28, kPosition, -0.724312, 1.50971, 15.707999999999998, 6.0, 0.0, 0.0},
 }};
-static_assert(robot_hardware_interface::slotsAreValid(kJoints, X2_NUM_MOTOR), "joint table");
+static_assert(robot_hardware_interface::slots_are_valid(kJoints, X2_NUM_MOTOR), "joint table");
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
@@ -89,8 +89,8 @@ constexpr robot_hardware_interface::AgibotTopicsOptions kTransport{
 
 }  // namespace
 
-const std::map<std::string, size_t> X2HardwareInterface::jointIndexMap =
-  robot_hardware_interface::makeJointIndexMap(kJoints);
+const std::map<std::string, size_t> X2HardwareInterface::joint_index_map =
+  robot_hardware_interface::make_joint_index_map(kJoints);
 
 X2HardwareInterface::X2HardwareInterface()
 : SystemDriver(kRobot, std::make_unique<Transport>(kTransport))

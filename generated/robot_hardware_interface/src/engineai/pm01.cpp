@@ -55,7 +55,7 @@ constexpr std::array<robot_hardware_interface::JointSpec, 24> kJoints = {{
   {"J22_ELBOW_YAW_R", 22, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
   {"J23_HEAD_YAW", 23, kPosition, -0.6109, 0.6109, 35.2, 61.0, 0.0, 0.0},
 }};
-static_assert(robot_hardware_interface::slotsAreValid(kJoints, PM01_NUM_MOTOR), "joint table");
+static_assert(robot_hardware_interface::slots_are_valid(kJoints, PM01_NUM_MOTOR), "joint table");
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
@@ -70,8 +70,8 @@ constexpr robot_hardware_interface::EngineaiTopicsOptions kTransport{
 
 }  // namespace
 
-const std::map<std::string, size_t> PM01HardwareInterface::jointIndexMap =
-  robot_hardware_interface::makeJointIndexMap(kJoints);
+const std::map<std::string, size_t> PM01HardwareInterface::joint_index_map =
+  robot_hardware_interface::make_joint_index_map(kJoints);
 
 PM01HardwareInterface::PM01HardwareInterface()
 : SystemDriver(kRobot, std::make_unique<Transport>(kTransport))

@@ -62,7 +62,7 @@ constexpr std::array<robot_hardware_interface::JointSpec, 29> kJoints = {{
   {"right_wrist_pitch_joint", 27, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0},
   {"right_wrist_yaw_joint", 28, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0},
 }};
-static_assert(robot_hardware_interface::slotsAreValid(kJoints, G1_NUM_MOTOR), "joint table");
+static_assert(robot_hardware_interface::slots_are_valid(kJoints, G1_NUM_MOTOR), "joint table");
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
@@ -78,8 +78,8 @@ constexpr robot_hardware_interface::UnitreeDdsOptions kTransport{
 
 }  // namespace
 
-const std::map<std::string, size_t> G1HardwareInterface::jointIndexMap =
-  robot_hardware_interface::makeJointIndexMap(kJoints);
+const std::map<std::string, size_t> G1HardwareInterface::joint_index_map =
+  robot_hardware_interface::make_joint_index_map(kJoints);
 
 G1HardwareInterface::G1HardwareInterface()
 : SystemDriver(kRobot, std::make_unique<Transport>(kTransport))

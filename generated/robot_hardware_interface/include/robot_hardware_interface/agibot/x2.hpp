@@ -35,7 +35,7 @@ public:
   RCLCPP_SHARED_PTR_DEFINITIONS(X2HardwareInterface)
 
   // URDF joint name -> SDK motor slot.
-  static const std::map<std::string, size_t> jointIndexMap;
+  static const std::map<std::string, size_t> joint_index_map;
 
   X2HardwareInterface();
 

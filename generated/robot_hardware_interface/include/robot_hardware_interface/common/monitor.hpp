@@ -31,20 +31,20 @@ struct MonitorThresholds
 
 // Monotonic time stamps for latency, jitter and stale-state checks (never the ROS clock, which
 // may be simulated or jump).
-inline int64_t steadyNowNs()
+inline int64_t steady_now_ns()
 {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(
     std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// The steady time of `t` in nanoseconds, on the scale of steadyNowNs(): a callback that read the
+// The steady time of `t` in nanoseconds, on the scale of steady_now_ns(): a callback that read the
 // clock when it started stamps its frame with that reading instead of reading the clock again.
-inline int64_t steadyNs(std::chrono::steady_clock::time_point t)
+inline int64_t steady_ns(std::chrono::steady_clock::time_point t)
 {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
 }
 
-inline uint64_t steadyNowUs()
+inline uint64_t steady_now_us()
 {
   return static_cast<uint64_t>(
     std::chrono::duration_cast<std::chrono::microseconds>(
@@ -52,7 +52,7 @@ inline uint64_t steadyNowUs()
 }
 
 // Microseconds elapsed since `start` (steady clock), never negative.
-inline uint64_t elapsedUs(std::chrono::steady_clock::time_point start)
+inline uint64_t elapsed_us(std::chrono::steady_clock::time_point start)
 {
   const auto elapsed = std::chrono::duration_cast<std::chrono::microseconds>(
     std::chrono::steady_clock::now() - start).count();

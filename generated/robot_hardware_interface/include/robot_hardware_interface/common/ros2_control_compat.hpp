@@ -15,9 +15,9 @@
 //     (on_export_*_interfaces()) and owns their values; the component gets its logger from it.
 //     The old on_init and the raw-pointer handles are deprecated (4.x, 5.x) or gone (6.x).
 // Drivers derive from SystemInterfaceAdapter, keep their values in plain doubles, and call
-// publishStateValues() / fetchCommandValues() / publishCommandValues() where the values change
-// hands: no-ops with raw pointers, a try-lock copy per interface with framework handles (never
-// blocking, never allocating).
+// publish_state_values() / fetch_command_values() / publish_command_values() where the values
+// change hands: no-ops with raw pointers, a try-lock copy per interface with framework handles
+// (never blocking, never allocating).
 
 #include <memory>
 #include <optional>
@@ -77,7 +77,7 @@ public:
     state_links_.clear();
     for (const auto * handles : {&joint_states_, &sensor_states_}) {
       for (const auto & handle : *handles) {
-        const double * value = stateValue(handle->get_prefix_name(), handle->get_interface_name());
+        const double * value = state_value(handle->get_prefix_name(), handle->get_interface_name());
         if (value != nullptr) {
           state_links_.push_back(StateLink{handle.get(), value});
         }
@@ -92,7 +92,7 @@ public:
     auto exported = hardware_interface::SystemInterface::on_export_command_interfaces();
     command_links_.clear();
     for (const auto & handle : joint_commands_) {
-      double * value = commandValue(handle->get_prefix_name(), handle->get_interface_name());
+      double * value = command_value(handle->get_prefix_name(), handle->get_interface_name());
       if (value != nullptr) {
         command_links_.push_back(CommandLink{handle.get(), value});
       }
@@ -114,7 +114,7 @@ public:
     for (const auto * components : {&info_.joints, &info_.sensors}) {
       for (const auto & component : *components) {
         for (const auto & interface : component.state_interfaces) {
-          double * value = stateValue(component.name, interface.name);
+          double * value = state_value(component.name, interface.name);
           if (value != nullptr) {
             exported.emplace_back(component.name, interface.name, value);
           }
@@ -129,7 +129,7 @@ public:
     std::vector<hardware_interface::CommandInterface> exported;
     for (const auto & joint : info_.joints) {
       for (const auto & interface : joint.command_interfaces) {
-        double * value = commandValue(joint.name, interface.name);
+        double * value = command_value(joint.name, interface.name);
         if (value != nullptr) {
           exported.emplace_back(joint.name, interface.name, value);
         }
@@ -150,11 +150,11 @@ protected:
   virtual CallbackReturn initialize(
     const hardware_interface::HardwareInfo & info, const rclcpp::Logger & logger) = 0;
   // The driver-owned double behind an interface, nullptr for one the driver does not provide.
-  virtual double * stateValue(const std::string & prefix, const std::string & name) = 0;
-  virtual double * commandValue(const std::string & prefix, const std::string & name) = 0;
+  virtual double * state_value(const std::string & prefix, const std::string & name) = 0;
+  virtual double * command_value(const std::string & prefix, const std::string & name) = 0;
 
   // Controller thread, end of read(): state values out to the exported interfaces.
-  void publishStateValues()
+  void publish_state_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
     for (const StateLink & link : state_links_) {
@@ -165,7 +165,7 @@ protected:
   }
 
   // Controller thread, start of write(): what the controllers commanded, into the driver's doubles.
-  void fetchCommandValues()
+  void fetch_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
     for (const CommandLink & link : command_links_) {
@@ -179,7 +179,7 @@ protected:
 
   // Controller thread: the driver rewrote its command doubles itself (safe start), so the
   // exported command interfaces must show the same values.
-  void publishCommandValues()
+  void publish_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
     for (const CommandLink & link : command_links_) {
@@ -209,7 +209,7 @@ private:
 // Tests: a ResourceManager loading `urdf` the way this release's controller manager does. A
 // template, so that drivers including this header do not pull in the ResourceManager.
 template<typename ResourceManager>
-std::unique_ptr<ResourceManager> makeResourceManager(const std::string & urdf)
+std::unique_ptr<ResourceManager> make_resource_manager(const std::string & urdf)
 {
 #if ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK
   return std::make_unique<ResourceManager>(
@@ -223,7 +223,7 @@ std::unique_ptr<ResourceManager> makeResourceManager(const std::string & urdf)
 // Tests: whether every component of `resource_manager` initialised (Humble's constructor throws
 // instead).
 template<typename ResourceManager>
-bool componentsInitialized(const ResourceManager & resource_manager)
+bool components_initialized(const ResourceManager & resource_manager)
 {
 #if ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK
   return resource_manager.are_components_initialized();

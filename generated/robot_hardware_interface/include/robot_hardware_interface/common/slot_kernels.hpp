@@ -37,7 +37,7 @@ constexpr size_t kSlotBlock = 8;
 // slot (what they write never feeds what they read), so a slot done twice gets the same value.
 // `count` is a std::integral_constant: the block size, or N for robots with fewer slots.
 template<size_t N, typename Kernel>
-void forEachSlotBlock(Kernel && kernel)
+void for_each_slot_block(Kernel && kernel)
 {
   if constexpr (N < kSlotBlock) {
     kernel(std::integral_constant<size_t, N>{}, size_t{0});
@@ -64,7 +64,7 @@ struct ControllerFrames
 // read(): `Count` slots of a state frame, from `begin`, into the exported doubles.
 template<size_t Count, size_t N, typename T>
 ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
-void copyStateBlock(
+void copy_state_block(
   const MotorState<N, T> & __restrict state, JointStorage<N> & __restrict joints, size_t begin)
 {
   for (size_t k = 0; k < Count; ++k) {
@@ -76,7 +76,7 @@ void copyStateBlock(
 }
 
 // `value` in T, within [lower, upper]. Rounding to T is monotonic, so this equals bounding in
-// double and rounding after. A NaN stays NaN, for nextCommand() to reject.
+// double and rounding after. A NaN stays NaN, for next_command() to reject.
 template<typename T>
 T bounded(double value, T lower, T upper)
 {
@@ -90,7 +90,7 @@ T bounded(double value, T lower, T upper)
 // unclaimed one).
 template<size_t Count, size_t N, typename T>
 ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
-void boundCommandBlock(ControllerFrames<N, T> & frames, size_t begin)
+void bound_command_block(ControllerFrames<N, T> & frames, size_t begin)
 {
   const JointStorage<N> & joints = frames.joints;
   const MotorCommand<N, T> & lower = frames.lower;

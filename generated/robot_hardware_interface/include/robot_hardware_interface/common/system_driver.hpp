@@ -50,7 +50,7 @@ public:
   // Destruction: stop everything that could still call into the driver. Must not throw.
   virtual void shutdown() noexcept = 0;
   // Whether stiffness and damping reach the robot (otherwise no gain interfaces are exported).
-  virtual bool carriesGains() const {return true;}
+  virtual bool carries_gains() const {return true;}
 };
 
 // The ros2_control face of every driver: SystemInterface lifecycle and read()/write() around a
@@ -71,7 +71,7 @@ public:
 
   CallbackReturn on_activate(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
-    core_.resetForActivation();
+    core_.reset_for_activation();
     const CallbackReturn user = on_activate_hook();
     if (user != CallbackReturn::SUCCESS) {
       return user;
@@ -88,7 +88,7 @@ public:
       return CallbackReturn::ERROR;
     }
     RCLCPP_INFO(core_.logger(), "activated: commands start after the first valid state");
-    const size_t limp = core_.jointsWithoutDefaultStiffness();
+    const size_t limp = core_.joints_without_default_stiffness();
     if (limp > 0) {
       RCLCPP_WARN(
         core_.logger(),
@@ -108,12 +108,12 @@ public:
   }
 
   // The controller manager switches controllers: claimed command interfaces count, unclaimed
-  // gains fall back to the joint's default (see DriverCore::writeCommand()).
+  // gains fall back to the joint's default (see DriverCore::write_command()).
   return_type prepare_command_mode_switch(
     const std::vector<std::string> & start_interfaces,
     const std::vector<std::string> & stop_interfaces) override
   {
-    core_.prepareClaims(start_interfaces, stop_interfaces);
+    core_.prepare_claims(start_interfaces, stop_interfaces);
     return return_type::OK;
   }
 
@@ -121,27 +121,27 @@ public:
     const std::vector<std::string> & /*start_interfaces*/,
     const std::vector<std::string> & /*stop_interfaces*/) override
   {
-    core_.commitClaims();
+    core_.commit_claims();
     return return_type::OK;
   }
 
   return_type read(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
   {
     const auto start = std::chrono::steady_clock::now();
-    core_.readState();
-    publishStateValues();
-    core_.checkReadLatency(start);
+    core_.read_state();
+    publish_state_values();
+    core_.check_read_latency(start);
     return return_type::OK;
   }
 
   return_type write(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
   {
     const auto start = std::chrono::steady_clock::now();
-    fetchCommandValues();
-    if (core_.writeCommand()) {
-      publishCommandValues();
+    fetch_command_values();
+    if (core_.write_command()) {
+      publish_command_values();
     }
-    core_.checkWriteLatency(start);
+    core_.check_write_latency(start);
     return return_type::OK;
   }
 
@@ -165,7 +165,7 @@ protected:
   virtual void on_deactivate_hook() {}
 
   // The SDK motor slot of a URDF joint, -1 for a joint this driver does not drive.
-  int getJointIndex(const std::string & name) const {return core_.slotOf(name);}
+  int get_joint_index(const std::string & name) const {return core_.slot_of(name);}
   DriverCore<N, T> & core() {return core_;}
   const rclcpp::Logger & logger() const {return core_.logger();}
 
@@ -176,10 +176,10 @@ private:
   CallbackReturn initialize(
     const hardware_interface::HardwareInfo & info, const rclcpp::Logger & logger) override
   {
-    core_.setLogger(logger);
+    core_.set_logger(logger);
     const rclcpp::Logger & log = core_.logger();
-    if (!readDriverParameters(log, info.hardware_parameters, core_.parameters()) ||
-      !descriptionIsDriven(info))
+    if (!read_driver_parameters(log, info.hardware_parameters, core_.parameters()) ||
+      !description_is_driven(info))
     {
       return CallbackReturn::ERROR;
     }
@@ -210,30 +210,30 @@ private:
   // Every joint, interface and sensor of the description must be one this driver drives: a typo
   // would otherwise only surface later, as an interface nobody updates. A driven joint missing
   // from the description gets no interfaces and keeps zero gains (passive).
-  bool descriptionIsDriven(const hardware_interface::HardwareInfo & info)
+  bool description_is_driven(const hardware_interface::HardwareInfo & info)
   {
     const rclcpp::Logger & log = core_.logger();
     for (const auto & joint : info.joints) {
-      if (core_.slotOf(joint.name) < 0) {
+      if (core_.slot_of(joint.name) < 0) {
         RCLCPP_ERROR(
           log, "joint '%s' of the ros2_control description is not driven by %s",
           joint.name.c_str(), core_.spec().plugin_name);
         return false;
       }
       for (const auto & interface : joint.state_interfaces) {
-        if (!supported(stateValue(joint.name, interface.name), interface, joint.name)) {
+        if (!supported(state_value(joint.name, interface.name), interface, joint.name)) {
           return false;
         }
       }
       for (const auto & interface : joint.command_interfaces) {
-        if (!supported(commandValue(joint.name, interface.name), interface, joint.name)) {
+        if (!supported(command_value(joint.name, interface.name), interface, joint.name)) {
           return false;
         }
       }
     }
     for (const auto & sensor : info.sensors) {
       for (const auto & interface : sensor.state_interfaces) {
-        if (!supported(stateValue(sensor.name, interface.name), interface, sensor.name)) {
+        if (!supported(state_value(sensor.name, interface.name), interface, sensor.name)) {
           return false;
         }
       }
@@ -279,27 +279,27 @@ private:
     return true;
   }
 
-  double * stateValue(const std::string & prefix, const std::string & name) override
+  double * state_value(const std::string & prefix, const std::string & name) override
   {
-    const int slot = core_.slotOf(prefix);
+    const int slot = core_.slot_of(prefix);
     if (slot >= 0) {
       JointStorage<N> & joints = core_.joints();
       const auto s = static_cast<size_t>(slot);
       return name == "position" ? &joints.pos[s] : name == "velocity" ? &joints.vel[s] :
              name == "effort" ? &joints.tau[s] : nullptr;
     }
-    if (!core_.hasImu() || prefix != core_.spec().imu_name) {
+    if (!core_.has_imu() || prefix != core_.spec().imu_name) {
       return nullptr;
     }
-    ImuData & imu = core_.imuData();
+    ImuData & imu = core_.imu_data();
     static constexpr const char * kImuInterfaces[] = {
       "orientation.x", "orientation.y", "orientation.z", "orientation.w",
       "angular_velocity.x", "angular_velocity.y", "angular_velocity.z",
       "linear_acceleration.x", "linear_acceleration.y", "linear_acceleration.z"};
     double * const values[] = {
-      &imu.ori_[0], &imu.ori_[1], &imu.ori_[2], &imu.ori_[3],
-      &imu.angularVel_[0], &imu.angularVel_[1], &imu.angularVel_[2],
-      &imu.linearAcc_[0], &imu.linearAcc_[1], &imu.linearAcc_[2]};
+      &imu.orientation[0], &imu.orientation[1], &imu.orientation[2], &imu.orientation[3],
+      &imu.angular_velocity[0], &imu.angular_velocity[1], &imu.angular_velocity[2],
+      &imu.linear_acceleration[0], &imu.linear_acceleration[1], &imu.linear_acceleration[2]};
     for (size_t i = 0; i < 10; ++i) {
       if (name == kImuInterfaces[i]) {
         return values[i];
@@ -308,18 +308,18 @@ private:
     return nullptr;
   }
 
-  double * commandValue(const std::string & prefix, const std::string & name) override
+  double * command_value(const std::string & prefix, const std::string & name) override
   {
-    const int slot = core_.slotOf(prefix);
+    const int slot = core_.slot_of(prefix);
     if (slot < 0) {
       return nullptr;
     }
-    if (core_.modeOf(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
+    if (core_.mode_of(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
       (name == "position" || name == "stiffness"))
     {
       return nullptr;  // a velocity-commanded joint has no position target and no stiffness
     }
-    if (!transport_->carriesGains() && (name == "stiffness" || name == "damping")) {
+    if (!transport_->carries_gains() && (name == "stiffness" || name == "damping")) {
       return nullptr;  // the robot applies its own gains
     }
     JointStorage<N> & joints = core_.joints();

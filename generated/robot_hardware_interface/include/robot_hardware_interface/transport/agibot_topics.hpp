@@ -75,9 +75,9 @@ public:
   {
     core_ = &core;
     node_ = node;
-    const rclcpp::QoS qos = makeQos(options_.qos);
+    const rclcpp::QoS qos = make_qos(options_.qos);
     for (size_t slot = 0; slot < N; ++slot) {
-      slot_names_[slot] = core.slotJointNames()[slot];
+      slot_names_[slot] = core.slot_joint_names()[slot];
       name_lengths_[slot] = std::strlen(slot_names_[slot]);
     }
     for (size_t g = 0; g < groups_.size(); ++g) {
@@ -91,18 +91,18 @@ public:
       // publisher that keeps its order (or keeps a changed one) costs one name check per entry.
       group.entry_slots.assign(spec.size, kNoSlot);
       for (size_t i = 0; i < spec.size; ++i) {
-        const char * joint = core.slotJointNames()[spec.offset + i];
+        const char * joint = core.slot_joint_names()[spec.offset + i];
         group.command.joints[i].name = joint;
         group.driven += joint[0] != '\0' ? 1U : 0U;
       }
       group.publisher = node->create_publisher<CommandArray>(spec.command_topic, qos);
       group.subscription = node->create_subscription<StateArray>(
-        spec.state_topic, qos, [this, g](const StateArray & msg) {onGroupState(g, msg);});
+        spec.state_topic, qos, [this, g](const StateArray & msg) {on_group_state(g, msg);});
     }
-    if (core.hasImu()) {
+    if (core.has_imu()) {
       imu_subscription_ = node->create_subscription<Imu>(
         options_.imu_topic, qos, [this](const Imu & msg) {
-          publishRosImu(*core_, msg.orientation, msg.angular_velocity, msg.linear_acceleration);
+          publish_ros_imu(*core_, msg.orientation, msg.angular_velocity, msg.linear_acceleration);
         });
     }
     executor_.configure(node);
@@ -120,7 +120,7 @@ public:
     }
     groups_reported_ = 0;
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
     return true;
   }
 
@@ -156,7 +156,7 @@ private:
 
   // `name` is the joint driven in `slot`: lengths first, then every byte, compared in place a
   // word at a time (first word, middle words, last word overlapping), without a library call.
-  bool sameName(const std::string & name, size_t slot) const
+  bool same_name(const std::string & name, size_t slot) const
   {
     const size_t size = name.size();
     if (size != name_lengths_[slot]) {
@@ -168,17 +168,18 @@ private:
       return std::memcmp(a, b, size) == 0;
     }
     const size_t last = size - sizeof(uint64_t);
-    uint64_t difference = (loadWord(a) ^ loadWord(b)) | (loadWord(a + last) ^ loadWord(b + last));
+    uint64_t difference =
+      (load_word(a) ^ load_word(b)) | (load_word(a + last) ^ load_word(b + last));
     if (size > 2 * sizeof(uint64_t)) {  // the second word; typical joint names end within 24 bytes
-      difference |= loadWord(a + sizeof(uint64_t)) ^ loadWord(b + sizeof(uint64_t));
+      difference |= load_word(a + sizeof(uint64_t)) ^ load_word(b + sizeof(uint64_t));
       for (size_t i = 2 * sizeof(uint64_t); i < last; i += sizeof(uint64_t)) {
-        difference |= loadWord(a + i) ^ loadWord(b + i);
+        difference |= load_word(a + i) ^ load_word(b + i);
       }
     }
     return difference == 0U;
   }
 
-  static uint64_t loadWord(const char * bytes)
+  static uint64_t load_word(const char * bytes)
   {
     uint64_t word;
     std::memcpy(&word, bytes, sizeof(word));  // any alignment, no aliasing question
@@ -191,18 +192,18 @@ private:
   // names are optional in AimDK), otherwise by name within the group. Every match compares the
   // full name, so a reordered publisher never feeds a value to the wrong joint. kNoSlot for a
   // joint this driver does not drive. Compares in place.
-  size_t resolveSlot(const Group & group, size_t position, const std::string & name) const
+  size_t resolve_slot(const Group & group, size_t position, const std::string & name) const
   {
     const AimdkJointGroup & spec = *group.spec;
     if (!name.empty() && position < group.entry_slots.size()) {
       const size_t cached = group.entry_slots[position];
-      if (cached != kNoSlot && sameName(name, cached)) {
+      if (cached != kNoSlot && same_name(name, cached)) {
         return cached;
       }
     }
     if (position < spec.size) {
       const size_t slot = spec.offset + position;
-      if (name_lengths_[slot] != 0U && (name.empty() || sameName(name, slot))) {
+      if (name_lengths_[slot] != 0U && (name.empty() || same_name(name, slot))) {
         return slot;
       }
     }
@@ -210,7 +211,7 @@ private:
       return kNoSlot;
     }
     for (size_t slot = spec.offset; slot < spec.offset + spec.size; ++slot) {
-      if (name_lengths_[slot] != 0U && sameName(name, slot)) {
+      if (name_lengths_[slot] != 0U && same_name(name, slot)) {
         return slot;
       }
     }
@@ -220,14 +221,15 @@ private:
   // The number of distinct driven slots a group's message names; also records whether the
   // group's cached entry slots are distinct (then a message whose entries all hit the cache
   // names as many joints as it has driven entries).
-  size_t distinctSlots(Group & group, const StateArray & msg)
+  size_t match_distinct_slots(Group & group, const StateArray & msg)
   {
     const uint32_t stamp = ++message_stamp_;
     size_t distinct = 0;
     group.distinct_slots = true;
     for (size_t i = 0; i < msg.joints.size(); ++i) {
       const bool cached = i < group.entry_slots.size();
-      const size_t slot = cached ? group.entry_slots[i] : resolveSlot(group, i, msg.joints[i].name);
+      const size_t slot =
+        cached ? group.entry_slots[i] : resolve_slot(group, i, msg.joints[i].name);
       if (slot == kNoSlot) {
         continue;
       }
@@ -242,7 +244,7 @@ private:
   }
 
   // The age of the state is the age of the oldest group: one silent group makes it stale.
-  int64_t oldestGroupTime() const
+  int64_t oldest_group_time() const
   {
     int64_t oldest = groups_.front().state_time_ns;
     for (const Group & group : groups_) {
@@ -252,14 +254,14 @@ private:
   }
 
   // Executor thread: the JointStateArray of one group.
-  void onGroupState(size_t index, const StateArray & msg)
+  void on_group_state(size_t index, const StateArray & msg)
   {
     const auto start = std::chrono::steady_clock::now();
     Group & group = groups_[index];
     const AimdkJointGroup & spec = *group.spec;
     if (msg.state.value != 0U) {  // DomainErrorState: 1 damping, 2 power down, 3 disable, ...
       RCLCPP_WARN_THROTTLE(
-        core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+        core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "AimDK HAL reports error state %u for joint group '%s'",
         static_cast<unsigned>(msg.state.value), spec.name);
     }
@@ -269,9 +271,9 @@ private:
       // A skipped frame still proves that the group reports: it keeps the group fresh, unless
       // the group's last processed frame was rejected.
       if (group.frames_valid) {
-        group.state_time_ns = steadyNs(start);
+        group.state_time_ns = steady_ns(start);
         if (groups_reported_ == groups_.size()) {
-          core_->markStateFresh(oldestGroupTime());
+          core_->mark_state_fresh(oldest_group_time());
         }
       }
       return;
@@ -292,8 +294,8 @@ private:
       const auto & joint = msg.joints[i];
       // The usual case inline: the entry names the joint it named in the last message.
       size_t slot = entry_slots[i];
-      if (slot == kNoSlot || !sameName(joint.name, slot)) {
-        slot = resolveSlot(group, i, joint.name);
+      if (slot == kNoSlot || !same_name(joint.name, slot)) {
+        slot = resolve_slot(group, i, joint.name);
         entry_slots[i] = slot;  // tried first on the next message, reused below
         resolved = true;
       }
@@ -302,7 +304,7 @@ private:
       }
     }
     for (size_t i = remembered; i < count; ++i) {  // more entries than the group has
-      if (resolveSlot(group, i, msg.joints[i].name) != kNoSlot) {
+      if (resolve_slot(group, i, msg.joints[i].name) != kNoSlot) {
         check(msg.joints[i]);
       }
     }
@@ -310,7 +312,7 @@ private:
     // for a joint that is missing. Entries that all hit the cache of a group whose cached slots
     // are distinct cannot repeat one; otherwise count the distinct slots.
     if (resolved || !group.distinct_slots) {
-      matched = distinctSlots(group, msg);
+      matched = match_distinct_slots(group, msg);
     }
     if (!(non_finite == 0.0)) {
       reject(group, "non-finite value for a joint");
@@ -320,7 +322,7 @@ private:
       reject(group, "the group did not report all of its joints");
       return;
     }
-    auto & state = core_->stateFrame();
+    auto & state = core_->state_frame();
     const auto store = [&state](size_t slot, const auto & joint) {
         state.q[slot] = static_cast<T>(joint.position);
         state.dq[slot] = static_cast<T>(joint.velocity);
@@ -332,12 +334,12 @@ private:
       }
     }
     for (size_t i = remembered; i < count; ++i) {
-      const size_t slot = resolveSlot(group, i, msg.joints[i].name);
+      const size_t slot = resolve_slot(group, i, msg.joints[i].name);
       if (slot != kNoSlot) {
         store(slot, msg.joints[i]);
       }
     }
-    group.state_time_ns = steadyNs(start);
+    group.state_time_ns = steady_ns(start);
     group.frames_valid = true;
     if (!group.reported) {
       group.reported = true;
@@ -345,28 +347,28 @@ private:
     }
     // First-state rule: only once every group has reported is the state complete.
     if (groups_reported_ == groups_.size()) {
-      core_->publishState(oldestGroupTime());
+      core_->publish_state(oldest_group_time());
     }
-    core_->checkStateLatency(start);
+    core_->check_state_latency(start);
   }
 
   void reject(Group & group, const char * reason)
   {
     group.frames_valid = false;
-    const uint64_t dropped = core_->rejectState();
+    const uint64_t dropped = core_->reject_state();
     RCLCPP_WARN_THROTTLE(
-      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
       "dropped state frame of joint group '%s': %s (%" PRIu64 " dropped so far)",
       group.spec->name, reason, dropped);
   }
 
   // Executor thread (wall timer): one JointCommandArray per group every
   // command_writer_period_us.
-  void writeCommand()
+  void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->checkWriterJitter();
-    const auto * cmd = core_->nextCommand();
+    core_->check_writer_jitter();
+    const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
     }
@@ -387,14 +389,14 @@ private:
       }
       group.publisher->publish(msg);
     }
-    core_->checkWriterLatency(start);
+    core_->check_writer_latency(start);
   }
 
   const AgibotTopicsOptions options_;
   DriverCore<N, T> * core_{nullptr};
   rclcpp::Node::SharedPtr node_;
   std::vector<Group> groups_;  // sized at construction
-  std::array<uint32_t, N> slot_stamps_{};  // executor thread: distinctSlots() marks
+  std::array<uint32_t, N> slot_stamps_{};  // executor thread: match_distinct_slots() marks
   uint32_t message_stamp_{0};
   std::array<const char *, N> slot_names_{};  // each slot's joint name ("": not driven)
   std::array<size_t, N> name_lengths_{};  // strlen of each slot's joint name (0: not driven)

@@ -70,14 +70,14 @@ public:
     command_msg_.stiffness.assign(N, 0.0);
     command_msg_.damping.assign(N, 0.0);
     command_msg_.parallel_parser_type = options_.parallel_parser_type;
-    const rclcpp::QoS qos = makeQos(options_.qos);
+    const rclcpp::QoS qos = make_qos(options_.qos);
     publisher_ = node->create_publisher<JointCommand>(options_.command_topic, qos);
     state_subscription_ = node->create_subscription<JointState>(
-      options_.state_topic, qos, [this](const JointState & msg) {onJointState(msg);});
-    if (core.hasImu()) {
+      options_.state_topic, qos, [this](const JointState & msg) {on_joint_state(msg);});
+    if (core.has_imu()) {
       imu_subscription_ = node->create_subscription<ImuInfo>(
         options_.imu_topic, qos, [this](const ImuInfo & msg) {
-          publishRosImu(*core_, msg.quaternion, msg.angular_velocity, msg.linear_acceleration);
+          publish_ros_imu(*core_, msg.quaternion, msg.angular_velocity, msg.linear_acceleration);
         });
     }
     executor_.configure(node);
@@ -87,7 +87,7 @@ public:
   bool start() override
   {
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {writeCommand();});
+      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
     return true;
   }
 
@@ -104,7 +104,7 @@ public:
 
 private:
   // Executor thread: JointState arrays indexed by motor slot.
-  void onJointState(const JointState & msg)
+  void on_joint_state(const JointState & msg)
   {
     const auto start = std::chrono::steady_clock::now();
     // Every frame: a frame too short to cover every motor is malformed.
@@ -112,17 +112,17 @@ private:
       reject("position/velocity/torque arrays shorter than the motor count");
       return;
     }
-    if (!core_->startStateFrame()) {
+    if (!core_->start_state_frame()) {
       return;  // decimated
     }
     // A frame rejected half-way leaves partial values in the parsing buffer; harmless, because
     // only a fully accepted frame is published and it rewrites every driven slot.
-    auto & state = core_->stateFrame();
-    for (const size_t slot : core_->mappedSlots()) {
+    auto & state = core_->state_frame();
+    for (const size_t slot : core_->mapped_slots()) {
       const double q = msg.position[slot];
       const double dq = msg.velocity[slot];
       const double tau = msg.torque[slot];
-      if (!allFinite(q, dq, tau)) {
+      if (!all_finite(q, dq, tau)) {
         reject("non-finite value in a driven motor slot");
         return;
       }
@@ -130,25 +130,25 @@ private:
       state.dq[slot] = static_cast<T>(dq);
       state.tau[slot] = static_cast<T>(tau);
     }
-    core_->publishState(steadyNs(start));
-    core_->checkStateLatency(start);
+    core_->publish_state(steady_ns(start));
+    core_->check_state_latency(start);
   }
 
   void reject(const char * reason)
   {
-    const uint64_t dropped = core_->rejectState();
+    const uint64_t dropped = core_->reject_state();
     RCLCPP_WARN_THROTTLE(
-      core_->logger(), core_->throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
       "dropped state frame: %s (%" PRIu64 " dropped so far)", reason, dropped);
   }
 
   // Executor thread (wall timer): one JointCommand every command_writer_period_us. Slots that
   // drive no URDF joint carry zero gains, i.e. stay passive.
-  void writeCommand()
+  void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->checkWriterJitter();
-    const auto * cmd = core_->nextCommand();
+    core_->check_writer_jitter();
+    const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
     }
@@ -161,7 +161,7 @@ private:
       command_msg_.damping[i] = static_cast<double>(cmd->kd[i]);
     }
     publisher_->publish(command_msg_);
-    core_->checkWriterLatency(start);
+    core_->check_writer_latency(start);
   }
 
   const EngineaiTopicsOptions options_;

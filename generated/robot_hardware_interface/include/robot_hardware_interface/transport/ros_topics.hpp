@@ -40,7 +40,7 @@ struct TopicQos
   size_t depth;          // keep last
 };
 
-inline rclcpp::QoS makeQos(const TopicQos & options)
+inline rclcpp::QoS make_qos(const TopicQos & options)
 {
   rclcpp::QoS qos(rclcpp::KeepLast(options.depth));
   if (options.reliable) {
@@ -120,23 +120,23 @@ private:
 // An IMU sample from ROS message fields (quaternion x, y, z, w; vectors x, y, z) into the core,
 // which stores it w, x, y, z. A sample with a non-finite value is dropped and counted.
 template<size_t N, typename T, typename Quaternion, typename Vector3>
-void publishRosImu(
+void publish_ros_imu(
   DriverCore<N, T> & core, const Quaternion & q, const Vector3 & w, const Vector3 & a)
 {
-  if (!allFinite(q.x, q.y, q.z, q.w) || !allFinite(w.x, w.y, w.z) ||
-    !allFinite(a.x, a.y, a.z))
+  if (!all_finite(q.x, q.y, q.z, q.w) || !all_finite(w.x, w.y, w.z) ||
+    !all_finite(a.x, a.y, a.z))
   {
-    const uint64_t dropped = core.rejectImu();
+    const uint64_t dropped = core.reject_imu();
     RCLCPP_WARN_THROTTLE(
-      core.logger(), core.throttleClock(), MonitorThresholds::WARN_THROTTLE_MS,
+      core.logger(), core.throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
       "dropped IMU sample with non-finite values (%" PRIu64 " dropped so far)", dropped);
     return;
   }
-  auto & imu = core.imuFrame();
+  auto & imu = core.imu_frame();
   imu.quat = {static_cast<T>(q.w), static_cast<T>(q.x), static_cast<T>(q.y), static_cast<T>(q.z)};
   imu.omega = {static_cast<T>(w.x), static_cast<T>(w.y), static_cast<T>(w.z)};
   imu.acc = {static_cast<T>(a.x), static_cast<T>(a.y), static_cast<T>(a.z)};
-  core.publishImu();
+  core.publish_imu();
 }
 
 }  // namespace robot_hardware_interface

@@ -50,7 +50,7 @@ constexpr std::array<FieldBytes, 5> kLowCmdFields = {{
   {744, 59, 1, 0},         // bms_cmd, wireless_remote, led, fan, gpio
   {804, 4, 1, 0},          // reserve
 }};
-constexpr auto kLowCmdMasks = unitree_crc::wordMasks<kLowCmdWords>(kLowCmdFields);
+constexpr auto kLowCmdMasks = unitree_crc::word_masks<kLowCmdWords>(kLowCmdFields);
 
 // LowState_ (1180 bytes, CRC over 294 words): head .. bandwidth as LowCmd_ (@0..21), imu_state
 // @24 (quaternion, gyroscope, accelerometer, rpy f32 @0..51, temperature u8 @52), motor_state[20]
@@ -71,18 +71,18 @@ constexpr std::array<FieldBytes, 9> kLowStateFields = {{
   {1156, 20, 1, 0},         // power_v, power_a, fan_frequency, reserve
   {1176, 0, 0, 0},          // crc (not covered)
 }};
-constexpr auto kLowStateMasks = unitree_crc::wordMasks<kLowStateWords>(kLowStateFields);
+constexpr auto kLowStateMasks = unitree_crc::word_masks<kLowStateWords>(kLowStateFields);
 
 // The value the `crc` field of `cmd` must hold.
-inline uint32_t lowCmdCrc(const LowCmd & cmd)
+inline uint32_t low_cmd_crc(const LowCmd & cmd)
 {
-  return unitree_crc::messageCrc(cmd, kLowCmdMasks);
+  return unitree_crc::message_crc(cmd, kLowCmdMasks);
 }
 
 // The value the `crc` field of `state` must hold to be valid.
-inline uint32_t lowStateCrc(const LowState & state)
+inline uint32_t low_state_crc(const LowState & state)
 {
-  return unitree_crc::messageCrc(state, kLowStateMasks);
+  return unitree_crc::message_crc(state, kLowStateMasks);
 }
 
 // What the Unitree DDS transport needs to know about the go messages.
@@ -97,7 +97,7 @@ struct Family
   // header, and every slot in its motor mode with the stop values and zero gains (driven slots
   // are overwritten every cycle). `motor_modes` holds one MotorCmd_.mode per slot.
   template<typename Slots>
-  static void initCommand(
+  static void init_command(
     LowCmd & cmd, const Slots & /*driven_slots*/, uint8_t /*mode_pr*/, const uint8_t * motor_modes)
   {
     cmd = LowCmd{};
@@ -117,11 +117,11 @@ struct Family
   }
 
   // The go messages carry nothing to echo.
-  static uint8_t stateTag(const LowState & /*state*/) {return 0;}
-  static void applyStateTag(LowCmd & /*cmd*/, uint8_t /*tag*/) {}
+  static uint8_t state_tag(const LowState & /*state*/) {return 0;}
+  static void apply_state_tag(LowCmd & /*cmd*/, uint8_t /*tag*/) {}
 
-  static uint32_t commandCrc(const LowCmd & cmd) {return lowCmdCrc(cmd);}
-  static uint32_t stateCrc(const LowState & state) {return lowStateCrc(state);}
+  static uint32_t command_crc(const LowCmd & cmd) {return low_cmd_crc(cmd);}
+  static uint32_t state_crc(const LowState & state) {return low_state_crc(state);}
 };
 
 }  // namespace unitree_go

@@ -45,6 +45,9 @@ THREADS_MS = 100
 # Generated files, by their path in the package (what the edits change, wherever the source lives).
 COMMON = "include/robot_hardware_interface/common/"
 DRIVER_CORE = COMMON + "driver_core.hpp"
+COMMAND_CLAIMS = COMMON + "command_claims.hpp"
+STATE_FRESHNESS = COMMON + "state_freshness.hpp"
+COMMAND_GUARD = COMMON + "command_guard.hpp"
 SLOT_KERNELS = COMMON + "slot_kernels.hpp"
 PARAMETERS = COMMON + "hardware_parameters.hpp"
 SYSTEM_DRIVER = COMMON + "system_driver.hpp"
@@ -72,18 +75,19 @@ class Mutation:
 # TokenEdit(file, pattern, replacement[, count]): C++ snippets; "$$" in a pattern is any balanced run of tokens.
 MUTATIONS = (
     Mutation("layer1_writer_guard", "delete layer 1: the command writer no longer waits for the first state",
-             TokenEdit(DRIVER_CORE, "if (!first_state_received_.load(std::memory_order_acquire)) { return nullptr; }",
-                       ""), ("safety",)),
+             TokenEdit(DRIVER_CORE, "if (!safe_start_.first_state_received()) { return nullptr; }", ""),
+             ("safety",)),
     Mutation("layer2_initial_command", "delete layer 2: the first state no longer seeds the hold command",
              TokenEdit(DRIVER_CORE, "motor_command_buffer_.set_data(initial_cmd_cache_);", ""), ("safety",)),
     Mutation("layer3_write_guard", "delete layer 3: write() forwards commands before read() copied a state",
-             TokenEdit(DRIVER_CORE, "if (!state_copied_.load(std::memory_order_relaxed)) { return false; }", ""),
+             TokenEdit(DRIVER_CORE, "if (!safe_start_.state_copied()) { return false; }", ""),
              ("safety",)),
     Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
              TokenEdit(DRIVER_CORE, "frames_.joints.pos_des = frames_.joints.pos;", ""), ("safety",)),
     Mutation("default_gains_ignored", "a position-only controller gets zero stiffness instead of the default",
-             TokenEdit(DRIVER_CORE, "position_mode && (claims & kClaimPosition) != 0U ? default_stiffness_[i] : 0.0",
-                       "0.0"), ("command_modes",), robots=("unitree/g1",)),
+             TokenEdit(COMMAND_CLAIMS,
+                       "position_mode && (claims & kClaimPosition) != 0U ? slots_.default_stiffness(i) : 0.0", "0.0"),
+             ("command_modes",), robots=("unitree/g1",)),
     Mutation("velocity_joint_position_target", "a velocity-commanded joint is sent the stale position target",
              TokenEdit(DRIVER_CORE, "frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);",
                        "frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos_des[slot]);"),
@@ -120,12 +124,16 @@ MUTATIONS = (
              TokenEdit(DRIVER_CORE, "imu_data_.orientation[3] = static_cast<double>(imu->quat[0]);",
                        "imu_data_.orientation[3] = static_cast<double>(imu->quat[1]);"), ("imu",)),
     Mutation("decimation", "state decimation off by one",
-             TokenEdit(DRIVER_CORE, "frame_count % parameters_.state_decimation",
-                       "frame_count % (parameters_.state_decimation + 1)"), ("decimation",)),
+             TokenEdit(STATE_FRESHNESS, "frame_count % decimation", "frame_count % (decimation + 1)"), ("decimation",)),
     Mutation("stale_ignores_decimated_frames", "decimated frames no longer count as state arriving",
-             TokenEdit(DRIVER_CORE, "if (state_frames_valid_) { mark_state_fresh($$); }", ""), ("decimation",)),
+             TokenEdit(STATE_FRESHNESS, "if (frames_valid_) { mark_fresh($$); }", ""), ("decimation",)),
     Mutation("stale_masked_by_decimated_frames", "decimated frames keep the state fresh after a rejected frame",
-             TokenEdit(DRIVER_CORE, "if (state_frames_valid_)", "if (true)"), ("decimation",)),
+             TokenEdit(STATE_FRESHNESS, "if (frames_valid_)", "if (true)"), ("decimation",)),
+    Mutation("stale_state_never_held", "the command writer never notices that the state stopped",
+             TokenEdit(STATE_FRESHNESS, "return age_ns > static_cast<int64_t>(timeout_ms) * 1000000;",
+                       "return false;"), ("command_safety",)),
+    Mutation("negative_gain_forwarded", "the command guard forwards a negative gain",
+             TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", ""), ("command_safety",)),
     Mutation("parameter_range", "an out-of-range parameter (0) is accepted",
              TokenEdit(PARAMETERS, "|| parsed < min ||", "||"), ("parameters",)),
     Mutation("hot_path_allocation", "write() allocates",

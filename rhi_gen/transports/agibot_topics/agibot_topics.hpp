@@ -76,7 +76,7 @@ public:
     node_ = node;
     const rclcpp::QoS qos = make_qos(options_.qos);
     for (size_t slot = 0; slot < N; ++slot) {
-      slot_names_[slot] = core.slot_joint_names()[slot];
+      slot_names_[slot] = core.slots().slot_joint_names()[slot];
       name_lengths_[slot] = std::strlen(slot_names_[slot]);
     }
     for (size_t g = 0; g < groups_.size(); ++g) {
@@ -90,7 +90,7 @@ public:
       // publisher that keeps its order (or keeps a changed one) costs one name check per entry.
       group.entry_slots.assign(spec.size, kNoSlot);
       for (size_t i = 0; i < spec.size; ++i) {
-        const char * joint = core.slot_joint_names()[spec.offset + i];
+        const char * joint = core.slots().slot_joint_names()[spec.offset + i];
         group.command.joints[i].name = joint;
         group.driven += joint[0] != '\0' ? 1U : 0U;
       }
@@ -348,7 +348,7 @@ private:
     if (groups_reported_ == groups_.size()) {
       core_->publish_state(oldest_group_time());
     }
-    core_->check_state_latency(start);
+    core_->monitor().check_state_latency(start);
   }
 
   void reject(Group & group, const char * reason)
@@ -366,7 +366,7 @@ private:
   void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->check_writer_jitter();
+    core_->monitor().check_writer_jitter();
     const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
@@ -388,7 +388,7 @@ private:
       }
       group.publisher->publish(msg);
     }
-    core_->check_writer_latency(start);
+    core_->monitor().check_writer_latency(start);
   }
 
   const AgibotTopicsOptions options_;

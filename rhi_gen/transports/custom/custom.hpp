@@ -140,7 +140,7 @@ protected:
       reject_state("the state callback dropped it");
       return;
     }
-    for (const size_t slot : core_->mapped_slots()) {
+    for (const size_t slot : core_->slots().mapped_slots()) {
       if (!all_finite(state_scratch_.q[slot], state_scratch_.dq[slot], state_scratch_.tau[slot])) {
         reject_state("non-finite value for a driven joint");
         return;
@@ -148,7 +148,7 @@ protected:
     }
     core_->state_frame() = state_scratch_;
     core_->publish_state(steady_ns(start));
-    core_->check_state_latency(start);
+    core_->monitor().check_state_latency(start);
   }
 
   // From the SDK's IMU callback: `fill(Imu & imu)` writes quat (w, x, y, z), omega and acc and
@@ -181,8 +181,11 @@ protected:
   const rclcpp::Logger & logger() const {return core_->logger();}
   const rclcpp::Node::SharedPtr & node() const {return node_;}
   // Slots that drive a URDF joint (ascending) and the joint name of every slot ("" for none).
-  const std::vector<size_t> & mapped_slots() const {return core_->mapped_slots();}
-  const std::array<const char *, N> & slot_joint_names() const {return core_->slot_joint_names();}
+  const std::vector<size_t> & mapped_slots() const {return core_->slots().mapped_slots();}
+  const std::array<const char *, N> & slot_joint_names() const
+  {
+    return core_->slots().slot_joint_names();
+  }
 
 private:
   void reject_state(const char * reason)
@@ -197,14 +200,14 @@ private:
   void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->check_writer_jitter();
+    core_->monitor().check_writer_jitter();
     const Command * cmd = core_->next_command();
     if (cmd == nullptr) {
       warn_without_state();
       return;
     }
     send(*cmd);
-    core_->check_writer_latency(start);
+    core_->monitor().check_writer_latency(start);
   }
 
   // Nothing is sent before the first valid state: say so once if none has come in time.

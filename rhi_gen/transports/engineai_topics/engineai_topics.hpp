@@ -117,7 +117,7 @@ private:
     // A frame rejected half-way leaves partial values in the parsing buffer; harmless, because
     // only a fully accepted frame is published and it rewrites every driven slot.
     auto & state = core_->state_frame();
-    for (const size_t slot : core_->mapped_slots()) {
+    for (const size_t slot : core_->slots().mapped_slots()) {
       const double q = msg.position[slot];
       const double dq = msg.velocity[slot];
       const double tau = msg.torque[slot];
@@ -130,7 +130,7 @@ private:
       state.tau[slot] = static_cast<T>(tau);
     }
     core_->publish_state(steady_ns(start));
-    core_->check_state_latency(start);
+    core_->monitor().check_state_latency(start);
   }
 
   void reject(const char * reason)
@@ -146,7 +146,7 @@ private:
   void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->check_writer_jitter();
+    core_->monitor().check_writer_jitter();
     const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
@@ -160,7 +160,7 @@ private:
       command_msg_.damping[i] = static_cast<double>(cmd->kd[i]);
     }
     publisher_->publish(command_msg_);
-    core_->check_writer_latency(start);
+    core_->monitor().check_writer_latency(start);
   }
 
   const EngineaiTopicsOptions options_;

@@ -65,12 +65,12 @@ public:
     node_ = node;
     // State entries are matched by joint name: build the lookup once, so the callback only reads
     // it. Commands name every driven joint in slot order; sized once, the writer fills in numbers.
-    const auto & slots = core.mapped_slots();
+    const auto & slots = core.slots().mapped_slots();
     slot_by_joint_name_.reserve(slots.size());
     command_msg_.name.clear();
     for (const size_t slot : slots) {
-      slot_by_joint_name_.emplace(core.slot_joint_names()[slot], slot);
-      command_msg_.name.emplace_back(core.slot_joint_names()[slot]);
+      slot_by_joint_name_.emplace(core.slots().slot_joint_names()[slot], slot);
+      command_msg_.name.emplace_back(core.slots().slot_joint_names()[slot]);
     }
     command_msg_.position.assign(slots.size(), 0.0);
     command_msg_.velocity.assign(slots.size(), 0.0);
@@ -167,14 +167,14 @@ private:
     }
     // First-state rule: only once every driven joint has been reported is the state complete.
     // Its age is the age of the joint reported longest ago.
-    if (slots_reported_ == core_->mapped_slots().size()) {
+    if (slots_reported_ == core_->slots().mapped_slots().size()) {
       int64_t oldest_ns = now_ns;
-      for (const size_t slot : core_->mapped_slots()) {
+      for (const size_t slot : core_->slots().mapped_slots()) {
         oldest_ns = std::min(oldest_ns, slot_state_time_ns_[slot]);
       }
       core_->publish_state(oldest_ns);
     }
-    core_->check_state_latency(start);
+    core_->monitor().check_state_latency(start);
   }
 
   void reject(const char * reason)
@@ -191,20 +191,20 @@ private:
   void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->check_writer_jitter();
+    core_->monitor().check_writer_jitter();
     const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
     }
     command_msg_.header.stamp = node_->now();
-    const auto & slots = core_->mapped_slots();
+    const auto & slots = core_->slots().mapped_slots();
     for (size_t i = 0; i < slots.size(); ++i) {
       command_msg_.position[i] = static_cast<double>(cmd->q_target[slots[i]]);
       command_msg_.velocity[i] = static_cast<double>(cmd->dq_target[slots[i]]);
       command_msg_.effort[i] = static_cast<double>(cmd->tau_ff[slots[i]]);
     }
     publisher_->publish(command_msg_);
-    core_->check_writer_latency(start);
+    core_->monitor().check_writer_latency(start);
   }
 
   const GenericTopicsOptions options_;

@@ -72,7 +72,8 @@ public:
     // One DDS participant per process, bound to the robot's network interface.
     ::unitree::robot::ChannelFactory::Instance()->Init(options_.domain_id, network_interface);
     // The command message is reused for every send: fill the constant parts once.
-    Family::init_command(low_cmd_, core.mapped_slots(), options_.mode_pr, options_.motor_modes);
+    Family::init_command(
+      low_cmd_, core.slots().mapped_slots(), options_.mode_pr, options_.motor_modes);
     publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowCmd>>(
       options_.lowcmd_topic);
     publisher_->InitChannel();
@@ -148,7 +149,7 @@ private:
     }
     auto & state = core_->state_frame();
     const auto & motors = low_state.motor_state();
-    for (const size_t slot : core_->mapped_slots()) {
+    for (const size_t slot : core_->slots().mapped_slots()) {
       const auto & motor = motors[slot];
       if (!all_finite(motor.q(), motor.dq(), motor.tau_est())) {
         const uint64_t dropped = core_->reject_state();
@@ -166,7 +167,7 @@ private:
       publish_imu(low_state.imu_state());
     }
     core_->publish_state(steady_ns(start));
-    core_->check_state_latency(start);
+    core_->monitor().check_state_latency(start);
   }
 
   template<typename ImuState>
@@ -199,13 +200,13 @@ private:
   void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
-    core_->check_writer_jitter();
+    core_->monitor().check_writer_jitter();
     const auto * cmd = core_->next_command();
     if (cmd == nullptr) {
       return;
     }
     Family::apply_state_tag(low_cmd_, state_tag_.load(std::memory_order_relaxed));
-    for (const size_t slot : core_->mapped_slots()) {
+    for (const size_t slot : core_->slots().mapped_slots()) {
       auto & motor = low_cmd_.motor_cmd()[slot];
       motor.q() = static_cast<float>(cmd->q_target[slot]);
       motor.dq() = static_cast<float>(cmd->dq_target[slot]);
@@ -215,7 +216,7 @@ private:
     }
     low_cmd_.crc() = Family::command_crc(low_cmd_);
     publisher_->Write(low_cmd_);
-    core_->check_writer_latency(start);
+    core_->monitor().check_writer_latency(start);
   }
 
   // Unitree robots boot into a built-in motion controller (sport / locomotion mode) that also

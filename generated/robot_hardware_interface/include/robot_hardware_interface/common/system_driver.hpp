@@ -88,7 +88,7 @@ public:
       return CallbackReturn::ERROR;
     }
     RCLCPP_INFO(core_.logger(), "activated: commands start after the first valid state");
-    const size_t limp = core_.joints_without_default_stiffness();
+    const size_t limp = core_.slots().joints_without_default_stiffness();
     if (limp > 0) {
       RCLCPP_WARN(
         core_.logger(),
@@ -113,7 +113,7 @@ public:
     const std::vector<std::string> & start_interfaces,
     const std::vector<std::string> & stop_interfaces) override
   {
-    core_.prepare_claims(start_interfaces, stop_interfaces);
+    core_.claims().prepare_claims(start_interfaces, stop_interfaces);
     return return_type::OK;
   }
 
@@ -121,7 +121,7 @@ public:
     const std::vector<std::string> & /*start_interfaces*/,
     const std::vector<std::string> & /*stop_interfaces*/) override
   {
-    core_.commit_claims();
+    core_.claims().commit_claims();
     return return_type::OK;
   }
 
@@ -130,7 +130,7 @@ public:
     const auto start = std::chrono::steady_clock::now();
     core_.read_state();
     publish_state_values();
-    core_.check_read_latency(start);
+    core_.monitor().check_read_latency(start);
     return return_type::OK;
   }
 
@@ -141,7 +141,7 @@ public:
     if (core_.write_command()) {
       publish_command_values();
     }
-    core_.check_write_latency(start);
+    core_.monitor().check_write_latency(start);
     return return_type::OK;
   }
 
@@ -165,7 +165,7 @@ protected:
   virtual void on_deactivate_hook() {}
 
   // The SDK motor slot of a URDF joint, -1 for a joint this driver does not drive.
-  int get_joint_index(const std::string & name) const {return core_.slot_of(name);}
+  int get_joint_index(const std::string & name) const {return core_.slots().slot_of(name);}
   DriverCore<N, T> & core() {return core_;}
   const rclcpp::Logger & logger() const {return core_.logger();}
 
@@ -176,7 +176,7 @@ private:
   CallbackReturn initialize(
     const hardware_interface::HardwareInfo & info, const rclcpp::Logger & logger) override
   {
-    core_.set_logger(logger);
+    core_.monitor().set_logger(logger);
     const rclcpp::Logger & log = core_.logger();
     if (!read_driver_parameters(log, info.hardware_parameters, core_.parameters()) ||
       !description_is_driven(info))
@@ -214,7 +214,7 @@ private:
   {
     const rclcpp::Logger & log = core_.logger();
     for (const auto & joint : info.joints) {
-      if (core_.slot_of(joint.name) < 0) {
+      if (core_.slots().slot_of(joint.name) < 0) {
         RCLCPP_ERROR(
           log, "joint '%s' of the ros2_control description is not driven by %s",
           joint.name.c_str(), core_.spec().plugin_name);
@@ -281,7 +281,7 @@ private:
 
   double * state_value(const std::string & prefix, const std::string & name) override
   {
-    const int slot = core_.slot_of(prefix);
+    const int slot = core_.slots().slot_of(prefix);
     if (slot >= 0) {
       JointStorage<N> & joints = core_.joints();
       const auto s = static_cast<size_t>(slot);
@@ -310,11 +310,11 @@ private:
 
   double * command_value(const std::string & prefix, const std::string & name) override
   {
-    const int slot = core_.slot_of(prefix);
+    const int slot = core_.slots().slot_of(prefix);
     if (slot < 0) {
       return nullptr;
     }
-    if (core_.mode_of(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
+    if (core_.slots().mode_of(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
       (name == "position" || name == "stiffness"))
     {
       return nullptr;  // a velocity-commanded joint has no position target and no stiffness

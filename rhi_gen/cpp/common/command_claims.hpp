@@ -1,0 +1,195 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__COMMAND_CLAIMS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__COMMAND_CLAIMS_HPP_
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "robot_hardware_interface/common/data_buffer.hpp"
+#include "robot_hardware_interface/common/motor_types.hpp"
+#include "robot_hardware_interface/common/slot_kernels.hpp"
+#include "robot_hardware_interface/common/slot_table.hpp"
+
+namespace robot_hardware_interface
+{
+
+// Which command interfaces active controllers claim, and the command bounds that follow from
+// them. Only claimed interfaces count: an unclaimed stiffness / damping is the joint's default
+// gain while its position (or velocity) is claimed, and zero otherwise.
+//
+// Threads: the controller manager prepares and commits a mode switch (prepare_claims(),
+// commit_claims(), non-real-time); write() applies it at its next cycle (apply_committed(), the
+// controller thread), never the switching thread, since write() may be running.
+template<size_t N, typename T>
+class CommandClaims
+{
+public:
+  using Command = MotorCommand<N, T>;
+
+  // One bit per command interface of a joint.
+  static constexpr uint8_t kClaimPosition = 1U << 0;
+  static constexpr uint8_t kClaimVelocity = 1U << 1;
+  static constexpr uint8_t kClaimEffort = 1U << 2;
+  static constexpr uint8_t kClaimStiffness = 1U << 3;
+  static constexpr uint8_t kClaimDamping = 1U << 4;
+
+  explicit CommandClaims(const SlotTable<N> & slots)
+  : slots_(slots)
+  {
+  }
+
+  // prepare_command_mode_switch: the claims after starting and stopping the given
+  // "<joint>/<interface>" names; names of other components are ignored. Applied only if
+  // commit_claims() follows.
+  template<typename Names>
+  void prepare_claims(const Names & start, const Names & stop)
+  {
+    Claims next = committed_;
+    for (const auto & name : stop) {
+      update_claim(next, name, false);
+    }
+    for (const auto & name : start) {
+      update_claim(next, name, true);
+    }
+    next.generation = committed_.generation + 1;
+    prepared_ = next;
+    claims_prepared_.store(true, std::memory_order_release);
+  }
+
+  // perform_command_mode_switch: hand the prepared claims to write().
+  void commit_claims()
+  {
+    if (!claims_prepared_.exchange(false, std::memory_order_acquire)) {
+      return;
+    }
+    committed_ = prepared_;
+    claim_buffer_.set_data(committed_);
+  }
+
+  // Controller thread: take over claims a mode switch committed. A joint whose claims changed
+  // starts from a command that cannot jump or carry another controller's gains: target = measured
+  // position, no velocity or effort, the default gains. Returns true when the storage changed.
+  bool apply_committed(ControllerFrames<N, T> & frames)
+  {
+    const Claims * next = claim_buffer_.get_data();
+    if (next == nullptr || next->generation == applied_generation_) {
+      return false;
+    }
+    applied_generation_ = next->generation;
+    bool changed = false;
+    JointStorage<N> & joints = frames.joints;
+    for (size_t i = 0; i < N; ++i) {
+      if (next->bits[i] == claims_[i]) {
+        continue;
+      }
+      joints.pos_des[i] = joints.pos[i];
+      joints.vel_des[i] = 0.0;
+      joints.ff[i] = 0.0;
+      const bool position_mode = slots_.mode_of(i) == CommandMode::kPosition;
+      joints.kp[i] = position_mode ? slots_.default_stiffness(i) : 0.0;
+      joints.kd[i] = slots_.default_damping(i);
+      claims_[i] = next->bits[i];
+      changed = true;
+    }
+    if (changed) {
+      update_command_bounds(frames);
+    }
+    return changed;
+  }
+
+  // The bounds write() applies per slot, from the claims. A claimed interface is bounded by the
+  // URDF limits (a claimed gain is not bounded: the command guard rejects a negative one). An
+  // unclaimed one is pinned: to the joint's default gain while its position (stiffness) or its
+  // position or velocity (damping) is claimed, to zero otherwise. Velocity-commanded joints get
+  // kp = 0 and their measured position (DriverCore::write_command()).
+  void update_command_bounds(ControllerFrames<N, T> & frames) const
+  {
+    constexpr T kUnbounded = std::numeric_limits<T>::infinity();
+    Command & lower = frames.lower;
+    Command & upper = frames.upper;
+    for (size_t i = 0; i < N; ++i) {
+      const uint8_t claims = claims_[i];
+      const SlotLimits & limits = slots_.limits(i);
+      const bool position_mode = slots_.mode_of(i) == CommandMode::kPosition;
+      const bool driven = (claims & (kClaimPosition | kClaimVelocity)) != 0U;
+      const auto velocity = static_cast<T>((claims & kClaimVelocity) != 0U ? limits.velocity : 0.0);
+      const auto effort = static_cast<T>((claims & kClaimEffort) != 0U ? limits.effort : 0.0);
+      const auto stiffness = static_cast<T>(
+        position_mode && (claims & kClaimPosition) != 0U ? slots_.default_stiffness(i) : 0.0);
+      const auto damping = static_cast<T>(driven ? slots_.default_damping(i) : 0.0);
+      if (position_mode) {
+        pin(
+          lower.q_target, upper.q_target, i, static_cast<T>(limits.position_min),
+          static_cast<T>(limits.position_max));
+      } else {
+        pin(lower.q_target, upper.q_target, i, -kUnbounded, kUnbounded);
+      }
+      pin(lower.dq_target, upper.dq_target, i, -velocity, velocity);
+      pin(lower.tau_ff, upper.tau_ff, i, -effort, effort);
+      if (position_mode && (claims & kClaimStiffness) != 0U) {
+        pin(lower.kp, upper.kp, i, -kUnbounded, kUnbounded);
+      } else {
+        pin(lower.kp, upper.kp, i, stiffness, stiffness);
+      }
+      if ((claims & kClaimDamping) != 0U) {
+        pin(lower.kd, upper.kd, i, -kUnbounded, kUnbounded);
+      } else {
+        pin(lower.kd, upper.kd, i, damping, damping);
+      }
+    }
+  }
+
+private:
+  struct Claims
+  {
+    std::array<uint8_t, N> bits{};
+    uint64_t generation{0};
+  };
+
+  static void pin(std::array<T, N> & lower, std::array<T, N> & upper, size_t slot, T min, T max)
+  {
+    lower[slot] = min;
+    upper[slot] = max;
+  }
+
+  // "<joint>/<interface>": the claim bit it sets or clears (joint names may contain '/').
+  template<typename Name>
+  void update_claim(Claims & claims, const Name & full_name, bool claimed) const
+  {
+    const std::string name(full_name);
+    const auto separator = name.rfind('/');
+    if (separator == std::string::npos) {
+      return;
+    }
+    const int slot = slots_.slot_of(name.substr(0, separator));
+    if (slot < 0) {
+      return;  // another component's interface
+    }
+    const std::string interface = name.substr(separator + 1);
+    const uint8_t bit = interface == "position" ? kClaimPosition :
+      interface == "velocity" ? kClaimVelocity : interface == "effort" ? kClaimEffort :
+      interface == "stiffness" ? kClaimStiffness : interface == "damping" ? kClaimDamping : 0U;
+    uint8_t & bits = claims.bits[static_cast<size_t>(slot)];
+    bits = static_cast<uint8_t>(claimed ? (bits | bit) : (bits & ~bit));
+  }
+
+  const SlotTable<N> & slots_;
+  Claims prepared_{};                 // controller manager: prepare_claims()
+  Claims committed_{};                // controller manager: commit_claims()
+  std::atomic<bool> claims_prepared_{false};
+  DataBuffer<Claims> claim_buffer_;   // commit_claims() -> write()
+  std::array<uint8_t, N> claims_{};   // controller thread: the claims write() applies
+  uint64_t applied_generation_{0};    // controller thread
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__COMMAND_CLAIMS_HPP_

@@ -22,6 +22,7 @@ import pytest
 
 from tests.support import vendor_msgs
 from tests.support.cpp_build import (
+    DEFAULT_DISTRO,
     PACKAGE,
     REPO,
     RenderedPackage,
@@ -52,6 +53,7 @@ SLOT_KERNELS = COMMON + "slot_kernels.hpp"
 PARAMETERS = COMMON + "hardware_parameters.hpp"
 SYSTEM_DRIVER = COMMON + "system_driver.hpp"
 DATA_BUFFER = COMMON + "data_buffer.hpp"
+COMPAT = COMMON + "ros2_control_compat.hpp"
 TRANSPORT = "include/robot_hardware_interface/transport/"
 UNITREE_CRC = TRANSPORT + "unitree_crc.hpp"
 UNITREE_HG = TRANSPORT + "unitree_hg.hpp"
@@ -70,6 +72,7 @@ class Mutation:
     sections: tuple[str, ...]       # the harness sections expected to catch it
     robots: tuple[str, ...] = ROBOTS
     data_buffer: bool = False       # run data_buffer_stress instead of the driver harness
+    distro: str = DEFAULT_DISTRO    # the ros2_control stand-ins the harness is built against
 
 
 # TokenEdit(file, pattern, replacement[, count]): C++ snippets; "$$" in a pattern is any balanced run of tokens.
@@ -134,6 +137,10 @@ MUTATIONS = (
                        "return false;"), ("command_safety",)),
     Mutation("negative_gain_forwarded", "the command guard forwards a negative gain",
              TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", ""), ("command_safety",)),
+    Mutation("fetch_unclaimed", "write() fetches every command handle, claimed or not (framework-owned handles)",
+             TokenEdit(COMPAT, "for (const CommandLink & link : claimed_links_)",
+                       "for (const CommandLink & link : command_links_)"),
+             ("command_modes",), robots=("unitree/g1",), distro="jazzy"),
     Mutation("parameter_range", "an out-of-range parameter (0) is accepted",
              TokenEdit(PARAMETERS, "|| parsed < min ||", "||"), ("parameters",)),
     Mutation("hot_path_allocation", "write() allocates",
@@ -208,7 +215,8 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
         if reason:
             outcomes.append(Outcome(mutation, label, False, "", None, 0.0, skipped=reason))
             continue
-        link, _ = build_harness(builder, package.build(label), "plain")
+        distro = mutation.distro if mutation else DEFAULT_DISTRO
+        link, _ = build_harness(builder, package.build(label), "plain", distro)
         run = run_binary(link.path, [f"--threads-ms={THREADS_MS}"], timeout=120) if link.ok else None
         outcomes.append(Outcome(mutation, label, link.ok, link.stderr, run, time.monotonic() - start))
     return outcomes

@@ -784,6 +784,28 @@ void test_main_scenario() {
       }
       check_gains("position-only controller", true, false, &cmd7);
     }
+#if RHI_FAKE_HI_MAJOR >= 4
+    // Framework-owned handles (4.x+): an unclaimed command interface, written by nobody, is never
+    // read. Behind the driver's back, a value lands in joint A's unclaimed effort handle; cycles
+    // run; then a switch that changes only joint B's claims makes write() publish the driver's own
+    // doubles to every handle. Had the driver read A's effort, the handle would still show the value.
+    if (kJointCount >= 2) {
+      constexpr double kNobodyWrote = 4242.25;
+      const Joint& a = kJoints[0];
+      const std::string b_effort = std::string(kJoints[1].name) + "/effort";
+      ifs.cff[0]->set(kNobodyWrote);
+      for (int cycle = 0; cycle < 3; ++cycle) {
+        hw.write(kTime, kPeriod);
+      }
+      switch_claims(rig, {b_effort}, {});
+      hw.write(kTime, kPeriod);  // the switch cycle: the safe-start target, published to every handle
+      CHECK(ifs.cff[0]->get() != kNobodyWrote, "unclaimed %s/effort is never read (the driver's own value "
+            "was published over it)", a.name);
+      switch_claims(rig, {}, {b_effort});
+      hw.write(kTime, kPeriod);
+      t.tick_writer();
+    }
+#endif
     // The robot moves: a velocity-commanded joint goes on reporting where it is, never the
     // position it had when its controller started.
     for (int code : {9, 10}) {  // two frames: a decimated stream shows one of them

@@ -11,8 +11,10 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "robot_hardware_interface/common/data_buffer.hpp"
 #include "robot_hardware_interface/common/motor_types.hpp"
@@ -27,8 +29,9 @@ namespace robot_hardware_interface
 // gain while its position (or velocity) is claimed, and zero otherwise.
 //
 // Threads: the controller manager prepares and commits a mode switch (prepare_claims(),
-// commit_claims(), non-real-time); write() applies it at its next cycle (apply_committed(), the
-// controller thread), never the switching thread, since write() may be running.
+// commit_claims(), non-real-time); write() takes and applies it at its next cycle
+// (take_committed(), apply_committed(), the controller thread), never the switching thread, since
+// write() may be running.
 template<size_t N, typename T>
 class CommandClaims
 {
@@ -75,10 +78,10 @@ public:
     claim_buffer_.set_data(committed_);
   }
 
-  // Controller thread: take over claims a mode switch committed. A joint whose claims changed
-  // starts from a command that cannot jump or carry another controller's gains: target = measured
-  // position, no velocity or effort, the default gains. Returns true when the storage changed.
-  bool apply_committed(ControllerFrames<N, T> & frames)
+  // Controller thread: adopt the claims a mode switch committed. True when a joint's claims
+  // changed: then the claimed interfaces differ (SystemDriver fetches only those) and
+  // apply_committed() resets the changed joints at its next call.
+  bool take_committed()
   {
     const Claims * next = claim_buffer_.get_data();
     if (next == nullptr || next->generation == applied_generation_) {
@@ -86,24 +89,60 @@ public:
     }
     applied_generation_ = next->generation;
     bool changed = false;
+    for (size_t i = 0; i < N; ++i) {
+      if (next->bits[i] != claims_[i]) {
+        claims_[i] = next->bits[i];
+        changed_[i] = true;
+        changed = true;
+      }
+    }
+    unapplied_ = unapplied_ || changed;
+    return changed;
+  }
+
+  // Controller thread (write()): take committed claims, then give every joint whose claims changed
+  // a command that cannot jump or carry another controller's gains: target = measured position, no
+  // velocity or effort, the default gains. Returns true when the storage changed.
+  bool apply_committed(ControllerFrames<N, T> & frames)
+  {
+    take_committed();
+    if (!unapplied_) {
+      return false;
+    }
+    unapplied_ = false;
     JointStorage<N> & joints = frames.joints;
     for (size_t i = 0; i < N; ++i) {
-      if (next->bits[i] == claims_[i]) {
+      if (!changed_[i]) {
         continue;
       }
+      const bool position_mode = slots_.mode_of(i) == CommandMode::kPosition;
       joints.pos_des[i] = joints.pos[i];
       joints.vel_des[i] = 0.0;
       joints.ff[i] = 0.0;
-      const bool position_mode = slots_.mode_of(i) == CommandMode::kPosition;
       joints.kp[i] = position_mode ? slots_.default_stiffness(i) : 0.0;
       joints.kd[i] = slots_.default_damping(i);
-      claims_[i] = next->bits[i];
-      changed = true;
+      changed_[i] = false;
     }
-    if (changed) {
-      update_command_bounds(frames);
+    update_command_bounds(frames);
+    return true;
+  }
+
+  // Controller thread: whether a controller claims the command interface behind `value`, one of
+  // the doubles of `joints` (false for any other address).
+  bool claims_value(const JointStorage<N> & joints, const double * value) const
+  {
+    const std::array<std::pair<const std::array<double, N> *, uint8_t>, 5> interfaces{{
+      {&joints.pos_des, kClaimPosition}, {&joints.vel_des, kClaimVelocity},
+      {&joints.ff, kClaimEffort}, {&joints.kp, kClaimStiffness}, {&joints.kd, kClaimDamping}}};
+    for (const auto & [values, bit] : interfaces) {
+      const double * first = values->data();
+      if (std::less_equal<const double *>()(first, value) &&
+        std::less<const double *>()(value, first + N))
+      {
+        return (claims_[static_cast<size_t>(value - first)] & bit) != 0U;
+      }
     }
-    return changed;
+    return false;
   }
 
   // The bounds write() applies per slot, from the claims. A claimed interface is bounded by the
@@ -188,6 +227,8 @@ private:
   std::atomic<bool> claims_prepared_{false};
   DataBuffer<Claims> claim_buffer_;   // commit_claims() -> write()
   std::array<uint8_t, N> claims_{};   // controller thread: the claims write() applies
+  std::array<bool, N> changed_{};     // controller thread: claims taken, joint not reset yet
+  bool unapplied_{false};             // controller thread: some changed_ is set
   uint64_t applied_generation_{0};    // controller thread
 };
 

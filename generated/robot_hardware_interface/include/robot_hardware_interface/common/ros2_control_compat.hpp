@@ -97,6 +97,8 @@ public:
         command_links_.push_back(CommandLink{handle.get(), value});
       }
     }
+    claimed_links_.clear();
+    claimed_links_.reserve(command_links_.size());  // select_command_values() never allocates
     return exported;
   }
 #else
@@ -164,11 +166,31 @@ protected:
 #endif
   }
 
-  // Controller thread, start of write(): what the controllers commanded, into the driver's doubles.
+  // Controller thread, when the claims changed (a mode switch), before fetch_command_values():
+  // from now on fetch only the command interfaces whose double `is_claimed(value)` says a
+  // controller claims. A controller writes only what it claims, so an unclaimed handle holds
+  // nothing to fetch, and reading it would cost its lock every cycle.
+  template<typename IsClaimed>
+  void select_command_values(IsClaimed is_claimed)
+  {
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+    claimed_links_.clear();
+    for (const CommandLink & link : command_links_) {
+      if (is_claimed(static_cast<const double *>(link.value))) {
+        claimed_links_.push_back(link);
+      }
+    }
+#else
+    static_cast<void>(is_claimed);  // the exported interfaces are the driver's doubles
+#endif
+  }
+
+  // Controller thread, start of write(): what the controllers commanded, into the driver's doubles
+  // (the claimed interfaces only, see select_command_values()).
   void fetch_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
-    for (const CommandLink & link : command_links_) {
+    for (const CommandLink & link : claimed_links_) {
       const std::optional<double> value = link.handle->get_optional();
       if (value.has_value()) {
         *link.value = *value;
@@ -203,6 +225,7 @@ private:
   };
   std::vector<StateLink> state_links_;
   std::vector<CommandLink> command_links_;
+  std::vector<CommandLink> claimed_links_;  // the command_links_ controllers claim
 #endif
 };
 

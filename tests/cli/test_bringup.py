@@ -18,9 +18,11 @@ import pytest
 import yaml
 
 from rhi_gen.render.bringup_views import start_controllers
+from tests.support.cli import run_cli
 from tests.support.cpp_build import PACKAGE, load_models, make_test_project, project_robot_labels, render_package_to
 from tests.support.description_checks import check_ros2_control, exported, parse_ros2_control
 from tests.support.launch_standin import Launched, StartedNode, launch, load_launch_file
+from tests.support.repo import URDF_FIXTURES, copy_project
 
 LABELS = project_robot_labels()
 XACRO = Path(sys.executable).parent / "xacro"
@@ -229,3 +231,68 @@ def test_launch_standin_rejects_what_the_real_api_rejects(package, tmp_path):
     with pytest.raises(RuntimeError, match="missing required argument 'use_mock_hardware'"):
         launch(partial, {PACKAGE: package_dir})
     assert load_launch_file(package_dir / "launch" / "bringup.launch.py").entities
+
+
+# ---------------------------------------------------------------- the commands around it
+def test_new_writes_a_safe_pose_and_prints_the_two_bringup_commands(tmp_path):
+    urdf = tmp_path / "arm.urdf"
+    urdf.write_text((URDF_FIXTURES / "simple_arm.urdf").read_text().replace('lower="-2.5" upper="2.5"',
+                                                                            'lower="0.2" upper="2.5"'))
+    (tmp_path / "p").mkdir()
+    result = run_cli("new", "--vendor", "acme", "--robot", "arm", "--urdf", urdf, "--project", tmp_path / "p")
+    assert result.code == 0, result.err
+    data = yaml.safe_load((tmp_path / "p/robots/acme/arm.yaml").read_text())
+    assert data["initial_positions"] == {"shoulder_pan": 0.0, "shoulder_lift": 0.0, "elbow": 0.2}
+    lines = result.out.splitlines()
+    launch_command = "ros2 launch robot_hardware_interface arm.launch.py"
+    assert lines[-2:] == [f"  without the robot: {launch_command} use_mock_hardware:=true",
+                          f"  on the robot:      {launch_command}"]
+    package_dir = tmp_path / "p/generated" / PACKAGE
+    launched = launch(package_dir / "launch" / "arm.launch.py", {PACKAGE: package_dir}, {"use_mock_hardware": "true"})
+    d, _ = parse_ros2_control(node(launched, "robot_state_publisher")[0].parameters[0]["robot_description"])
+    assert [float(j["initial_values"]["position"]) for j in d.joints] == [0.0, 0.0, 0.2]
+
+
+def test_check_notices_a_stale_launch_file_and_description_and_regions_survive(tmp_path):
+    project = copy_project(tmp_path, generated=True)
+    launch_file = project / "generated" / PACKAGE / "launch" / "g1.launch.py"
+    description = project / "generated" / PACKAGE / "description" / "g1.urdf.xacro"
+    for path in (launch_file, description):
+        clean = path.read_text()
+        path.write_text(clean.replace("use_mock_hardware", "use_fake_hardware", 1))
+        result = run_cli("check", "--project", project)
+        assert result.code == 1 and "g1" in result.out + result.err, result.out
+        path.write_text(clean)
+    assert run_cli("check", "--project", project).code == 0
+    # a node of the user's in the launch file's region survives a regeneration that changes the file
+    text = launch_file.read_text().replace(
+        "    # rhi-gen:begin-user-region entities\n",
+        "    # rhi-gen:begin-user-region entities\n"
+        "    entities.append(Node(package='rviz2', executable='rviz2', output='screen'))\n").replace(
+        "# rhi-gen:begin-user-region imports\n",
+        "# rhi-gen:begin-user-region imports\nfrom launch_ros.actions import Node\n")
+    launch_file.write_text(text)
+    yml = project / "robots/unitree/g1.yaml"
+    yml.write_text(yml.read_text().replace("network_interface: eth0", "network_interface: eth1"))
+    assert run_cli("generate", "--project", project).code == 0
+    regenerated = launch_file.read_text()
+    assert "'eth1'" in regenerated and "executable='rviz2'" in regenerated
+    package_dir = project / "generated" / PACKAGE
+    launched = launch(launch_file, {PACKAGE: package_dir})
+    assert [n.executable for n in launched.nodes][-1] == "rviz2"
+    assert run_cli("check", "--project", project).code == 0
+
+
+def test_a_unitree_only_package_depends_on_no_vendor_message_package(tmp_path):
+    project = copy_project(tmp_path)
+    for yml in (project / "robots").glob("*/*.yaml"):
+        if yml.parent.name != "unitree":
+            yml.unlink()
+    assert run_cli("generate", "--project", project).code == 0
+    from lxml import etree
+
+    root = etree.parse(str(project / "generated" / PACKAGE / "package.xml")).getroot()
+    depends = {e.text for e in root if e.tag in ("depend", "build_depend", "exec_depend")}
+    assert not depends & {"aimdk_msgs", "interface_protocol", "unitree_sdk2"}
+    assert {"xacro", "robot_state_publisher", "controller_manager", "ros2launch", "launch_ros",
+            "joint_state_broadcaster", "imu_sensor_broadcaster", "forward_command_controller"} <= depends

@@ -17,6 +17,9 @@ from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
 from launch_ros.substitutions import FindPackageShare
 
+# rhi-gen:begin-user-region imports
+# rhi-gen:end-user-region imports
+
 ROBOT = 'x2'
 ARGUMENTS = [
     ('use_mock_hardware', 'false',
@@ -44,10 +47,14 @@ ARGUMENTS = [
 
 def generate_launch_description():
     bringup = PathJoinSubstitution([FindPackageShare('robot_hardware_interface'), 'launch', 'bringup.launch.py'])
-    return LaunchDescription([
+    entities = [
         *(DeclareLaunchArgument(name, default_value=default, description=text)
           for name, default, text in ARGUMENTS),
         IncludeLaunchDescription(
             PythonLaunchDescriptionSource(bringup),
             launch_arguments=[('robot', ROBOT), *((name, LaunchConfiguration(name)) for name, _, _ in ARGUMENTS)]),
-    ])
+    ]
+    # Your own arguments and nodes (RViz, a teleop node, ...): entities.append(...) here.
+    # rhi-gen:begin-user-region entities
+    # rhi-gen:end-user-region entities
+    return LaunchDescription(entities)

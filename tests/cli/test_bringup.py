@@ -112,16 +112,20 @@ def node(launched: Launched, executable: str) -> list[StartedNode]:
     return [n for n in launched.nodes if n.executable == executable]
 
 
-def spawned(spawners: list[StartedNode]) -> tuple[list[str], list[str]]:
-    """(activated, loaded inactive) controller names of the spawners."""
+def spawned(spawners: list[StartedNode], controllers_file: Path | None = None) -> tuple[list[str], list[str]]:
+    """(activated, loaded inactive) controller names of the spawners (parsed as the spawner's argparse
+    does: names, then the flags); each passes the controllers file and the controller manager."""
     active: list[str] = []
     inactive: list[str] = []
     for s in spawners:
         assert s.package == "controller_manager"
         args = s.arguments
+        assert args[-4:-2] == ["--param-file", str(controllers_file or args[-3])], args
         assert args[-2:] == ["--controller-manager", "/controller_manager"], args
-        names = [a for a in args[:-2] if not a.startswith("--")]
-        (inactive if "--inactive" in args else active).extend(names)
+        flags = args[:-4]
+        names = [a for a in flags if not a.startswith("--")]
+        assert flags == [*names, *(["--inactive"] if "--inactive" in flags else [])], args
+        (inactive if "--inactive" in flags else active).extend(names)
     return active, inactive
 
 
@@ -131,7 +135,7 @@ def check_controllers(launched: Launched, description, controllers_file: Path, m
     data = yaml.safe_load(controllers_file.read_text())
     manager = data["controller_manager"]["ros__parameters"]
     declared = {name for name, value in manager.items() if isinstance(value, dict) and "type" in value}
-    active, inactive = spawned(node(launched, "spawner"))
+    active, inactive = spawned(node(launched, "spawner"), controllers_file)
     assert sorted(active + inactive) == sorted(declared), "every controller of the YAML is spawned once"
     commands, states = exported(description)
     for name in active + inactive:
@@ -199,7 +203,7 @@ def test_launch_arguments_choose_controllers_files_and_parameters(package, tmp_p
                    active_controllers="joint_state_broadcaster", inactive_controllers="",
                    description_file=str(urdf), controllers_file=str(controllers))
     spawners = node(launched, "spawner")
-    assert spawned(spawners) == (["joint_state_broadcaster"], [])
+    assert spawned(spawners, controllers) == (["joint_state_broadcaster"], [])
     assert node(launched, "ros2_control_node")[0].parameters == [str(controllers)]
     (rsp,) = node(launched, "robot_state_publisher")
     d, _ = parse_ros2_control(rsp.parameters[0]["robot_description"])

@@ -62,12 +62,15 @@ def bringup(context):
              parameters=[controllers_file],
              remappings=[('~/robot_description', '/robot_description')]),
     ]
+    # The controllers' parameters reach them through the controller manager's parameter file and,
+    # as ros2_control_demos do from Jazzy on, the spawner's --param-file.
     for argument, extra in (('active_controllers', []), ('inactive_controllers', ['--inactive'])):
         names = value[argument].split()
         if names:
             nodes.append(Node(
                 package='controller_manager', executable='spawner', output='screen',
-                arguments=[*names, *extra, '--controller-manager', '/controller_manager']))
+                arguments=[*names, *extra, '--param-file', controllers_file,
+                           '--controller-manager', '/controller_manager']))
     return nodes
 
 

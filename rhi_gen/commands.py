@@ -70,7 +70,7 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
         package_path: Sequence[str] | None, force: bool, class_prefix: str | None,
         transport_option: Sequence[str] | None, project: Path | None) -> int:
     """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
-    from .pipeline.new_robot import plan_new_robot
+    from .pipeline.new_robot import bringup_commands, plan_new_robot
     from .write.transaction import apply
 
     proj = _project(project)
@@ -90,6 +90,10 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
     counts = _print_changes([c for c in plan.changes if c.path not in inputs], verbose=False)
     _out(_summary(counts))
     _out(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
+    mock, real = bringup_commands(m.robot)
+    _out("then build the package in a ROS 2 workspace (README: Try it without the robot) and bring it up:")
+    _out(f"  without the robot: {mock}")
+    _out(f"  on the robot:      {real}")
     _warn(plan.warnings)
     return 0
 

@@ -15,7 +15,7 @@ from ..errors import ConfigError, UrdfError
 from ..model.config import VendorConfig
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
 from ..model.robot import InputProvenance, MotorJoint, RobotModel
-from ..model.urdf import UrdfJoint, UrdfRobot
+from ..model.urdf import UrdfJoint, UrdfRobot, limits_problem, safe_position
 
 
 def sha256_hex(data: bytes) -> str:
@@ -91,6 +91,12 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
             raise err(f"default_gains.{name}.stiffness", f"joint {name!r} is velocity-commanded, so it takes no "
                       "stiffness", "remove stiffness (a velocity-commanded joint uses damping only), or set "
                       f"command_modes.{name}: position")
+    initial = dict(config.initial_positions)
+    for name, value in config.initial_positions:
+        joint = by_name[name]
+        if (problem := limits_problem(joint.type, joint.limits, value)):
+            raise err(f"initial_positions.{name}", f"joint {name!r}: {problem} ({urdf_shown} line {joint.line})",
+                      f"use a position inside the limits, e.g. {safe_position(joint.type, joint.limits):g}")
     joints = []
     for joint in actuated:
         if joint.name not in mapped:
@@ -103,7 +109,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  group=group, group_position=position, command_mode=mode,
                                  command_interfaces=transport.command_interfaces(mode),
                                  default_stiffness=stiffness if mode == "position" else 0.0,
-                                 default_damping=damping))
+                                 default_damping=damping,
+                                 initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits))))
 
     imu = config.imu
     if imu.enabled:
@@ -133,6 +140,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         mimic_joints=tuple(j.name for j in urdf.mimic_joints),
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
         provenance=provenance, urdf_name=urdf.name,
+        urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"),
     )
 
 

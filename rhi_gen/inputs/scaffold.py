@@ -14,6 +14,7 @@ from .. import transports
 from ..errors import ConfigError, UrdfError
 from ..model import MAX_MOTORS, UrdfJoint, UrdfRobot
 from ..model.naming import joint_name_problem
+from ..model.urdf import safe_position
 from ..transports import KnownRobot
 from ..typed_yaml.yaml_source import yaml_string
 
@@ -112,7 +113,23 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
     lines.append("unmapped_joints: []")
     if chosen.carries_gains:
         lines += _default_gains_lines(vendor, robot, known, order)
+    lines += ["# Where the joints start in the description (mock hardware starts there; the launch file's",
+              "# joint states show it until the robot reports). Suggested: zero, clamped into the URDF limits.",
+              "initial_positions:"]
+    lines += [f"  {yaml_string(name)}: {_yaml_float(safe_position(by_name[name].type, by_name[name].limits))}"
+              for name in order]
     return "\n".join(lines) + "\n"
+
+
+def _yaml_float(value: float) -> str:
+    """A float YAML 1.1 reads back as a float: 1e-05 would be a string, 1.0e-05 is not."""
+    text = repr(value)
+    mantissa, _, exponent = text.partition("e")
+    if not exponent:
+        return text
+    if "." not in mantissa:
+        mantissa += ".0"
+    return f"{mantissa}e{exponent if exponent[0] in '+-' else '+' + exponent}"
 
 
 def _with_given(suggested: list[str], given: Mapping[str, str]) -> list[str]:

@@ -21,7 +21,7 @@ from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, re
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
-            "unmapped_joints", "default_gains", "command_modes")
+            "unmapped_joints", "default_gains", "command_modes", "initial_positions")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
                   "state_decimation", "state_timeout_ms")
@@ -138,13 +138,14 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     mapped = dict(joint_map)
     default_gains = _default_gains(v, data.get("default_gains"), mapped) if "default_gains" in data else ()
     command_modes = _command_modes(v, data.get("command_modes"), mapped) if "command_modes" in data else ()
+    initial = _initial_positions(v, data.get("initial_positions"), mapped) if "initial_positions" in data else ()
 
     return VendorConfig(
         source=shown, vendor=vendor, robot=robot, urdf=str(urdf_path), urdf_relative=urdf_rel,
         transport=transport.name, motor_count=motor_count, float_type=float_type, joint_map=joint_map,
         unmapped_joints=unmapped, imu=imu, transport_options=options, parameters=params,
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
-        default_gains=default_gains, command_modes=command_modes,
+        default_gains=default_gains, command_modes=command_modes, initial_positions=initial,
         content_sha256=content_sha256(data), key_lines=dict(lines),
     )
 
@@ -188,6 +189,21 @@ def _command_modes(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tupl
     path = "command_modes"
     entries = _joint_entries(v, raw, path, mapped, "{wheel_joint: velocity}")
     return tuple((name, v.choice(item, f"{path}.{name}", COMMAND_MODES)) for name, item in entries.items())
+
+
+def _initial_positions(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[str, float], ...]:
+    """initial_positions: {joint: rad (m for a prismatic joint)}, finite; URDF limits are checked in assemble."""
+    path = "initial_positions"
+    entries = _joint_entries(v, raw, path, mapped, "{knee_joint: 0.3}")
+    out = []
+    for name, item in entries.items():
+        q = f"{path}.{name}"
+        value = v.scalar(item, q)
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            raise v.error(q, f"must be a finite number, got {getattr(item, 'raw', value)!r}",
+                          fix="write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")
+        out.append((name, float(value)))
+    return tuple(out)
 
 
 def _joint_map(v: Validator, raw: Any, motor_count: int) -> tuple[tuple[str, int], ...]:

@@ -77,6 +77,9 @@ class VendorConfig:
     default_gains: tuple[tuple[str, float, float], ...] = ()
     # joint -> "position" | "velocity" (YAML command_modes); continuous joints default to velocity
     command_modes: tuple[tuple[str, str], ...] = ()
+    # joint -> rad (or m) the description starts the joint at (YAML initial_positions); checked against
+    # the URDF limits in assemble/robot_model.py
+    initial_positions: tuple[tuple[str, float], ...] = ()
     # sha256 of the parsed YAML content (typed_yaml/yaml_source.content_sha256): comments and layout do not count
     content_sha256: str = ""
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

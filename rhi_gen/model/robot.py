@@ -24,6 +24,7 @@ class MotorJoint:
     command_interfaces: tuple[str, ...] = ("position", "velocity", "stiffness", "damping", "effort")
     default_stiffness: float = 0.0     # applied while no controller claims stiffness
     default_damping: float = 0.0       # applied while no controller claims damping
+    initial_position: float = 0.0      # the description's initial_value (YAML initial_positions, or safe_pose)
 
 
 @dataclass(frozen=True)
@@ -55,6 +56,7 @@ class RobotModel:
     transport_options: TransportOptions
     provenance: InputProvenance
     urdf_name: str = ""
+    urdf_xml: str = ""        # the expanded URDF (no xacro banner, no machine paths): urdf/<robot>.urdf
 
     @property
     def cpp_namespace(self) -> str:

@@ -17,6 +17,29 @@ class JointLimits:
     effort: float | None = None
 
 
+def safe_position(joint_type: str, limits: JointLimits | None) -> float:
+    """The pose a joint starts from when the vendor YAML names none: zero, clamped into the URDF limits
+    of a revolute or prismatic joint (a continuous joint has none)."""
+    if joint_type not in ("revolute", "prismatic") or limits is None:
+        return 0.0
+    value = 0.0
+    if limits.lower is not None:
+        value = max(value, limits.lower)
+    if limits.upper is not None:
+        value = min(value, limits.upper)
+    return value
+
+
+def limits_problem(joint_type: str, limits: JointLimits | None, value: float) -> str | None:
+    """Why ``value`` cannot be the position of a joint with these URDF limits, or None."""
+    if joint_type not in ("revolute", "prismatic") or limits is None:
+        return None
+    if (limits.lower is not None and value < limits.lower) or (limits.upper is not None and value > limits.upper):
+        return f"{value:g} is outside the URDF limits [{limits.lower:g}, {limits.upper:g}]" \
+            if limits.lower is not None and limits.upper is not None else f"{value:g} is outside the URDF limits"
+    return None
+
+
 @dataclass(frozen=True)
 class Mimic:
     joint: str

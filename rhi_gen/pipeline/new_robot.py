@@ -30,6 +30,12 @@ class NewRobotPlan:
     copy: DescriptionCopy | None = None      # the description lay (or read files) outside the project
 
 
+def bringup_commands(robot: str) -> tuple[str, str]:
+    """The two commands that start the robot once the package is built: mock hardware, then the robot."""
+    launch = f"ros2 launch {PACKAGE_NAME} {robot}.launch.py"
+    return f"{launch} use_mock_hardware:=true", launch
+
+
 def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:
     """The new robot clashes with one already in the project: in the words of `rhi-gen new`."""
     m = clash.robot.model

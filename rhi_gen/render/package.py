@@ -15,6 +15,7 @@ from .. import transports
 from ..errors import GenerationError
 from ..model import PackageInfo, RobotModel
 from .banner import SHARED_INPUTS, banner_for, package_inputs, robot_inputs
+from .bringup_views import description_view, launch_view, urdf_view
 from .cpp_layout import fold_cpp
 from .environment import make_environment
 from .static_files import copy_static
@@ -37,6 +38,7 @@ PACKAGE_FILES = (
     ("templates/package/CMakeLists.txt.j2", "CMakeLists.txt"),
     ("templates/package/package.xml.j2", "package.xml"),
     ("templates/package/robot_hardware_interface.xml.j2", "robot_hardware_interface.xml"),
+    ("templates/package/bringup.launch.py.j2", "launch/bringup.launch.py"),
 )
 ROBOT_FILES = (
     ("templates/robot/driver.hpp.j2", "include/robot_hardware_interface/{vendor}/{robot}.hpp"),
@@ -44,6 +46,9 @@ ROBOT_FILES = (
     ("templates/robot/ros2_control.xacro.j2", "description/{robot}.ros2_control.xacro"),
     ("templates/robot/controllers.yaml.j2", "config/{robot}_controllers.yaml"),
     ("templates/robot/test.cpp.j2", "test/test_{robot}_hardware_interface.cpp"),
+    ("templates/robot/description.urdf.xacro.j2", "description/{robot}.urdf.xacro"),
+    ("templates/robot/urdf.j2", "urdf/{robot}.urdf"),
+    ("templates/robot/launch.py.j2", "launch/{robot}.launch.py"),
 )
 
 
@@ -51,6 +56,9 @@ ROBOT_FILES = (
 ROBOT_VIEWS: dict[str, Callable[[RobotModel], object]] = {
     "templates/robot/controllers.yaml.j2": controllers_view,
     "templates/robot/ros2_control.xacro.j2": xacro_view,
+    "templates/robot/description.urdf.xacro.j2": description_view,
+    "templates/robot/urdf.j2": urdf_view,
+    "templates/robot/launch.py.j2": launch_view,
 }
 
 

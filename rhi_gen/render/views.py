@@ -23,6 +23,12 @@ from ..transports import COMMON_DEPENDENCIES, PLAIN_CMAKE, VENDOR_SOURCE, Depend
 
 # ---------------------------------------------------------------- package files
 
+# The ros2_control macro's parameters a launch file passes to xacro (templates/robot/ros2_control.xacro.j2):
+# the mock switch, then the driver's parameters, the same for every transport.
+DESCRIPTION_ARGUMENTS = ("use_mock_hardware", "network_interface", "enable_monitor", "command_writer_period_us",
+                         "state_decimation", "state_timeout_ms")
+
+
 @dataclass(frozen=True)
 class PlainCheck:
     """One plain-CMake dependency in rhi_check_dependencies: found when its target variable is set."""
@@ -53,6 +59,7 @@ class PackageView:
     plain_notes: tuple[str, ...]         # package.xml: why each plain package is not declared
     description: str                     # package.xml <description>: the plugins, or "no robots yet"
     imu: bool                            # some robot exports an IMU (imu_sensor_broadcaster)
+    description_arguments: tuple[str, ...] = DESCRIPTION_ARGUMENTS  # launch/bringup.launch.py -> xacro
 
 
 def _unique(items: Sequence[Dependency]) -> list[Dependency]:
@@ -172,6 +179,7 @@ class XacroJoint:
     name: str                                   # xacro_text of the joint name
     comment: str                                # "SDK slot 3, group leg[3], velocity-commanded"
     command_interfaces: tuple[CommandInterface, ...]
+    initial_position: str = "0.0"               # the position state interface's initial_value
 
 
 @dataclass(frozen=True)
@@ -183,6 +191,33 @@ class XacroView:
     joint_count: int
     imu_name: str
     imu_frame_id: str
+    mock_parameters: tuple[tuple[str, str], ...] = ()  # mock_components/GenericSystem hardware parameters
+    mock_note: str = ""                                 # what the mock does with commands, for the header
+    imu_initial: tuple[tuple[str, str], ...] = ()       # IMU state interface -> initial_value
+
+
+IMU_INTERFACES = ("orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
+                  "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
+                  "linear_acceleration.z")
+
+
+def mock_parameters(robot: RobotModel) -> tuple[tuple[str, str], ...]:
+    """The GenericSystem parameters that make the mock behave like the robot for the controllers of
+    config/<robot>_controllers.yaml: calculate_dynamics only where a velocity command must move the
+    position (wheels; with it GenericSystem refuses a controller that claims a joint's stiffness or
+    damping without its position or velocity); mock_sensor_commands so a test can drive the IMU."""
+    wheels = any(j.command_mode == "velocity" for j in robot.joints)
+    params = [("calculate_dynamics", "true" if wheels else "false")]
+    if robot.imu.enabled:
+        params.append(("mock_sensor_commands", "true"))
+    return tuple(params)
+
+
+def _mock_note(robot: RobotModel) -> str:
+    if any(j.command_mode == "velocity" for j in robot.joints):
+        return ("velocity commands move the positions (calculate_dynamics), position commands are\n"
+                "  followed at once.")
+    return "position commands are followed at once (no dynamics)."
 
 
 def _interfaces(joint: MotorJoint) -> tuple[CommandInterface, ...]:
@@ -210,8 +245,12 @@ def xacro_view(robot: RobotModel) -> XacroView:
         macro_name=f"{robot.robot}_ros2_control",
         defaults={key: xacro_default(value) for key, value in defaults},
         plugin=xacro_text(robot.plugin_name),
-        joints=tuple(XacroJoint(xacro_text(j.name), _comment(j), _interfaces(j)) for j in robot.joints),
+        joints=tuple(XacroJoint(xacro_text(j.name), _comment(j), _interfaces(j), repr(j.initial_position))
+                     for j in robot.joints),
         joint_count=len(robot.joints),
         imu_name=xacro_text(robot.imu.name),
         imu_frame_id=xacro_text(robot.imu.frame_id),
+        mock_parameters=mock_parameters(robot),
+        mock_note=_mock_note(robot),
+        imu_initial=tuple((name, "1.0" if name == "orientation.w" else "0.0") for name in IMU_INTERFACES),
     )

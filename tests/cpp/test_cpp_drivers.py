@@ -31,7 +31,6 @@ import subprocess
 
 import pytest
 
-from rhi_gen.transports import TRANSPORTS
 from tests.support import vendor_msgs
 from tests.support.cpp_build import (
     PACKAGE,
@@ -40,15 +39,14 @@ from tests.support.cpp_build import (
     build_harness,
     expand_description,
     message_include_flags,
-    plugin_types,
     project_robot_labels,
     render_test_package,
     require_compiler,
     run_binary_retrying,
     run_parallel,
     standin_flags,
-    yaml_joint_map,
 )
+from tests.support.description_checks import check_ros2_control
 
 ROBOTS = project_robot_labels()
 SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes",
@@ -148,32 +146,8 @@ def test_driver_header_compiles_on_its_own(reference, label, tmp_path):
 @pytest.mark.parametrize("label", ROBOTS)
 def test_description_lists_exactly_the_mapped_joints(reference, label, tmp_path):
     b = _robot(reference, label)
-    joint_map = yaml_joint_map(b.loaded.yaml_path)
     d = expand_description(reference.package_dir, b.model.robot, tmp_path)
-    names = [j["name"] for j in d.joints]
-    assert len(names) == len(set(names)), f"a joint is described twice: {names}"
-    assert set(names) == set(joint_map), \
-        f"description joints must be exactly the YAML's mapped joints: {sorted(set(names) ^ set(joint_map))}"
-    gains = ["stiffness", "damping"] if TRANSPORTS[b.model.transport].carries_gains else []
-    modes = {j.name: j.command_mode for j in b.model.joints}
-    for j in d.joints:
-        expected = (["position", "velocity", *gains, "effort"] if modes[j["name"]] == "position"
-                    else ["velocity", *gains[1:], "effort"])  # a velocity joint: no position, no stiffness
-        assert [c for c, _ in j["command_interfaces"]] == expected, j["name"]
-        assert j["state_interfaces"] == ["position", "velocity", "effort"], j["name"]
-    if b.model.imu.enabled:
-        assert [s["name"] for s in d.sensors] == [b.model.imu.name]
-        assert d.sensors[0]["state_interfaces"] == [
-            "orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
-            "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
-            "linear_acceleration.z"]
-    assert d.plugin == b.model.plugin_name
-    assert plugin_types(reference.package_dir).get(d.plugin) == \
-        f"robot_hardware_interface::{b.model.vendor}::{b.model.class_name}"
-    params = b.model.parameters
-    assert d.parameters["command_writer_period_us"] == str(params.command_writer_period_us)
-    assert d.parameters["state_decimation"] == str(params.state_decimation)
-    assert d.parameters["enable_monitor"] == ("true" if params.enable_monitor else "false")
+    check_ros2_control(d, b.model, b.loaded.yaml_path, reference.package_dir)
 
 
 # ------------------------------------------------------------------------------------ compile

@@ -170,3 +170,34 @@ def test_existing_ros2_control_mimic_joint_takes_no_commands(tmp_path):
         model_for(tmp_path, _urdf_with_tag(tmp_path, "j2"), "joint_map:\n  j1: 0\n", motor_count=1)
     m = model_for(tmp_path, _urdf_with_tag(tmp_path, "j2", command=False), "joint_map:\n  j1: 0\n", motor_count=1)
     assert m.mimic_joints == ("j2",)
+
+
+# ---------------------------------------------------------------- initial_positions
+def test_initial_positions_default_to_zero_clamped_into_the_limits(tmp_path):
+    urdf = tmp_path / "arm.urdf"
+    urdf.write_text((FIXTURES / "simple_arm.urdf").read_text().replace('lower="-2.5" upper="2.5"',
+                                                                       'lower="0.2" upper="2.5"'))
+    m = model_for(tmp_path, urdf, ARM_MAP)
+    assert [(j.name, j.initial_position) for j in m.joints] == [("shoulder_pan", 0.0), ("shoulder_lift", 0.0),
+                                                                ("elbow", 0.2)]
+    m = model_for(tmp_path, urdf, ARM_MAP + "initial_positions: {elbow: 1.25, shoulder_pan: -3}\n")
+    assert [j.initial_position for j in m.joints] == [-3.0, 0.0, 1.25]
+
+
+@pytest.mark.parametrize(("body", "key", "message", "fix"), [
+    ("initial_positions: {elbow: 2.6}\n", "initial_positions.elbow",
+     "'elbow': 2.6 is outside the URDF limits [-2.5, 2.5]", "inside the limits, e.g. 0"),
+    ("initial_positions: {elbw: 0.0}\n", "initial_positions.elbw", "'elbw' is not a joint of joint_map",
+     "did you mean 'elbow'?"),
+    ("initial_positions: {elbow: .nan}\n", "initial_positions.elbow", "must be a finite number", "e.g. 0.0"),
+    ("initial_positions: {elbow: .inf}\n", "initial_positions.elbow", "must be a finite number", "in rad"),
+    ("initial_positions: {elbow: up}\n", "initial_positions.elbow", "must be a finite number, got 'up'", "in rad"),
+    ("initial_positions: [0.0]\n", "initial_positions", "must be a mapping", "{knee_joint: 0.3}"),
+])
+def test_bad_initial_positions_are_one_line_with_the_yaml_line_and_a_fix(tmp_path, body, key, message, fix):
+    with pytest.raises(ConfigError) as info:
+        model_for(tmp_path, FIXTURES / "simple_arm.urdf", ARM_MAP + body)
+    err = info.value
+    assert err.key == key and err.line == 10, (err.key, err.line)  # line 10: initial_positions
+    assert message in err.message and fix in (err.fix or ""), str(err)
+    assert "\n" not in str(err)

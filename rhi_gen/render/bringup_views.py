@@ -1,0 +1,105 @@
+"""View-models of a robot's bring-up files: the complete description, the installed URDF and the launch file.
+
+- ``description_view``: description/<robot>.urdf.xacro (the robot's URDF + the generated ros2_control
+  macro; every macro parameter a xacro argument).
+- ``urdf_view``: urdf/<robot>.urdf (the robot's expanded URDF, installed with the package so the
+  description and the launch file need nothing outside it).
+- ``launch_view``: launch/<robot>.launch.py (its arguments and which controllers start active).
+
+Text is prepared here and escaped by the filters / autoescape, as in render/views.py.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..model import RobotModel
+from .views import DESCRIPTION_ARGUMENTS, controllers_view, xacro_text
+
+ARGUMENT_HELP = {
+    "use_mock_hardware": "true: ros2_control's mock_components/GenericSystem instead of the robot (no hardware "
+                         "needed)",
+    "network_interface": "network interface of the robot (driver parameter network_interface)",
+    "enable_monitor": "true: the driver logs latency and rates (driver parameter enable_monitor)",
+    "command_writer_period_us": "period of the command writer in microseconds",
+    "state_decimation": "process every n-th state message",
+    "state_timeout_ms": "milliseconds without state before the driver holds the joints",
+    "description_file": "the robot's URDF the description includes ('': urdf/<robot>.urdf of the package)",
+    "controllers_file": "controller manager parameters and controllers ('': config/<robot>_controllers.yaml)",
+    "active_controllers": "controllers to activate (names in the controllers file, space-separated)",
+    "inactive_controllers": "controllers to load without activating them (space-separated)",
+}
+
+
+def argument_defaults(robot: RobotModel) -> tuple[tuple[str, str], ...]:
+    """(argument, default) of the description: use_mock_hardware, then the transport parameters."""
+    p = robot.parameters
+    values = {"network_interface": p.network_interface, "enable_monitor": "true" if p.enable_monitor else "false",
+              "command_writer_period_us": str(p.command_writer_period_us),
+              "state_decimation": str(p.state_decimation), "state_timeout_ms": str(p.state_timeout_ms)}
+    return (("use_mock_hardware", "false"), *((name, values[name]) for name in DESCRIPTION_ARGUMENTS[1:]))
+
+
+@dataclass(frozen=True)
+class DescriptionView:
+    robot_name: str                          # the URDF's <robot name>, xacro_text
+    macro_name: str
+    macro_file: str                          # <robot>.ros2_control.xacro, beside the description
+    urdf_file: str                           # <robot>.urdf, in ../urdf/
+    arguments: tuple[tuple[str, str], ...]   # xacro:arg name -> default (xacro_text)
+
+
+def description_view(robot: RobotModel) -> DescriptionView:
+    return DescriptionView(
+        robot_name=xacro_text(robot.urdf_name or robot.robot), macro_name=f"{robot.robot}_ros2_control",
+        macro_file=f"{robot.robot}.ros2_control.xacro", urdf_file=f"{robot.robot}.urdf",
+        arguments=tuple((name, xacro_text(value)) for name, value in argument_defaults(robot)))
+
+
+@dataclass(frozen=True)
+class UrdfView:
+    prolog: str   # the XML declaration line(s) before the banner, "" when the URDF has none
+    body: str     # the rest of the expanded URDF, byte for byte
+
+
+def urdf_view(robot: RobotModel) -> UrdfView:
+    """The expanded URDF split after its XML declaration, so the banner comment can follow it."""
+    text = robot.urdf_xml.lstrip("\ufeff")
+    if text.startswith("<?xml"):
+        end = text.index("?>") + 2
+        return UrdfView(prolog=text[:end] + "\n", body=text[end:].lstrip("\n"))
+    return UrdfView(prolog="", body=text)
+
+
+@dataclass(frozen=True)
+class LaunchArgument:
+    name: str          # a Python string literal
+    default: str       # a Python string literal
+    description: str   # a Python string literal
+
+
+@dataclass(frozen=True)
+class LaunchView:
+    robot: str                               # Python string literal of the robot name
+    arguments: tuple[LaunchArgument, ...]    # declared, in order, and passed to launch/bringup.launch.py
+    active: tuple[str, ...]                  # controllers activated by default
+    inactive: tuple[str, ...]                # the others, loaded inactive
+
+
+def start_controllers(robot: RobotModel) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(active, inactive) controllers of config/<robot>_controllers.yaml: the joint state broadcaster, the
+    IMU broadcaster and the position controller (the velocity controller when no joint is position-
+    commanded) start active; the other forward controllers are loaded inactive."""
+    forward = [c.name for c in controllers_view(robot).controllers]
+    main = "forward_position_controller" if "forward_position_controller" in forward else forward[0]
+    active = ("joint_state_broadcaster", *(("imu_sensor_broadcaster",) if robot.imu.enabled else ()), main)
+    return active, tuple(name for name in forward if name != main)
+
+
+def launch_view(robot: RobotModel) -> LaunchView:
+    active, inactive = start_controllers(robot)
+    defaults = (*argument_defaults(robot), ("description_file", ""), ("controllers_file", ""),
+                ("active_controllers", " ".join(active)), ("inactive_controllers", " ".join(inactive)))
+    return LaunchView(
+        robot=repr(robot.robot),
+        arguments=tuple(LaunchArgument(repr(name), repr(value), repr(ARGUMENT_HELP[name])) for name, value in defaults),
+        active=active, inactive=inactive)

@@ -1,0 +1,65 @@
+"""The view-models of render/bringup_views.py and the mock hardware part of render/views.py."""
+from __future__ import annotations
+
+import ast
+from dataclasses import replace
+
+from rhi_gen import transports
+from rhi_gen.model import ImuConfig, JointLimits, MotorJoint, RobotModel
+from rhi_gen.render.bringup_views import description_view, launch_view, start_controllers, urdf_view
+from rhi_gen.render.views import mock_parameters, xacro_view
+from tests.support.models import robot_model as _robot
+
+
+def _position_only(robot: RobotModel) -> RobotModel:
+    t = transports.get(robot.transport)
+    return replace(robot, joints=(MotorJoint("knee", 0, "revolute", JointLimits(0.2, 1.5), initial_position=0.2,
+                                             command_interfaces=t.command_interfaces("position")),))
+
+
+def test_mock_hardware_computes_dynamics_only_for_wheels_and_mocks_the_imu():
+    wheeled = _robot("unitree_dds")
+    assert mock_parameters(wheeled) == (("calculate_dynamics", "true"), ("mock_sensor_commands", "true"))
+    legged = _position_only(wheeled)
+    assert mock_parameters(legged) == (("calculate_dynamics", "false"), ("mock_sensor_commands", "true"))
+    assert mock_parameters(replace(legged, imu=ImuConfig(enabled=False))) == (("calculate_dynamics", "false"),)
+
+
+def test_xacro_view_gives_initial_values():
+    view = xacro_view(_position_only(_robot("unitree_dds")))
+    assert [j.initial_position for j in view.joints] == ["0.2"]
+    assert dict(view.imu_initial) == {"orientation.x": "0.0", "orientation.y": "0.0", "orientation.z": "0.0",
+                                      "orientation.w": "1.0", "angular_velocity.x": "0.0",
+                                      "angular_velocity.y": "0.0", "angular_velocity.z": "0.0",
+                                      "linear_acceleration.x": "0.0", "linear_acceleration.y": "0.0",
+                                      "linear_acceleration.z": "0.0"}
+
+
+def test_start_controllers_activates_the_position_controller_or_else_the_velocity_one():
+    wheeled = _robot("unitree_dds")
+    assert start_controllers(wheeled) == (
+        ("joint_state_broadcaster", "imu_sensor_broadcaster", "forward_position_controller"),
+        ("forward_velocity_controller", "forward_stiffness_controller", "forward_damping_controller"))
+    wheels_only = replace(wheeled, joints=wheeled.joints[1:], imu=ImuConfig(enabled=False))
+    assert start_controllers(wheels_only) == (("joint_state_broadcaster", "forward_velocity_controller"),
+                                              ("forward_damping_controller",))
+    assert start_controllers(_robot("generic_topics"))[1] == ("forward_velocity_controller",)  # no gains
+
+
+def test_urdf_view_puts_the_banner_after_the_xml_declaration():
+    robot = _robot("generic_topics")
+    view = urdf_view(replace(robot, urdf_xml='<?xml version="1.0" encoding="utf-8"?>\n\n<robot name="a"/>\n'))
+    assert (view.prolog, view.body) == ('<?xml version="1.0" encoding="utf-8"?>\n', '<robot name="a"/>\n')
+    view = urdf_view(replace(robot, urdf_xml='\ufeff<robot name="a"/>\n'))
+    assert (view.prolog, view.body) == ("", '<robot name="a"/>\n')
+
+
+def test_description_and_launch_views_keep_text_away_from_xacro_and_python():
+    robot = replace(_robot("generic_topics"), urdf_name="my$robot", robot="arm")
+    assert description_view(robot).robot_name == 'my${"\\x24"}robot'
+    view = launch_view(robot)
+    for argument in view.arguments:  # every field is a Python string literal
+        assert isinstance(ast.literal_eval(argument.name), str)
+        assert isinstance(ast.literal_eval(argument.default), str)
+        assert isinstance(ast.literal_eval(argument.description), str)
+    assert ast.literal_eval(view.robot) == "arm"

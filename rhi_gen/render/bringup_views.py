@@ -10,6 +10,7 @@ Text is prepared here and escaped by the filters / autoescape, as in render/view
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from ..model import RobotModel
@@ -61,13 +62,23 @@ class UrdfView:
     body: str     # the rest of the expanded URDF, byte for byte
 
 
+_XACRO_SUBSTITUTION = re.compile(r"\$+(?=[{(])")
+
+
+def xacro_literal(text: str) -> str:
+    """``text`` as xacro reads it back unchanged: description/<robot>.urdf.xacro includes the URDF, so
+    xacro would evaluate a ``${...}`` or ``$(...)`` in it; one more ``$`` before each makes it literal."""
+    return _XACRO_SUBSTITUTION.sub(lambda m: "$" + m.group(0), text)
+
+
 def urdf_view(robot: RobotModel) -> UrdfView:
-    """The expanded URDF split after its XML declaration, so the banner comment can follow it."""
+    """The expanded URDF split after its XML declaration, so the banner comment can follow it; xacro
+    substitutions escaped, since the description includes it through xacro."""
     text = robot.urdf_xml.lstrip("\ufeff")
     if text.startswith("<?xml"):
         end = text.index("?>") + 2
-        return UrdfView(prolog=text[:end] + "\n", body=text[end:].lstrip("\n"))
-    return UrdfView(prolog="", body=text)
+        return UrdfView(prolog=text[:end] + "\n", body=xacro_literal(text[end:].lstrip("\n")))
+    return UrdfView(prolog="", body=xacro_literal(text))
 
 
 @dataclass(frozen=True)

@@ -63,3 +63,19 @@ def test_description_and_launch_views_keep_text_away_from_xacro_and_python():
         assert isinstance(ast.literal_eval(argument.default), str)
         assert isinstance(ast.literal_eval(argument.description), str)
     assert ast.literal_eval(view.robot) == "arm"
+
+
+def test_urdf_copy_reads_back_unchanged_through_xacro(tmp_path):
+    """The description includes the installed URDF through xacro: a ${...} or $(...) in the robot's own
+    text (a link named like a shell variable, a comment-like attribute) must come out as it went in."""
+    import xacro
+
+    names = ["plain", "cost$5", "a${b}", "c$(find d)", "e$${f}", "g${1+1}", "tail$"]
+    urdf = '<robot name="r">' + "".join(f'<link name="{n}"/>' for n in names) + "</robot>"
+    robot = replace(_robot("unitree_dds"), urdf_xml=urdf)
+    view = urdf_view(robot)
+    (tmp_path / "r.urdf").write_text(view.prolog + view.body)
+    (tmp_path / "d.xacro").write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                                      '<xacro:include filename="r.urdf"/></robot>')
+    doc = xacro.process_file(str(tmp_path / "d.xacro"))
+    assert [e.getAttribute("name") for e in doc.getElementsByTagName("link")] == names

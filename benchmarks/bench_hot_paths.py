@@ -14,11 +14,16 @@ code through the harness's fake robot (tests/cpp/harness/transport_<transport>.h
 * state       the state callback (one complete state frame delivered by the stand-in transport)
 * state_dec4  the same with state_decimation = 4 (average per delivered frame)
 * writer      one command writer cycle
-* readwrite   read() + write() of one controller cycle with a producer thread delivering state
+* readwrite_pos  read() + write() of one controller cycle with a producer thread delivering state, under
+                 a position-only claim (each joint's position, or velocity for a wheel: the common case)
+* readwrite_all  the same with every command interface claimed
 
 with monitoring on (enable_monitor = true), and, in the same binary, the floors over the same
 arrays: a memcpy, and the seed template's std::shared_mutex hand-off (the writer takes a unique
-lock and copies, the reader a shared lock and copies). Per path it prints the latency (median,
+lock and copies, the reader a shared lock and copies), and with framework-owned handles the handles'
+own locks alone (locks_pos / locks_all: a set_value() on every exported state handle and a
+get_optional() on every claimed command handle, the least read() + write() can do through upstream's
+API; "x locks" = readwrite instructions / that floor). Per path it prints the latency (median,
 p99, p99.9 in ns; steady_clock around each call, its own cost is shown as "clock") and the
 instructions per call counted by valgrind's callgrind on a mode of the binary that runs only that
 path N times (client requests around the loop; the empty loop's count is subtracted). Without
@@ -35,13 +40,14 @@ A robot whose vendor message definitions are not available here (AgiBot X2 witho
 AimDK messages are not carried in the repository, tests/support/vendor_msgs.py) is skipped with one line saying
 why and how to provide them; the others are measured.
 
---distro picks the ros2_control stand-ins the driver is compiled against (tests/cpp/standins; README
-"Benchmarks"). It changes only `readwrite`: with humble (hardware_interface 2.x) the exported interfaces
-point at the driver's own doubles, so read() + write() touch nothing else; with jazzy (4.x, 4.34+),
-kilted (5.x) and rolling (6.x, also Lyrical) the framework owns the handles, so read() ends by copying
-every state value into its handle and write() starts by fetching every command from its handle (each
-handle's lock taken without blocking), and readwrite includes that. `state`, `state_dec4` and `writer`
-are the transport side and the same code on every distro.
+--distro (repeatable; default humble, jazzy and rolling) picks the ros2_control stand-ins the driver is
+compiled against (tests/cpp/standins; README "Benchmarks"). It changes only read() + write(): with humble
+(hardware_interface 2.x) the exported interfaces point at the driver's own doubles, so read() + write()
+touch nothing else; with jazzy (4.x, 4.34+), kilted (5.x) and rolling (6.x, also Lyrical) the framework
+owns the handles, so read() ends by copying every state value into its handle and write() starts by
+fetching every claimed command from its handle (each handle's lock taken without blocking). `state`,
+`state_dec4` and `writer` are the transport side and the same code on every distro: they are measured on
+the first distro only; the others add their readwrite and locks rows.
 
 Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs (tests/support/cpp_build.py); RHI_UPSTREAM
 as for the tests (tests/support/vendor_msgs.py).
@@ -66,8 +72,12 @@ from tests.support import cpp_build, vendor_msgs  # noqa: E402
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
 TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics"}
-DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite")
-FLOOR_OF = {"state": "state", "state_dec4": "state", "writer": "writer", "readwrite": "readwrite"}
+DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite_pos", "readwrite_all")
+READWRITE_PATHS = ("readwrite_pos", "readwrite_all")
+FLOOR_OF = {"state": "state", "state_dec4": "state", "writer": "writer", "readwrite_pos": "readwrite",
+            "readwrite_all": "readwrite"}
+LOCKS_OF = {"readwrite_pos": "locks_pos", "readwrite_all": "locks_all"}
+DEFAULT_DISTROS = ("humble", "jazzy", "rolling")
 FLAGS = ("-O2", "-g")  # -g: function names for callgrind's per-function figures; code is the same
 
 
@@ -91,8 +101,8 @@ def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild, distro: str) 
     return linked.path
 
 
-def run_times(binary: Path, iterations: int) -> dict[str, dict[str, int]]:
-    out = subprocess.run([str(binary), "time", str(iterations)], capture_output=True, text=True,
+def run_times(binary: Path, iterations: int, paths: tuple[str, ...] = ()) -> dict[str, dict[str, int]]:
+    out = subprocess.run([str(binary), "time", str(iterations), *paths], capture_output=True, text=True,
                          check=True, env=cpp_build.ENV_C).stdout
     times = {}
     for name, med, p99, p999, mx in re.findall(
@@ -145,8 +155,9 @@ def main() -> None:
     ap.add_argument("--iterations", type=int, default=200_000, help="timed calls per path")
     ap.add_argument("--count-iterations", type=int, default=2_000, help="calls per path under callgrind")
     ap.add_argument("--robot", action="append", help="only this robot (g1, x2, pm01); repeatable")
-    ap.add_argument("--distro", default="humble", choices=sorted(cpp_build.DISTROS),
-                    help="the ros2_control stand-ins compiled against; changes readwrite only (see the docstring)")
+    ap.add_argument("--distro", action="append", choices=sorted(cpp_build.DISTROS),
+                    help="the ros2_control stand-ins compiled against (repeatable; default humble, jazzy, rolling); "
+                         "changes read() + write() only (see the docstring)")
     ap.add_argument("--no-callgrind", action="store_true", help="latency only")
     args = ap.parse_args()
 
@@ -169,52 +180,58 @@ def main() -> None:
         print(f"rendering {', '.join(robots)} into {root} ...", flush=True)
         package = cpp_build.render_test_package(root, only=robots, extra_robots=False)
         digest = hashlib.sha256(BENCH_SOURCE.read_bytes()).hexdigest()[:12]
-        print(f"compiling with {' '.join(FLAGS)} against the {args.distro} stand-ins (bench source {digest}) ...",
-              flush=True)
-        binaries = cpp_build.run_parallel(robots, lambda label: build(builder, package.build(label), args.distro))
-        for label, binary in zip(robots, binaries, strict=True):
-            report(label, binary, args, have_valgrind, root)
+        distros = list(dict.fromkeys(args.distro or DEFAULT_DISTROS))
+        print(f"compiling with {' '.join(FLAGS)} against the {', '.join(distros)} stand-ins (bench source "
+              f"{digest}) ...", flush=True)
+        jobs = [(label, distro) for label in robots for distro in distros]
+        binaries = cpp_build.run_parallel(jobs, lambda job: build(builder, package.build(job[0]), job[1]))
+        for (label, distro), binary in zip(jobs, binaries, strict=True):
+            report(label, distro, binary, args, have_valgrind, root, full=distro == distros[0])
 
 
-def report(label: str, binary: Path, args, have_valgrind: bool, work: Path) -> None:
-    times = run_times(binary, args.iterations)
+def report(label: str, distro: str, binary: Path, args, have_valgrind: bool, work: Path, full: bool) -> None:
+    """The table of one robot on one distro; ``full``: the transport paths too (the same on every distro)."""
+    driver_paths = DRIVER_PATHS if full else READWRITE_PATHS
+    floors = [f"{k}_{f}" for k in ("memcpy", "shmutex") for f in ("state", "writer", "readwrite")]
+    floors = [*(floors if full else ["memcpy_readwrite", "shmutex_readwrite"]), "locks_pos", "locks_all"]
+    times = run_times(binary, args.iterations, () if full else (*driver_paths, *floors))
     instr: dict[str, float] = {}
     driver: dict[str, float] = {}
     if have_valgrind:
         noop, _ = callgrind(binary, "noop", args.count_iterations, work)
-        floors = [f"{k}_{f}" for k in ("memcpy", "shmutex") for f in ("state", "writer", "readwrite")]
-        for path in (*DRIVER_PATHS, *floors):
+        for path in (*driver_paths, *floors):
             per_call, inclusive = callgrind(binary, path, args.count_iterations, work)
             instr[path] = per_call - noop
-            if path in DRIVER_PATHS:
+            if path in driver_paths:
                 driver[path] = driver_share(inclusive) / args.count_iterations
 
     def ins(path: str) -> str:
         return f"{instr[path]:,.0f}" if path in instr else "n/a"
 
     clock = times.get("clock", {}).get("median", 0)
-    print(f"\n== {label}  (ns: indicative, steady_clock around each call, its own cost ~{clock} ns included;"
-          f" instructions: callgrind, per call)")
+    print(f"\n== {label} on {distro}  (ns: indicative, steady_clock around each call, its own cost ~{clock} ns "
+          f"included; instructions: callgrind, per call)")
     head = (f"{'path':<20}{'median':>8}{'p99':>8}{'p99.9':>9}{'instr':>10}{'stand-in':>10}{'driver':>9}"
-            f"{'memcpy':>8}{'shmutex':>9}{'x memcpy':>9}")
+            f"{'memcpy':>8}{'shmutex':>9}{'x memcpy':>9}{'locks':>8}{'x locks':>8}")
     print(head)
     print("-" * len(head))
-    for path in DRIVER_PATHS:
+    for path in driver_paths:
         t = times[path]
         floor = FLOOR_OF[path]
         mem, shm = f"memcpy_{floor}", f"shmutex_{floor}"
         ratio = f"{instr[path] / instr[mem]:.1f}" if path in instr and instr.get(mem, 0) > 0 else "n/a"
-        if path == "readwrite" and path in instr:  # read() and write() are the driver's own
+        if path in READWRITE_PATHS and path in instr:  # read() and write() are the driver's own
             driver[path] = instr[path]
         drv = f"{driver[path]:,.0f}" if path in driver else "n/a"
         si = f"{instr[path] - driver[path]:,.0f}" if path in driver else "n/a"
+        locks = LOCKS_OF.get(path, "")
+        has_locks = path in instr and instr.get(locks, 0) >= 1  # Humble: no handle locks to compare with
+        lock_ratio = f"{instr[path] / instr[locks]:.2f}" if has_locks else ""
         print(f"{path:<20}{t['median']:>8}{t['p99']:>8}{t['p99.9']:>9}{ins(path):>10}{si:>10}{drv:>9}"
-              f"{ins(mem):>8}{ins(shm):>9}{ratio:>9}")
-    for kind in ("memcpy", "shmutex"):
-        for floor in ("state", "writer", "readwrite"):
-            path = f"{kind}_{floor}"
-            t = times[path]
-            print(f"{path:<20}{t['median']:>8}{t['p99']:>8}{t['p99.9']:>9}{ins(path):>10}")
+              f"{ins(mem):>8}{ins(shm):>9}{ratio:>9}{(ins(locks) if has_locks else ''):>8}{lock_ratio:>8}")
+    for path in floors:
+        t = times[path]
+        print(f"{path:<20}{t['median']:>8}{t['p99']:>8}{t['p99.9']:>9}{ins(path):>10}")
     sys.stdout.flush()
 
 

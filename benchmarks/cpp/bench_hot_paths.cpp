@@ -9,14 +9,21 @@
 //               joint group; engineai_topics: one JointState)
 //   state_dec4  the same with state_decimation = 4 (average per delivered frame)
 //   writer      one command writer cycle (the SDK recurrent thread / the executor's wall timer)
-//   readwrite   read() + write() of one controller cycle, with a producer thread delivering state
+//   readwrite_pos  read() + write() of one controller cycle, with a producer thread delivering
+//               state, under a position-only claim (each joint's position, velocity for a
+//               velocity-commanded joint: the robot's position controller, the common case)
+//   readwrite_all  the same with every command interface claimed
 // and, in the same binary, the floors over the same arrays:
 //   memcpy_*    memcpy of the arrays the path moves (state: q, dq, tau + 10 IMU values; writer:
 //               q, dq, tau, kp, kd; readwrite: both)
 //   shmutex_*   the seed template's DataBuffer: the writer takes a std::shared_mutex unique lock
 //               and copies, the reader takes a shared lock and copies (uncontended)
+//   locks_pos / locks_all  with framework-owned handles (4.x+), the handles' own locks alone: a
+//               set_value() on every exported state handle and a get_optional() on every claimed
+//               command handle, the least read() + write() can do through upstream's API (empty on
+//               Humble, whose interfaces are the driver's own doubles)
 //
-// Usage: bench_hot_paths time <iterations>          latency of every path (ns per call)
+// Usage: bench_hot_paths time <iterations> [path...] latency of every path, or of those (ns per call)
 //        bench_hot_paths count <path> <iterations>  runs only <path>; under
 //               valgrind --tool=callgrind --instr-atstart=no the measured loop alone is
 //               instrumented (client requests), so Ir / iterations = instructions per call.
@@ -32,7 +39,9 @@
 #include <mutex>
 #include <shared_mutex>
 #include <string>
+#include <optional>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <valgrind/callgrind.h>
@@ -75,29 +84,72 @@ const rclcpp_lifecycle::State kActive(lifecycle_msgs::msg::State::PRIMARY_STATE_
 }
 
 // ------------------------------------------------------------------ the driver, as the harness sets it up
+enum class Claim { kNone, kTargets, kAll };
+
 struct Rig {
   rhi_fake::hw::Framework fw;  // outlives the driver
   std::shared_ptr<SystemInterface> hw;
   Transport t;
   Interfaces ifs;
+#if RHI_FAKE_HI_MAJOR >= 4
+  // locks_*: the exported handles read() + write() must touch at the least
+  std::vector<hardware_interface::StateInterface*> lock_states;
+  std::vector<hardware_interface::CommandInterface*> lock_commands;
+#endif
 };
 
-void claim_everything(Rig& rig) {
-  std::vector<std::string> all;
+// A position-only claim: each joint's target (position, velocity for a velocity-commanded joint).
+bool claimed(size_t k, const std::string& iface, Claim claim) {
+  return claim == Claim::kAll || (claim == Claim::kTargets && iface == (kJoints[k].mode == 0 ? "position" : "velocity"));
+}
+
+void claim(Rig& rig, Claim claim_kind) {
+  std::vector<std::string> names;
   for (size_t k = 0; k < kJointCount; ++k) {
     for (const std::string& iface : joint_commands(k)) {
-      all.push_back(std::string(kJoints[k].name) + "/" + iface);
+      if (claimed(k, iface, claim_kind)) names.push_back(std::string(kJoints[k].name) + "/" + iface);
     }
   }
-  if (rig.hw->prepare_command_mode_switch(all, {}) != hardware_interface::return_type::OK ||
-      rig.hw->perform_command_mode_switch(all, {}) != hardware_interface::return_type::OK) {
+  if (rig.hw->prepare_command_mode_switch(names, {}) != hardware_interface::return_type::OK ||
+      rig.hw->perform_command_mode_switch(names, {}) != hardware_interface::return_type::OK) {
     fail("command mode switch refused");
   }
+#if RHI_FAKE_HI_MAJOR >= 4
+  for (const auto& s : rig.ifs.exported.states()) {
+    // the framework's handle: const for readers, the driver writes it (set_value)
+    rig.lock_states.push_back(const_cast<hardware_interface::StateInterface*>(s.handle().get()));  // NOLINT
+  }
+  for (const auto& c : rig.ifs.exported.commands()) {
+    for (size_t k = 0; k < kJointCount; ++k) {
+      if (c.prefix() == kJoints[k].name && claimed(k, c.interface(), claim_kind)) {
+        rig.lock_commands.push_back(c.handle().get());
+      }
+    }
+  }
+#endif
+}
+
+// The handles' own locks alone (see the header comment).
+__attribute__((noinline)) void handle_locks(Rig& rig) {
+#if RHI_FAKE_HI_MAJOR >= 4
+  double v = 0.25;
+  for (hardware_interface::StateInterface* s : rig.lock_states) {
+    std::ignore = s->set_value(v);
+    v += 1.0;
+  }
+  for (hardware_interface::CommandInterface* c : rig.lock_commands) {
+    const std::optional<double> value = c->get_optional();
+    v += value.value_or(0.0);
+  }
+  asm volatile("" : : "r"(&v) : "memory");
+#else
+  static_cast<void>(rig);
+#endif
 }
 
 // Initialised, exported, activated (monitoring on, as the issue measures), first state delivered,
 // a controller command in the command interfaces and the writer warmed up.
-void start(Rig& rig, uint32_t decimation) {
+void start(Rig& rig, uint32_t decimation, Claim claim_kind) {
   rhi_fake::reset_all();
   rclcpp::init(0, nullptr);
   hardware_interface::HardwareInfo info = make_hardware_info();
@@ -109,7 +161,7 @@ void start(Rig& rig, uint32_t decimation) {
   rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
   rig.ifs.index();
   if (!rig.ifs.complete()) fail("incomplete interfaces");
-  claim_everything(rig);
+  claim(rig, claim_kind);
   if (rig.hw->on_activate(kInactive) != CallbackReturn::SUCCESS) fail("on_activate failed");
 #if defined(RHI_TRANSPORT_ROS)
   if (!rhi_fake::ros::wait_spinning_executors(1, std::chrono::seconds(30))) fail("no executor");
@@ -198,7 +250,13 @@ struct Path {
   uint32_t decimation;  // driver set up with this state_decimation (0: no driver needed)
   bool producer;        // a producer thread delivers state while the path runs
   std::function<void(Rig&, Floors&)> call;
+  Claim claim = Claim::kAll;  // what the controllers claim while the path runs
 };
+
+void read_write(Rig& r, Floors&) {
+  r.hw->read(kTime, kPeriod);
+  r.hw->write(kTime, kPeriod);
+}
 
 std::vector<Path> paths() {
   return {
@@ -206,11 +264,10 @@ std::vector<Path> paths() {
       {"state", 1, false, [](Rig& r, Floors&) { r.t.deliver_prepared(); }},
       {"state_dec4", 4, false, [](Rig& r, Floors&) { r.t.deliver_prepared(); }},
       {"writer", 1, false, [](Rig& r, Floors&) { r.t.tick_writer(); }},
-      {"readwrite", 1, true,
-       [](Rig& r, Floors&) {
-         r.hw->read(kTime, kPeriod);
-         r.hw->write(kTime, kPeriod);
-       }},
+      {"readwrite_pos", 1, true, read_write, Claim::kTargets},
+      {"readwrite_all", 1, true, read_write, Claim::kAll},
+      {"locks_pos", 1, false, [](Rig& r, Floors&) { handle_locks(r); }, Claim::kTargets},
+      {"locks_all", 1, false, [](Rig& r, Floors&) { handle_locks(r); }, Claim::kAll},
       {"memcpy_state", 0, false, [](Rig&, Floors& f) { memcpy_arrays(f.state_dst, f.state_src); }},
       {"memcpy_writer", 0, false, [](Rig&, Floors& f) { memcpy_arrays(f.cmd_dst, f.cmd_src); }},
       {"memcpy_readwrite", 0, false,
@@ -265,7 +322,7 @@ void clock_overhead(uint32_t iterations) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) fail("usage: bench_hot_paths time <iterations> | count <path> <iterations>");
+  if (argc < 3) fail("usage: bench_hot_paths time <iterations> [<path>...] | count <path> <iterations>");
   const std::string mode = argv[1];
   Floors floors;
   for (size_t i = 0; i < kStateValues; ++i) floors.state_src[i] = static_cast<Sdk>(0.25 * i);
@@ -274,14 +331,16 @@ int main(int argc, char** argv) {
               sizeof(Sdk) == sizeof(float) ? "float" : "double");
   if (mode == "time") {
     const auto iterations = static_cast<uint32_t>(std::strtoul(argv[2], nullptr, 10));
+    const std::vector<std::string> only(argv + 3, argv + argc);  // these paths only (none: all)
     clock_overhead(iterations);
     for (const Path& p : paths()) {
+      if (!only.empty() && std::find(only.begin(), only.end(), p.name) == only.end()) continue;
       if (p.decimation == 0) {
         time_path(p, nullptr, floors, iterations);
         continue;
       }
       Rig rig;
-      start(rig, p.decimation);
+      start(rig, p.decimation, p.claim);
       time_path(p, &rig, floors, iterations);
       stop(rig);
     }
@@ -293,7 +352,7 @@ int main(int argc, char** argv) {
     for (const Path& p : paths()) {
       if (name != p.name) continue;
       Rig rig;
-      if (p.decimation != 0) start(rig, p.decimation);
+      if (p.decimation != 0) start(rig, p.decimation, p.claim);
       Producer producer;
       if (p.producer) producer.begin();
       for (uint32_t i = 0; i < 100; ++i) p.call(rig, floors);  // warm-up, not counted

@@ -253,10 +253,6 @@ struct Path {
   Claim claim = Claim::kAll;  // what the controllers claim while the path runs
 };
 
-void read_write(Rig& r, Floors&) {
-  r.hw->read(kTime, kPeriod);
-  r.hw->write(kTime, kPeriod);
-}
 
 std::vector<Path> paths() {
   return {
@@ -264,8 +260,18 @@ std::vector<Path> paths() {
       {"state", 1, false, [](Rig& r, Floors&) { r.t.deliver_prepared(); }},
       {"state_dec4", 4, false, [](Rig& r, Floors&) { r.t.deliver_prepared(); }},
       {"writer", 1, false, [](Rig& r, Floors&) { r.t.tick_writer(); }},
-      {"readwrite_pos", 1, true, read_write, Claim::kTargets},
-      {"readwrite_all", 1, true, read_write, Claim::kAll},
+      {"readwrite_pos", 1, true,
+       [](Rig& r, Floors&) {
+         r.hw->read(kTime, kPeriod);
+         r.hw->write(kTime, kPeriod);
+       },
+       Claim::kTargets},
+      {"readwrite_all", 1, true,
+       [](Rig& r, Floors&) {
+         r.hw->read(kTime, kPeriod);
+         r.hw->write(kTime, kPeriod);
+       },
+       Claim::kAll},
       {"locks_pos", 1, false, [](Rig& r, Floors&) { handle_locks(r); }, Claim::kTargets},
       {"locks_all", 1, false, [](Rig& r, Floors&) { handle_locks(r); }, Claim::kAll},
       {"memcpy_state", 0, false, [](Rig&, Floors& f) { memcpy_arrays(f.state_dst, f.state_src); }},

@@ -139,11 +139,13 @@ public:
     const auto start = std::chrono::steady_clock::now();
     // A mode switch changed the claims: from now on fetch only the claimed interfaces (this runs
     // once per switch, never in the steady cycle; its first cycle sends the safe-start target).
-    CommandClaims<N, T> & claims = core_.claims();
-    if (claims.take_committed()) {
-      const JointStorage<N> & joints = core_.joints();
-      select_command_values(
-        [&claims, &joints](const double * value) {return claims.claims_value(joints, value);});
+    if constexpr (kFrameworkHandles) {
+      CommandClaims<N, T> & claims = core_.claims();
+      if (claims.take_committed()) {
+        const JointStorage<N> & joints = core_.joints();
+        select_command_values(
+          [&claims, &joints](const double * value) {return claims.claims_value(joints, value);});
+      }
     }
     fetch_command_values();
     if (core_.write_command()) {

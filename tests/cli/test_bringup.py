@@ -195,7 +195,8 @@ def test_launch_file_starts_the_robot(package, label, mock):
 
 def test_launch_arguments_choose_controllers_files_and_parameters(package, tmp_path):
     package_dir, _ = package
-    urdf = tmp_path / "g1.urdf"
+    urdf = tmp_path / "my robots" / "g1 (Bob's).urdf"  # a space and a quote: the xacro command quotes it
+    urdf.parent.mkdir()
     urdf.write_text((package_dir / "urdf" / "g1.urdf").read_text())
     controllers = tmp_path / "mine.yaml"
     controllers.write_text((package_dir / "config" / "g1_controllers.yaml").read_text())

@@ -12,6 +12,8 @@
 # NAME` starts one later). Uses only launch / launch_ros APIs present from Humble through Rolling.
 """Bring up one robot of robot_hardware_interface: robot_state_publisher, ros2_control_node, spawners."""
 
+import shlex
+
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, OpaqueFunction
 from launch.substitutions import Command, LaunchConfiguration
@@ -47,10 +49,11 @@ def bringup(context):
     description_file = value['description_file'] or f'{share}/urdf/{robot}.urdf'
     controllers_file = value['controllers_file'] or f'{share}/config/{robot}_controllers.yaml'
 
-    command = ['xacro ', f'{share}/description/{robot}.urdf.xacro']
+    # Command runs shlex.split() on the joined text: quote every path and value (spaces, quotes).
+    command = ['xacro ', shlex.quote(f'{share}/description/{robot}.urdf.xacro')]
     for name in DESCRIPTION_ARGUMENTS:
-        command += [' ', name, ':=', value[name]]
-    command += [' description_file:=', description_file]
+        command += [' ', shlex.quote(f'{name}:={value[name]}')]
+    command += [' ', shlex.quote(f'description_file:={description_file}')]
     robot_description = {'robot_description': ParameterValue(Command(command), value_type=str)}
 
     nodes = [

@@ -69,7 +69,8 @@ class AgibotTopics(Transport):
     option_keys = ("groups", "imu_topic", "qos")
     default_float_type = "double"
     dependencies = (Dependency("aimdk_msgs", VENDOR_SOURCE), Dependency("sensor_msgs", ROSDISTRO))
-    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "agibot_topics.hpp"))
+    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "joint_names.hpp"),
+                    transport_header(NAME, "agibot_topics.hpp"))
     vendors = ("agibot",)
     known_robots = (
         KnownRobot("agibot", "x2", NAME, X2_ORDER, "X2 motor order = AimDK joint groups leg, waist, arm, head",

@@ -16,7 +16,6 @@
 #include <cinttypes>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -32,6 +31,7 @@
 #include "robot_hardware_interface/common/driver_core.hpp"
 #include "robot_hardware_interface/common/monitor.hpp"
 #include "robot_hardware_interface/common/system_driver.hpp"
+#include "robot_hardware_interface/transport/joint_names.hpp"
 #include "robot_hardware_interface/transport/ros_topics.hpp"
 
 namespace robot_hardware_interface
@@ -76,10 +76,7 @@ public:
     core_ = &core;
     node_ = node;
     const rclcpp::QoS qos = make_qos(options_.qos);
-    for (size_t slot = 0; slot < N; ++slot) {
-      slot_names_[slot] = core.slots().slot_joint_names()[slot];
-      name_lengths_[slot] = std::strlen(slot_names_[slot]);
-    }
+    names_.assign(core.slots().slot_joint_names());
     for (size_t g = 0; g < groups_.size(); ++g) {
       const AimdkJointGroup & spec = options_.groups[g];
       Group & group = groups_[g];
@@ -154,38 +151,6 @@ private:
     bool distinct_slots{false};  // no two entry_slots name the same slot (checked when they change)
   };
 
-  // `name` is the joint driven in `slot`: lengths first, then every byte, compared in place a
-  // word at a time (first word, middle words, last word overlapping), without a library call.
-  bool same_name(const std::string & name, size_t slot) const
-  {
-    const size_t size = name.size();
-    if (size != name_lengths_[slot]) {
-      return false;
-    }
-    const char * a = name.data();
-    const char * b = slot_names_[slot];
-    if (size < sizeof(uint64_t)) {
-      return std::memcmp(a, b, size) == 0;
-    }
-    const size_t last = size - sizeof(uint64_t);
-    uint64_t difference =
-      (load_word(a) ^ load_word(b)) | (load_word(a + last) ^ load_word(b + last));
-    if (size > 2 * sizeof(uint64_t)) {  // the second word; typical joint names end within 24 bytes
-      difference |= load_word(a + sizeof(uint64_t)) ^ load_word(b + sizeof(uint64_t));
-      for (size_t i = 2 * sizeof(uint64_t); i < last; i += sizeof(uint64_t)) {
-        difference |= load_word(a + i) ^ load_word(b + i);
-      }
-    }
-    return difference == 0U;
-  }
-
-  static uint64_t load_word(const char * bytes)
-  {
-    uint64_t word;
-    std::memcpy(&word, bytes, sizeof(word));  // any alignment, no aliasing question
-    return word;
-  }
-
   // The motor slot of entry `position` of a group's state message. A named entry is first tried
   // against the slot the same entry had in the group's last message (a publisher keeps its
   // order, also a changed one), then matched by position when the name agrees (or is empty:
@@ -197,13 +162,13 @@ private:
     const AimdkJointGroup & spec = *group.spec;
     if (!name.empty() && position < group.entry_slots.size()) {
       const size_t cached = group.entry_slots[position];
-      if (cached != kNoSlot && same_name(name, cached)) {
+      if (cached != kNoSlot && names_.matches(name, cached)) {
         return cached;
       }
     }
     if (position < spec.size) {
       const size_t slot = spec.offset + position;
-      if (name_lengths_[slot] != 0U && (name.empty() || same_name(name, slot))) {
+      if (names_.drives(slot) && (name.empty() || names_.matches(name, slot))) {
         return slot;
       }
     }
@@ -211,7 +176,7 @@ private:
       return kNoSlot;
     }
     for (size_t slot = spec.offset; slot < spec.offset + spec.size; ++slot) {
-      if (name_lengths_[slot] != 0U && same_name(name, slot)) {
+      if (names_.drives(slot) && names_.matches(name, slot)) {
         return slot;
       }
     }
@@ -294,7 +259,7 @@ private:
       const auto & joint = msg.joints[i];
       // The usual case inline: the entry names the joint it named in the last message.
       size_t slot = entry_slots[i];
-      if (slot == kNoSlot || !same_name(joint.name, slot)) {
+      if (slot == kNoSlot || !names_.matches(joint.name, slot)) {
         slot = resolve_slot(group, i, joint.name);
         entry_slots[i] = slot;  // tried first on the next message, reused below
         resolved = true;
@@ -398,8 +363,7 @@ private:
   std::vector<Group> groups_;  // sized at construction
   std::array<uint32_t, N> slot_stamps_{};  // executor thread: match_distinct_slots() marks
   uint32_t message_stamp_{0};
-  std::array<const char *, N> slot_names_{};  // each slot's joint name ("": not driven)
-  std::array<size_t, N> name_lengths_{};  // strlen of each slot's joint name (0: not driven)
+  JointNames<N> names_;  // each slot's joint name, matched against the entries of a message
   size_t groups_reported_{0};  // executor thread
   uint32_t command_sequence_{0};
   typename rclcpp::Subscription<Imu>::SharedPtr imu_subscription_;

@@ -135,7 +135,10 @@ def callgrind(binary: Path, path: str, iterations: int, work: Path) -> tuple[flo
     if not main:
         raise RuntimeError(f"no callgrind dump for {path} of {binary.name}")
     text = main[0].read_text(errors="replace")
-    total = int(re.search(r"^(?:summary|totals): (\d+)", text, re.M).group(1))
+    summary = re.search(r"^(?:summary|totals): (\d+)", text, re.M)
+    if summary is None:
+        raise RuntimeError(f"no summary line in the callgrind dump {main[0]}")
+    total = int(summary.group(1))
     inclusive: dict[str, int] = {}
     if shutil.which("callgrind_annotate"):
         ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", str(main[0])],

@@ -21,7 +21,7 @@ from rhi_gen.render.bringup_views import start_controllers
 from tests.support.cli import run_cli
 from tests.support.cpp_build import PACKAGE, load_models, make_test_project, project_robot_labels, render_package_to
 from tests.support.description_checks import check_ros2_control, exported, parse_ros2_control
-from tests.support.launch_standin import Launched, StartedNode, launch, load_launch_file
+from tests.support.launch_standin import LaunchContext, Launched, StartedNode, launch, load_launch_file
 from tests.support.repo import URDF_FIXTURES, copy_project
 
 LABELS = project_robot_labels()
@@ -154,15 +154,17 @@ def check_controllers(launched: Launched, description, controllers_file: Path, m
 
 @pytest.mark.parametrize("mock", [False, True], ids=["robot", "mock"])
 @pytest.mark.parametrize("label", LABELS)
-def test_launch_file_starts_the_robot(package, label, mock):
+def test_launch_file_starts_the_robot(package, label, mock) -> None:
     package_dir, robots = package
     r = robots[label]
     m = r.model
     launched = run(package_dir, m.robot, **({"use_mock_hardware": "true"} if mock else {}))
 
     assert list(launched.arguments) == LAUNCH_ARGUMENTS
-    defaults = {name: "".join(s.perform(None) for s in a.default_value)  # type: ignore[arg-type]
-                for name, a in launched.arguments.items()}
+    defaults = {}
+    for name, a in launched.arguments.items():
+        assert a.default_value is not None, f"launch argument {name!r} has no default"
+        defaults[name] = "".join(s.perform(LaunchContext({})) for s in a.default_value)
     p = m.parameters
     assert defaults == {
         "use_mock_hardware": "false", "network_interface": p.network_interface,
@@ -214,14 +216,14 @@ def test_launch_arguments_choose_controllers_files_and_parameters(package, tmp_p
     assert (d.parameters["network_interface"], d.parameters["state_decimation"]) == ("enp3s0", "4")
 
 
-def test_launch_standin_rejects_what_the_real_api_rejects(package, tmp_path):
+def test_launch_standin_rejects_what_the_real_api_rejects(package, tmp_path) -> None:
     """The stand-in keeps the real signatures: keyword-only arguments, required arguments of an include."""
     from tests.support import launch_standin as ls
 
     with pytest.raises(TypeError):
-        ls.Node("controller_manager", "spawner")  # type: ignore[misc]  # keyword-only in launch_ros
+        ls.Node("controller_manager", "spawner")  # type: ignore[call-arg]  # keyword-only in launch_ros
     with pytest.raises(TypeError):
-        ls.DeclareLaunchArgument("a", "default")  # type: ignore[misc]  # default_value is keyword-only
+        ls.DeclareLaunchArgument("a", "default")  # type: ignore[call-arg]  # default_value is keyword-only
     package_dir, _ = package
     with pytest.raises(RuntimeError, match="launch argument 'robot' was not provided"):
         launch(package_dir / "launch" / "bringup.launch.py", {PACKAGE: package_dir})

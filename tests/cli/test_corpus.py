@@ -36,6 +36,7 @@ from tests.support.cli import run_cli, snapshot
 from tests.support.corpus import EXPECTED_REJECTIONS, Description, corpus
 from tests.support.cpp_build import syntax_check_driver
 from tests.support.repo import PACKAGE, TESTS
+from tests.support.xml_tree import attribute
 
 REPORT = TESTS / ".corpus_report.txt"
 COMPILE_WORKERS = 2
@@ -57,7 +58,7 @@ class Outcome:
 def joint_names(path: Path, *, expand: bool = False) -> list[str]:
     """The top-level <joint> names of a URDF (of a xacro's expansion when ``expand``), read with lxml."""
     data = expand_xacro(path, {}, {}) if expand else path.read_bytes()
-    return [j.get("name") for j in etree.fromstring(data).findall("joint")]
+    return [attribute(j, "name") for j in etree.fromstring(data).findall("joint")]
 
 
 def check_generated(root: Path, d: Description, outcome: Outcome) -> None:
@@ -85,8 +86,8 @@ def check_generated(root: Path, d: Description, outcome: Outcome) -> None:
     urdf = etree.parse(str(d.path)) if not d.path.name.endswith(".xacro") else None
     if urdf is not None:
         joints = urdf.getroot().findall("joint")
-        movable = [j.get("name") for j in joints if j.get("type") in ("revolute", "continuous", "prismatic")]
-        mimic = {j.get("name") for j in joints if j.find("mimic") is not None}
+        movable = [attribute(j, "name") for j in joints if j.get("type") in ("revolute", "continuous", "prismatic")]
+        mimic = {attribute(j, "name") for j in joints if j.find("mimic") is not None}
         expected = [n for n in movable if n not in mimic]
         if sorted(mapped) != sorted(expected):
             outcome.problems.append(f"joint_map {len(mapped)} joints, URDF has {len(expected)} actuated non-mimic")

@@ -40,6 +40,7 @@ from tests.support.cli import (
 )
 from tests.support.cpp_build import syntax_check_driver
 from tests.support.repo import HOSTILE, PACKAGE, REPO
+from tests.support.xml_tree import attribute
 
 
 @pytest.fixture
@@ -489,7 +490,7 @@ def test_yaml_motor_count_above_the_limit(project):
 def _description_joints(root: Path, robot: str) -> dict[str, etree._Element]:
     path = root / "generated" / PACKAGE / "description" / f"{robot}.ros2_control.xacro"
     tree = etree.parse(str(path))
-    return {j.get("name"): j for j in tree.iter("joint")}
+    return {attribute(j, "name"): j for j in tree.iter("joint")}
 
 
 @pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers

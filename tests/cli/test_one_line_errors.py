@@ -11,7 +11,6 @@ from pathlib import Path
 import pytest
 
 from tests.support.cli import (
-    HOSTILE,
     YAML_REL,
     assert_rejected,
     edit_yaml,
@@ -19,6 +18,7 @@ from tests.support.cli import (
     snapshot,
     write_project,
 )
+from tests.support.repo import HOSTILE
 from tests.support.repo import URDF_FIXTURES as FIXTURES
 
 ANY = -1  # assert_rejected(line=ANY): some line number

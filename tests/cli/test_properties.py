@@ -133,7 +133,7 @@ class RobotSpec:
                 attrs = {"effort": repr(effort), "velocity": repr(velocity)}
                 if lower is not None:
                     attrs.update(lower=repr(lower), upper=repr(upper))
-                etree.SubElement(el, "limit", **attrs)
+                etree.SubElement(el, "limit", attrs)
             if j.mimic is not None:
                 etree.SubElement(el, "mimic", joint=j.mimic, multiplier="-1.5", offset="0.25")
         return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)

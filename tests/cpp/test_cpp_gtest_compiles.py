@@ -35,7 +35,6 @@ from tests.support.cpp_build import (
     DISTROS,
     ENV_C,
     HARNESS_ROBOTS,
-    REPO,
     WARNING_FLAGS,
     message_include_flags,
     project_robot_labels,
@@ -43,7 +42,7 @@ from tests.support.cpp_build import (
     run_compiler,
     standin_flags,
 )
-from tests.support.repo import copy_project
+from tests.support.repo import REPO, copy_project
 
 PACKAGE = "robot_hardware_interface"
 LABELS = project_robot_labels(extra_robots=False)  # vendor/robot of robots/*/*.yaml

@@ -24,7 +24,6 @@ from tests.support import vendor_msgs
 from tests.support.cpp_build import (
     DEFAULT_DISTRO,
     PACKAGE,
-    REPO,
     RenderedPackage,
     build_harness,
     compile_data_buffer_stress,
@@ -37,6 +36,7 @@ from tests.support.cpp_build import (
     session_builder,
 )
 from tests.support.cpp_mutate import MutationError, SwapSlots, TokenEdit, code_of, tokenize
+from tests.support.repo import REPO
 
 ROBOTS = ("unitree/g1", "engineai/pm01")
 GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message family
@@ -163,6 +163,7 @@ def mutated_plan(models, mutation: Mutation | None) -> dict[str, str]:
         models = [change.apply_to_model(m) for m in models]
     plan = render_package(models)
     if isinstance(change, TokenEdit):
+        assert mutation is not None
         change.apply_to_plan(plan, mutation.id)
     return plan
 
@@ -237,7 +238,7 @@ def _built(outcomes_of_one: list[Outcome]) -> list[Outcome]:
         assert o.not_applied is None, o.not_applied
     attempted = [o for o in outcomes_of_one if o.skipped is None]
     if not attempted:
-        pytest.skip("; ".join(o.skipped for o in outcomes_of_one))
+        pytest.skip("; ".join(o.skipped for o in outcomes_of_one if o.skipped is not None))
     return attempted
 
 

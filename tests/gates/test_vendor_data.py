@@ -9,8 +9,9 @@ from pathlib import Path
 import pytest
 
 from tests.support import upstream_urdf, vendor_msgs
+from tests.support.repo import REPO
 
-DATA = vendor_msgs.REPO / "tests" / "data"
+DATA = REPO / "tests" / "data"
 MSG_PACKAGES = ("unitree_hg", "unitree_go", "interface_protocol")
 COPYRIGHT = {
     "unitree_hg": 'Copyright (c) 2016-2024 HangZhou YuShu TECHNOLOGY CO.,LTD. ("Unitree Robotics")',

@@ -72,7 +72,7 @@ def corpus() -> list[Description]:
         if not text.endswith((".urdf", ".xacro")) or "/robots/" not in f"/{text}":
             continue
         under = text.split("example-robot-data/robots/", 1)[-1]
-        found.append((f"example-robot-data:{under}", Path(dist.locate_file(f))))
+        found.append((f"example-robot-data:{under}", Path(str(dist.locate_file(f)))))
     found += [(f"upstream:{p.name}", p) for p in (*upstream_urdf.in_repo(), *upstream_urdf.shared_only())]
     found.sort(key=lambda item: item[0])
     taken: set[str] = set()

@@ -21,6 +21,7 @@ import pytest
 from tests.support import vendor_msgs
 from tests.support.repo import REPO
 from tests.support.ros_msgs import wheel_include_dirs, wheels_digest
+from tests.support.xml_tree import attribute
 
 STANDINS = REPO / "tests" / "cpp" / "standins"
 # Distro-independent stand-ins (rclcpp, pluginlib, unitree_sdk2, messages, rhi_fake hooks).
@@ -258,9 +259,10 @@ def expand_description(package_dir: Path, robot: str, work_dir: Path) -> Descrip
     assert len(blocks) == 1, f"{xacro_file}: expected one <ros2_control>, found {len(blocks)}"
     block = blocks[0]
     hardware = block.find("hardware")
+    assert hardware is not None, f"{xacro_file}: <ros2_control> has no <hardware>"
 
     def params(element) -> dict[str, str]:
-        return {p.get("name"): (p.text or "").strip() for p in element.findall("param")}
+        return {attribute(p, "name"): (p.text or "").strip() for p in element.findall("param")}
 
     def component(element) -> dict:
         return {
@@ -271,7 +273,7 @@ def expand_description(package_dir: Path, robot: str, work_dir: Path) -> Descrip
         }
 
     return Description(
-        name=block.get("name"), type=block.get("type"),
+        name=attribute(block, "name"), type=attribute(block, "type"),
         plugin=(hardware.findtext("plugin") or "").strip(),
         parameters=params(hardware),
         joints=[component(j) for j in block.findall("joint")],
@@ -284,7 +286,7 @@ def plugin_types(package_dir: Path) -> dict[str, str]:
     from lxml import etree
 
     root = etree.parse(str(package_dir / f"{PACKAGE}.xml")).getroot()
-    return {c.get("name"): c.get("type") for c in root.iter("class")}
+    return {attribute(c, "name"): attribute(c, "type") for c in root.iter("class")}
 
 
 def yaml_joint_map(yaml_path: Path) -> dict[str, int]:
@@ -362,7 +364,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     ]
     if model.transport != "unitree_dds":
         lines.append("#define RHI_TRANSPORT_ROS 1")
-    family, motor_modes = ("", ())
+    family = ""
+    motor_modes: tuple[int, ...] = ()
     if model.transport == "unitree_dds":
         family, motor_modes = yaml_unitree_family(loaded.yaml_path, model.vendor, model.robot)
         lines.append(f"#define RHI_UNITREE_FAMILY_{family.upper()} 1  // message family (transport_options.family)")
@@ -505,7 +508,7 @@ class CppBuilder:
                 return self._results[key]
             event = self._inflight.get(key)
             owner = event is None
-            if owner:
+            if event is None:
                 event = self._inflight[key] = threading.Event()
         if not owner:
             event.wait()

@@ -83,6 +83,7 @@ def tokenize(text: str, *, pattern: bool = False) -> list[Token]:
         if m is None or m.lastgroup == "open_comment":
             raise ValueError(_lexing_error(text, pos))
         kind, end = m.lastgroup, m.end()
+        assert kind is not None, "every alternative of _LEXEME_RE is a named group"
         if kind == "raw":
             kind, end = "string", _raw_string_end(text, pos, end)
         if kind not in ("space", "comment"):

@@ -13,6 +13,7 @@ from lxml import etree
 from rhi_gen.model import RobotModel
 from rhi_gen.transports import TRANSPORTS
 from tests.support.cpp_build import Description, plugin_types, yaml_joint_map
+from tests.support.xml_tree import attribute
 
 IMU_INTERFACES = ["orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
                   "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
@@ -21,7 +22,7 @@ MOCK_PLUGIN = "mock_components/GenericSystem"
 
 
 def params(element: etree._Element) -> dict[str, str]:
-    return {p.get("name"): (p.text or "").strip() for p in element.findall("param")}
+    return {attribute(p, "name"): (p.text or "").strip() for p in element.findall("param")}
 
 
 def parse_ros2_control(xml: str | bytes) -> tuple[Description, etree._Element]:
@@ -44,8 +45,9 @@ def parse_ros2_control(xml: str | bytes) -> tuple[Description, etree._Element]:
         }
 
     return Description(
-        name=block.get("name"), type=block.get("type"), plugin=(hardware.findtext("plugin") or "").strip(),
-        parameters=params(hardware), joints=[component(j) for j in block.findall("joint")],
+        name=attribute(block, "name"), type=attribute(block, "type"),
+        plugin=(hardware.findtext("plugin") or "").strip(), parameters=params(hardware),
+        joints=[component(j) for j in block.findall("joint")],
         sensors=[component(s) for s in block.findall("sensor")]), root
 
 

@@ -204,7 +204,7 @@ class LaunchDescription:
         self.entities = list(initial_entities or [])
 
 
-MODULES = {
+MODULES: dict[str, dict[str, object]] = {
     "launch": {"LaunchDescription": LaunchDescription, "LaunchContext": LaunchContext,
                "Substitution": Substitution},
     "launch.actions": {"DeclareLaunchArgument": DeclareLaunchArgument, "OpaqueFunction": OpaqueFunction,
@@ -230,11 +230,11 @@ def installed() -> Iterator[None]:
     try:
         yield
     finally:
-        for name, module in saved.items():
-            if module is None:
+        for name, previous in saved.items():
+            if previous is None:
                 sys.modules.pop(name, None)
             else:
-                sys.modules[name] = module
+                sys.modules[name] = previous
 
 
 def load_launch_file(path: Path) -> LaunchDescription:

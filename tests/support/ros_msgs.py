@@ -44,7 +44,7 @@ def installed_dir(dist: str, kind: str, package: str) -> Path | None:
         if kind in parts:
             i = parts.index(kind)
             if parts[i + 1:i + 2] == (package,):
-                path = Path(found.locate_file(Path(*parts[:i + 2]))).resolve()
+                path = Path(str(found.locate_file(Path(*parts[:i + 2])))).resolve()
                 return path if path.is_dir() else None
     return None
 

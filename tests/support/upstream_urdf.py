@@ -12,8 +12,9 @@ from pathlib import Path
 import pytest
 
 from tests.support import vendor_msgs
+from tests.support.repo import REPO
 
-IN_REPO = vendor_msgs.REPO / "tests" / "data" / "upstream_urdf"
+IN_REPO = REPO / "tests" / "data" / "upstream_urdf"
 SHARED = vendor_msgs.UPSTREAM / "urdf"
 HOW_TO_PROVIDE = ("put the project's shared folder beside the clone (../shared/upstream/urdf) "
                   "or set RHI_UPSTREAM=<folder holding urdf/>")

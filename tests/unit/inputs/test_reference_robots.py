@@ -15,6 +15,7 @@ from lxml import etree
 
 from tests.support import upstream_urdf
 from tests.support.repo import REPO
+from tests.support.xml_tree import attribute
 
 ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
 
@@ -76,12 +77,13 @@ def _actuated(root: etree._Element) -> list[etree._Element]:
 def _limits(joint: etree._Element) -> tuple[float, float, float, float]:
     lim = joint.find("limit")
     assert lim is not None, f"{joint.get('name')}: no <limit>"
-    return tuple(float(lim.get(k)) for k in ("lower", "upper", "effort", "velocity"))
+    lower, upper, effort, velocity = (float(attribute(lim, k)) for k in ("lower", "upper", "effort", "velocity"))
+    return lower, upper, effort, velocity
 
 
 def _axis(joint: etree._Element) -> tuple[float, ...]:
     axis = joint.find("axis")
-    return tuple(float(v) for v in (axis.get("xyz") if axis is not None else "1 0 0").split())
+    return tuple(float(v) for v in (attribute(axis, "xyz") if axis is not None else "1 0 0").split())
 
 
 def _origin(joint: etree._Element) -> tuple[float, ...]:

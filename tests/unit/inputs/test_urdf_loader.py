@@ -283,7 +283,7 @@ def test_xacro_expansions_in_parallel_threads_do_not_mix():
     assert results == [[f"{p}joint_a", f"{p}left_hip"] for p in prefixes]
 
 
-XACRO_ERRORS = [
+XACRO_ERRORS: list[tuple[str, dict[str, Path], dict[str, str], str, int | None, list[str]]] = [
     # (fixture, package_paths, args, shown file, line, substrings)
     ("unknown_pkg.urdf.xacro", {"mypkg": MYPKG}, {}, "robots/unknown_pkg.urdf.xacro", 3,  # the $(find) line
      ["unknown package 'nosuchpkg'", "add package_paths: {nosuchpkg: <dir>} to the vendor YAML"]),

@@ -122,11 +122,26 @@ def test_generation_is_deterministic_and_cached(tmp_path, monkeypatch):
     second = vendor_msgs.package_root(p)
     assert second.parent == tmp_path / "cache" and second.name == first.name
     cmp = filecmp.dircmp(first, second)
-    assert _identical(cmp), f"generated headers differ between two runs: {cmp.report_full_closure()}"
+    assert _identical(cmp), f"generated headers differ between two runs: {_differences(cmp)}"
+
+
+def _differences(cmp: filecmp.dircmp) -> list[str]:
+    """What differs, folder by folder (dircmp.report_full_closure() prints and returns None)."""
+    found = []
+    if not _identical_here(cmp):
+        only = sorted(cmp.left_only + cmp.right_only)
+        found.append(f"{cmp.left}: only in one run {only}, differing {sorted(cmp.diff_files + cmp.funny_files)}")
+    for sub in cmp.subdirs.values():
+        found += _differences(sub)
+    return found
+
+
+def _identical_here(cmp: filecmp.dircmp) -> bool:
+    return not (cmp.left_only or cmp.right_only or cmp.diff_files or cmp.funny_files)
 
 
 def _identical(cmp: filecmp.dircmp) -> bool:
-    if cmp.left_only or cmp.right_only or cmp.diff_files or cmp.funny_files:
+    if not _identical_here(cmp):
         return False
     _, mismatch, errors = filecmp.cmpfiles(cmp.left, cmp.right, cmp.common_files, shallow=False)
     return not mismatch and not errors and all(_identical(sub) for sub in cmp.subdirs.values())

@@ -507,17 +507,19 @@ def test_mimic_continuous_prismatic_and_an_existing_tag_follow_ros2_control(tmp_
     joints = _description_joints(root, "mobile")
     assert set(joints) == set(written["joint_map"])  # no mimic, no fixed joint; all exist in the URDF
 
-    def position_limits(name: str) -> tuple[str | None, str | None]:
+    def position_limits(name: str) -> tuple[float, float]:
         cmd = joints[name].find("command_interface[@name='position']")
         assert cmd is not None, name
-        return (cmd.findtext("param[@name='min']"), cmd.findtext("param[@name='max']"))
+        low, high = cmd.findtext("param[@name='min']"), cmd.findtext("param[@name='max']")
+        assert low is not None and high is not None, name
+        return float(low), float(high)
 
     for wheel in ("left_wheel_joint", "right_wheel_joint"):  # continuous: velocity-commanded, no position target
         assert joints[wheel].find("command_interface[@name='position']") is None, wheel
         assert joints[wheel].find("command_interface[@name='velocity']") is not None, wheel
         assert joints[wheel].find("state_interface[@name='position']") is not None, wheel
-    assert tuple(map(float, position_limits("lift_joint"))) == (0.0, 0.6)  # prismatic: metres
-    assert tuple(map(float, position_limits("wrist_joint"))) == (-2.9, 2.9)
+    assert position_limits("lift_joint") == (0.0, 0.6)  # prismatic: metres
+    assert position_limits("wrist_joint") == (-2.9, 2.9)
     syntax_check_driver(root / "generated" / PACKAGE, "acme", "mobile")
 
 

@@ -374,7 +374,8 @@ def invalid_inputs(draw):
     kind = draw(st.sampled_from(MUTATIONS))
     fixed = [j.name for j in spec.joints if j.type == "fixed"]
     mimic = [j.name for j in spec.joints if j.mimic is not None]
-    key, words = None, ()
+    key: str | None = None
+    words: tuple[str, ...] = ()
     if kind == "duplicate_index":
         assume(len(names) >= 2)
         a, b = sorted(draw(st.lists(st.integers(0, len(names) - 1), min_size=2, max_size=2, unique=True)))

@@ -26,6 +26,7 @@ from rhi_gen.pipeline.load import load_robots
 from rhi_gen.project import find_project
 from rhi_gen.render import environment as render_environment
 from rhi_gen.render.markers import REGION_BEGIN, REGION_END
+from rhi_gen.render.package import render_package
 from rhi_gen.write import transaction
 from rhi_gen.write.regions import region_bodies
 from tests.support.cli import cli, tree
@@ -258,7 +259,7 @@ def test_force_overwrites_and_keeps_numbered_backups(project, capsys):
 
 def test_region_the_template_dropped_is_refused_not_lost(project, capsys, monkeypatch):
     fill_region(project / G1_CPP, "callbacks", "void precious() {}\n")
-    original = pipeline_generate.render_package
+    original = render_package  # the function rhi_gen.pipeline.generate calls, before the patch
 
     def without_callbacks(models, **kwargs):
         out = original(models, **kwargs)
@@ -359,7 +360,9 @@ def test_check_reports_stale_inputs_and_file_differences(project, capsys):
 def test_check_catches_a_stale_manifest_even_when_files_match(project, capsys):
     manifest = project / MANIFEST
     text = manifest.read_text()
-    g1_yaml_hash = re.search(r'"path": "robots/unitree/g1.yaml", "sha256": "([0-9a-f]{64})"', text).group(1)
+    found = re.search(r'"path": "robots/unitree/g1.yaml", "sha256": "([0-9a-f]{64})"', text)
+    assert found is not None, text
+    g1_yaml_hash = found.group(1)
     manifest.write_text(text.replace(g1_yaml_hash, "0" * 64))
     code, out, _ = cli(capsys, project, "check")
     assert code == 1 and out.startswith("stale: unitree/g1: robots/unitree/g1.yaml changed\n")
@@ -404,12 +407,18 @@ def test_template_error_halfway_writes_nothing(project, capsys, monkeypatch):
     def broken_env():
         env = render_environment.make_environment()
         broken = jinja2.DictLoader({"templates/robot/test.cpp.j2": "{{ robot.no_such_field }}"})
+        assert env.loader is not None
         env.loader = jinja2.ChoiceLoader([broken, env.loader])
         real = env.get_template
-        env.get_template = lambda name, *a, **k: (rendered.append(name), real(name, *a, **k))[1]
+
+        def recording_get_template(name, *args, **kwargs):
+            rendered.append(name)
+            return real(name, *args, **kwargs)
+
+        monkeypatch.setattr(env, "get_template", recording_get_template)
         return env
 
-    original = pipeline_generate.render_package
+    original = render_package  # the function rhi_gen.pipeline.generate calls, before the patch
     monkeypatch.setattr(pipeline_generate, "render_package",
                         lambda models, **kwargs: original(models, env_factory=broken_env, **kwargs))
     code, _, err = cli(capsys, project, "generate")

@@ -176,8 +176,9 @@ def test_every_robot_has_a_gtest(package_dir):
 @pytest.mark.parametrize(("label", "distro"), JOBS, ids=[f"{label}-{distro}" for label, distro in JOBS])
 def test_gtest_compiles(results, label, distro):
     require_toolchain()
-    if _skip_reason(label):
-        pytest.skip(_skip_reason(label))
+    reason = _skip_reason(label)
+    if reason:
+        pytest.skip(reason)
     assert results[(label, distro)].syntax_error is None, results[(label, distro)].syntax_error
 
 
@@ -185,8 +186,9 @@ def test_gtest_compiles(results, label, distro):
 def test_gtest_runs_against_the_standin(results, label, distro):
     """No GTEST_SKIP on any supported distro: every test of the suite runs and passes."""
     require_toolchain()
-    if _skip_reason(label):
-        pytest.skip(_skip_reason(label))
+    reason = _skip_reason(label)
+    if reason:
+        pytest.skip(reason)
     result = results[(label, distro)]
     if result.syntax_error is not None:
         pytest.fail(f"{label}: does not compile (see test_gtest_compiles)")

@@ -24,6 +24,7 @@ from tests.support import vendor_msgs
 from tests.support.cpp_build import (
     DEFAULT_DISTRO,
     PACKAGE,
+    HarnessRun,
     RenderedPackage,
     build_harness,
     compile_data_buffer_stress,
@@ -190,7 +191,7 @@ class Outcome:
     robot: str            # "vendor/robot" or "data_buffer"
     built: bool
     build_error: str
-    run: object | None
+    run: HarnessRun | None    # None when it did not build
     seconds: float
     skipped: str | None = None   # why this robot was not built (its vendor messages are missing)
     not_applied: str | None = None  # the mutation does not apply as written (MutationError)
@@ -245,6 +246,7 @@ def _built(outcomes_of_one: list[Outcome]) -> list[Outcome]:
 def test_control_unmodified_package_passes(outcomes):
     for o in _built(outcomes["control"]):
         assert o.built, f"control {o.robot} does not build:\n{o.build_error[:4000]}"
+        assert o.run is not None
         assert o.run.returncode == 0 and o.run.failed == 0, f"control {o.robot}: {o.run.describe()}"
 
 
@@ -254,6 +256,7 @@ def test_mutation_is_caught(outcomes, mutation):
         assert o.built, (f"{mutation.id} ({mutation.what}): {o.robot} no longer compiles, so this mutation "
                          f"proves nothing; adjust it:\n{o.build_error[:4000]}")
         run = o.run
+        assert run is not None
         failed_sections = sorted(name for name, (_, f) in run.sections.items() if f > 0)
         assert run.returncode != 0, (f"{mutation.id} ({mutation.what}) was NOT caught for {o.robot}: "
                                      f"{run.passed} checks passed, none failed")

@@ -106,8 +106,9 @@ def test_constants_are_those_of_sdk_facts(package):
 @pytest.mark.parametrize("name", [p.name for p in vendor_msgs.PACKAGES])
 def test_every_driver_include_is_generated(name):
     p = vendor_msgs.package(name)
-    if vendor_msgs.missing_reason((p,)):
-        pytest.skip(vendor_msgs.missing_reason((p,)))
+    missing = vendor_msgs.missing_reason((p,))
+    if missing:
+        pytest.skip(missing)
     for m in p.messages:
         header = vendor_msgs.header_dir(name) / f"{_snake(Path(m).stem)}.hpp"
         assert header.is_file(), header
@@ -167,6 +168,7 @@ def test_missing_shared_skips_only_the_agibot_transport(tmp_path, monkeypatch):
     assert reason and str(tmp_path / "no_shared" / "aimdk_msgs") in reason, reason
     assert "\n" not in reason and "RHI_UPSTREAM" in reason and "../shared" in reason, reason
     agibot = vendor_msgs.skip_reason("agibot_topics")
+    assert agibot is not None
     assert agibot.startswith("agibot_topics needs vendor messages: message definitions of aimdk_msgs"), agibot
     assert "\n" not in agibot, agibot
     for transport in ("engineai_topics", "unitree_dds", "generic_topics", "custom"):

@@ -15,6 +15,7 @@ from collections.abc import Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pytest
 
@@ -22,6 +23,10 @@ from tests.support import vendor_msgs
 from tests.support.repo import REPO
 from tests.support.ros_msgs import wheel_include_dirs, wheels_digest
 from tests.support.xml_tree import attribute
+
+if TYPE_CHECKING:
+    from rhi_gen.model import RobotModel
+    from rhi_gen.pipeline.load import LoadedRobot
 
 STANDINS = REPO / "tests" / "cpp" / "standins"
 # Distro-independent stand-ins (rclcpp, pluginlib, unitree_sdk2, messages, rhi_fake hooks).
@@ -567,13 +572,13 @@ class CppBuilder:
 @dataclass
 class RobotBuild:
     """One robot of a rendered package, ready to build harness binaries."""
-    loaded: object
+    loaded: LoadedRobot
     package_dir: Path
     data_dir: Path
     data_header: str
 
     @property
-    def model(self):
+    def model(self) -> RobotModel:
         return self.loaded.model
 
     @property

@@ -92,6 +92,13 @@ def _origin(joint: etree._Element) -> tuple[float, ...]:
     return tuple(float(v) for a in attrs for v in a.split())
 
 
+def _link(joint: etree._Element, tag: str) -> str | None:
+    """The link= of the joint's <parent> or <child>, which every joint has."""
+    element = joint.find(tag)
+    assert element is not None, f"{joint.get('name')}: no <{tag}>"
+    return element.get("link")
+
+
 def _ours(vendor: str, robot: str) -> etree._Element:
     return _root(REPO / "robots" / vendor / f"{robot}.urdf")
 
@@ -127,8 +134,8 @@ def test_limits_axes_origins_tree_match_upstream(vendor, robot, upstream_file, r
         assert name in up_by_name, f"{name}: not an upstream joint"
         u = up_by_name[name]
         assert j.get("type") == u.get("type"), name
-        assert j.find("parent").get("link") == u.find("parent").get("link"), name
-        assert j.find("child").get("link") == u.find("child").get("link"), name
+        assert _link(j, "parent") == _link(u, "parent"), name
+        assert _link(j, "child") == _link(u, "child"), name
         assert _origin(j) == _origin(u), name
         if j.get("type") in ACTUATED_TYPES:
             assert _limits(j) == _limits(u), name
@@ -151,7 +158,7 @@ def test_urdf_is_a_skeleton_not_a_copy(vendor, robot, upstream_file, robot_name)
 
 
 def test_imu_frames_present():
-    g1 = {j.get("name"): j.find("child").get("link") for j in _joints(_ours("unitree", "g1"))}
+    g1 = {j.get("name"): _link(j, "child") for j in _joints(_ours("unitree", "g1"))}
     assert g1["imu_in_pelvis_joint"] == "imu_in_pelvis"
     assert g1["imu_in_torso_joint"] == "imu_in_torso"
     x2 = {j.get("name"): j for j in _joints(_ours("agibot", "x2"))}
@@ -208,7 +215,7 @@ def test_x2_yaml_groups_match_aimdk_order():
     for name, joints in X2_GROUPS:
         assert order[offset:offset + len(joints)] == joints, name
         offset += len(joints)
-    x2 = {j.get("name"): j.find("child").get("link") for j in _joints(_ours("agibot", "x2"))}
+    x2 = {j.get("name"): _link(j, "child") for j in _joints(_ours("agibot", "x2"))}
     assert cfg["imu"]["frame_id"] == x2["imu_in_torso_joint"]
 
 

@@ -8,6 +8,8 @@ import pytest
 
 from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.vendor_config import load_config
+from rhi_gen.transports.agibot_topics import AgibotTopicsOptions
+from rhi_gen.transports.generic_topics import GenericTopicsOptions
 from tests.support.repo import REPO
 
 BASE = """\
@@ -45,8 +47,10 @@ def test_base_config_loads_with_transport_defaults(tmp_path):
     assert cfg.float_type == "double"
     assert cfg.parameters.command_writer_period_us == 2000 and cfg.parameters.state_decimation == 1
     assert cfg.parameters.enable_monitor is True and cfg.parameters.network_interface == "lo"
-    assert cfg.transport_options.state_topic == "/hardware/joint_states"
-    assert cfg.transport_options.qos.reliability == "best_effort"
+    options = cfg.transport_options
+    assert isinstance(options, GenericTopicsOptions)
+    assert options.state_topic == "/hardware/joint_states"
+    assert options.qos.reliability == "best_effort"
     assert cfg.urdf == str(tmp_path / "arm.urdf")
 
 
@@ -59,6 +63,7 @@ def test_reference_yamls_load(robot):
 
 def test_agibot_groups_get_offsets():
     cfg = load_config(REPO / "robots/agibot/x2.yaml")
+    assert isinstance(cfg.transport_options, AgibotTopicsOptions)
     assert [(g.name, g.size, g.offset) for g in cfg.transport_options.groups] == [
         ("leg", 12, 0), ("waist", 3, 12), ("arm", 14, 15), ("head", 2, 29)]
 

@@ -99,12 +99,11 @@ public:
     return changed;
   }
 
-  // Controller thread (write()): take committed claims, then give every joint whose claims changed
-  // a command that cannot jump or carry another controller's gains: target = measured position, no
+  // Controller thread (write(), after take_committed()): give every joint whose claims changed a
+  // command that cannot jump or carry another controller's gains: target = measured position, no
   // velocity or effort, the default gains. Returns true when the storage changed.
   bool apply_committed(ControllerFrames<N, T> & frames)
   {
-    take_committed();
     if (!unapplied_) {
       return false;
     }

@@ -186,7 +186,8 @@ public:
     if (!safe_start_.state_copied()) {
       return false;
     }
-    // A mode switch first, so that the safe start below has the last word on a first cycle.
+    // A mode switch first (claims SystemDriver::write() took), so that the safe start below has the
+    // last word on a first cycle.
     bool rewritten = claims_.apply_committed(frames_);
     if (!safe_start_.command_initialized()) {
       // Target = measured position, zero gains: the robot stays passive until a controller

@@ -142,9 +142,6 @@ public:
 #endif
 
 protected:
-  // The framework owns the interface handles (4.34+): values change hands in read() / write().
-  static constexpr bool kFrameworkHandles = ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES != 0;
-
   // `logger` is the logger ros2_control gives the component (its own one on Humble).
   explicit SystemInterfaceAdapter(const rclcpp::Logger & logger)
   : logger_(logger)

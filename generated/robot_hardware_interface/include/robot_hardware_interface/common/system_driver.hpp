@@ -137,15 +137,14 @@ public:
   return_type write(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
   {
     const auto start = std::chrono::steady_clock::now();
-    // A mode switch changed the claims: from now on fetch only the claimed interfaces (this runs
-    // once per switch, never in the steady cycle; its first cycle sends the safe-start target).
-    if constexpr (kFrameworkHandles) {
-      CommandClaims<N, T> & claims = core_.claims();
-      if (claims.take_committed()) {
-        const JointStorage<N> & joints = core_.joints();
-        select_command_values(
-          [&claims, &joints](const double * value) {return claims.claims_value(joints, value);});
-      }
+    // Claims a mode switch committed: write_command() resets the joints whose claims changed (the
+    // switch cycle sends the safe-start target), and from now on only the claimed interfaces are
+    // fetched (once per switch, never in the steady cycle; a no-op on Humble).
+    CommandClaims<N, T> & claims = core_.claims();
+    if (claims.take_committed()) {
+      const JointStorage<N> & joints = core_.joints();
+      select_command_values(
+        [&claims, &joints](const double * value) {return claims.claims_value(joints, value);});
     }
     fetch_command_values();
     if (core_.write_command()) {

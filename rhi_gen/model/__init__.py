@@ -15,7 +15,7 @@ from .config import (
     TransportOptions,
     VendorConfig,
 )
-from .robot import InputProvenance, MotorJoint, RobotModel
+from .robot import CoupledGroup, InputProvenance, JointTransmission, MotorJoint, RobotModel
 from .urdf import (
     ACTUATED_TYPES,
     JointLimits,
@@ -30,9 +30,11 @@ __all__ = [
     "ACTUATED_TYPES",
     "FLOAT_TYPES",
     "MAX_MOTORS",
+    "CoupledGroup",
     "ImuConfig",
     "InputProvenance",
     "JointLimits",
+    "JointTransmission",
     "Mimic",
     "MotorJoint",
     "PackageInfo",

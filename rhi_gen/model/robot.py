@@ -12,6 +12,36 @@ from .urdf import JointLimits
 
 
 @dataclass(frozen=True)
+class JointTransmission:
+    """How a joint follows its motor, ros2_control's SimpleTransmission convention:
+    joint = direction * motor / reduction + offset (velocity without the offset, effort times
+    direction * reduction). The identity (1, 1.0, 0.0) is what the firmware of every reference robot
+    already applies. A coupled joint (``CoupledGroup``) keeps direction 1 and reduction 1: its matrix
+    says how it follows the motors, ``offset`` is still its zero."""
+    direction: int = 1       # +1 or -1
+    reduction: float = 1.0   # motor turns per joint turn, > 0
+    offset: float = 0.0      # joint value at motor zero [rad or m]
+    source: str = ""         # for messages: "" (default), "vendor YAML", "URDF <transmission name='...'>"
+
+    @property
+    def is_identity(self) -> bool:
+        return self.direction == 1 and self.reduction == 1.0 and self.offset == 0.0
+
+
+@dataclass(frozen=True)
+class CoupledGroup:
+    """n joints driven by n motors through a constant matrix (a differential wrist, a parallel ankle
+    the firmware does not solve): joint = matrix @ motor + offset, where motor k is the SDK slot of
+    ``joints[k]`` and offsets are the joints' ``JointTransmission.offset``. Velocities map by the same
+    matrix; efforts by the inverse transpose (power is conserved), as ros2_control's
+    DifferentialTransmission does."""
+    name: str                                  # the YAML entry's name or the URDF transmission's
+    joints: tuple[str, ...]                    # URDF joint names: the matrix's rows, and its columns' motors
+    matrix: tuple[tuple[float, ...], ...]      # joint per motor, len(joints) x len(joints), invertible
+    source: str = ""                           # "vendor YAML" | "URDF <transmission name='...'>"
+
+
+@dataclass(frozen=True)
 class MotorJoint:
     """A URDF joint driven by SDK slot ``index``."""
     name: str              # URDF joint name, raw text (escape with |cpp_string / |xml in templates)
@@ -25,6 +55,7 @@ class MotorJoint:
     default_stiffness: float = 0.0     # applied while no controller claims stiffness
     default_damping: float = 0.0       # applied while no controller claims damping
     initial_position: float = 0.0      # the description's initial_value (YAML initial_positions, or safe_pose)
+    transmission: JointTransmission = JointTransmission()  # motor -> joint (identity unless YAML / URDF say)
 
 
 @dataclass(frozen=True)
@@ -55,6 +86,7 @@ class RobotModel:
     parameters: Parameters
     transport_options: TransportOptions
     provenance: InputProvenance
+    coupled_groups: tuple[CoupledGroup, ...] = ()  # joints driven through a matrix of motors
     urdf_name: str = ""
     urdf_xml: str = ""        # the expanded URDF (no xacro banner, no machine paths): urdf/<robot>.urdf
 
@@ -79,6 +111,11 @@ class RobotModel:
         for j in self.joints:
             names[j.index] = j.name
         return tuple(names)
+
+    @property
+    def has_transmission(self) -> bool:
+        """Whether any joint's motor is not the joint itself (the driver then converts in read/write)."""
+        return bool(self.coupled_groups) or any(not j.transmission.is_identity for j in self.joints)
 
     @property
     def vendor_pascal(self) -> str:

@@ -17,6 +17,7 @@ from ..model import PackageInfo, RobotModel
 from .banner import SHARED_INPUTS, banner_for, package_inputs, robot_inputs
 from .bringup_views import description_view, launch_view, urdf_view
 from .cpp_layout import fold_cpp
+from .driver_views import driver_view
 from .environment import make_environment
 from .static_files import copy_static
 from .views import controllers_view, package_view, xacro_view
@@ -31,7 +32,8 @@ COMMON_FILES = tuple(
     for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
                  "hardware_parameters.hpp", "ros2_control_compat.hpp", "slot_kernels.hpp", "slot_table.hpp",
                  "safe_start.hpp", "state_freshness.hpp", "driver_monitor.hpp", "command_claims.hpp",
-                 "command_guard.hpp", "driver_core.hpp", "system_driver.hpp"))
+                 "command_guard.hpp", "joint_transmissions.hpp", "calibration_file.hpp", "driver_core.hpp",
+                 "system_driver.hpp"))
 TEST_FILES = (("cpp/test/hardware_interface_test.hpp", "test/hardware_interface_test.hpp"),)
 # Templates: what depends on the robots.
 PACKAGE_FILES = (
@@ -54,6 +56,7 @@ ROBOT_FILES = (
 
 # The view-model (render/views.py) each robot template gets as ``view``, beside ``robot``.
 ROBOT_VIEWS: dict[str, Callable[[RobotModel], object]] = {
+    "templates/robot/driver.cpp.j2": driver_view,
     "templates/robot/controllers.yaml.j2": controllers_view,
     "templates/robot/ros2_control.xacro.j2": xacro_view,
     "templates/robot/description.urdf.xacro.j2": description_view,

@@ -13,7 +13,9 @@ the package is rendered into a temporary folder, then:
   interfaces, for one robot per transport thread kind; ASan+UBSan and TSan on Rolling,
   framework-owned handles; on Kilted the driver object alone) with -Werror and linked into
   tests/cpp/harness/driver_harness.cpp, which creates it through pluginlib's registry and checks, per
-  section: interfaces, safety (the three layers, re-armed on re-activation), joint_map, imu, commands
+  section: interfaces, transmission (the robot's motors that are not joints, with a calibration_file on
+  top, state and commands through the whole transport; broken calibration files refused in one line),
+  safety (the three layers, re-armed on re-activation), joint_map, imu, commands
   (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
   SDK_FACTS.md vectors, every field, bad frames dropped), parameters (description values, defaults,
   overrides, invalid values), decimation, allocations (zero in read/write/callbacks/writer after
@@ -49,7 +51,8 @@ from tests.support.cpp_build import (
 from tests.support.description_checks import check_ros2_control
 
 ROBOTS = project_robot_labels()
-SECTION_ORDER = ("interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes",
+SECTION_ORDER = ("interfaces", "transmission", "safety", "joint_map", "imu", "commands", "command_safety",
+                 "command_modes",
                  "crc", "parameters", "decimation", "allocations", "threads")
 THREADS_MS = 300
 # (distro, flavour) of every build. RUN cells build the harness and drive the robot: plain on Humble
@@ -181,9 +184,13 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
     assert not reports, f"{label} ({flavour}): sanitizer reports:\n" + "\n".join(reports[:20]) + \
         f"\n{run.stderr[-6000:]}"
     assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{label} ({flavour}): {run.describe()}"
+    model = _robot(reference, label).model
     expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes", "parameters",
-                "decimation", "allocations", "threads"}
-    if _robot(reference, label).model.transport == "unitree_dds":
+                "decimation", "allocations", "threads", "transmission"}
+    if model.has_transmission:
+        # motors that are not joints: the exact motor = joint checks give way to the transmission section's
+        expected = {"interfaces", "transmission", "threads"}
+    if model.transport == "unitree_dds" and not model.has_transmission:
         expected.add("crc")
     missing = expected - set(run.sections)
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"

@@ -405,6 +405,7 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     lines += [
         "};",
         f"inline constexpr size_t kJointCount = {len(joint_map)};",
+        *transmission_lines(model, list(joint_map)),
         ("struct Group { const char* name; size_t offset; size_t size; const char* command_topic;"
          " const char* state_topic; };"),
         "inline constexpr Group kGroups[] = {",
@@ -450,6 +451,32 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
                 lines.append(f"    {{'P', {_c_string(key)}, {_c_string(value)}, \"\"}},")
     lines += ["};", "}  // namespace rhi_data", ""]
     return "\n".join(lines)
+
+
+def transmission_lines(model, joint_order: list[str]) -> list[str]:
+    """robot_data.hpp's motors-that-are-not-joints tables, per kJoints entry, written from the model's
+    transmissions (direction / reduction / offset and coupled matrices, which tests/unit check against the
+    YAML and the URDF) by formula: scale = direction / reduction, and every matrix entry by slot."""
+    by_name = {j.name: j for j in model.joints}
+    group_of = {name: g for g, group in enumerate(model.coupled_groups) for name in group.joints}
+    rows = []
+    for name in joint_order:
+        t = by_name[name].transmission
+        rows.append(f"    {{{_c_double(t.direction / t.reduction)}, {_c_double(t.offset)}, {group_of.get(name, -1)}}},")
+    weights = [f"    {{{by_name[row_joint].index}, {by_name[motor_joint].index}, {_c_double(value)}}},"
+               for group in model.coupled_groups
+               for row_joint, row in zip(group.joints, group.matrix, strict=True)
+               for motor_joint, value in zip(group.joints, row, strict=True)]
+    return [
+        "// motors that are not joints: joint = scale * motor + offset; a coupled joint (group >= 0):",
+        "// joint = sum of weight * motor over its kCoupledWeights + offset",
+        f"inline constexpr bool kHasTransmission = {'true' if model.has_transmission else 'false'};",
+        "struct Transmission { double scale; double offset; int group; };",
+        "inline constexpr Transmission kTransmissions[] = {", *rows, "};",
+        "struct CoupledWeight { size_t joint_slot; size_t motor_slot; double weight; };",
+        "inline constexpr CoupledWeight kCoupledWeights[] = {", *(weights or ["    {0, 0, 0.0},"]), "};",
+        f"inline constexpr size_t kCoupledWeightCount = {len(weights)};",
+    ]
 
 
 # ------------------------------------------------------------------------------------ compiling
@@ -832,3 +859,15 @@ def compile_data_buffer_stress(builder: CppBuilder, package_dir: Path, flavour: 
     if not obj.ok:
         return obj
     return builder.link([obj], FLAVOURS[flavour], f"data_buffer_{flavour}")
+
+
+def compile_transmission_checks(builder: CppBuilder, package_dir: Path, flavour: str, distro: str) -> CompileResult:
+    """tests/cpp/harness/transmission_checks.cpp against the package's common headers and ``distro``'s stand-ins."""
+    src = HARNESS_DIR / "transmission_checks.cpp"
+    includes = [package_dir / "include", HARNESS_DIR, *DISTROS[distro].include_dirs]
+    name = f"transmission_checks_{distro}_{flavour}"
+    obj = builder.compile(src, FLAVOURS[flavour], includes, name=name, distro=distro, transport="",
+                          digest_parts=[package_digest(package_dir), builder._harness])
+    if not obj.ok:
+        return obj
+    return builder.link([obj], FLAVOURS[flavour], name)

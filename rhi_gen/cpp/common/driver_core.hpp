@@ -9,15 +9,18 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <type_traits>
 
 #include <rclcpp/logging.hpp>
 
+#include "robot_hardware_interface/common/calibration_file.hpp"
 #include "robot_hardware_interface/common/command_claims.hpp"
 #include "robot_hardware_interface/common/command_guard.hpp"
 #include "robot_hardware_interface/common/data_buffer.hpp"
 #include "robot_hardware_interface/common/driver_monitor.hpp"
 #include "robot_hardware_interface/common/hardware_parameters.hpp"
+#include "robot_hardware_interface/common/joint_transmissions.hpp"
 #include "robot_hardware_interface/common/motor_types.hpp"
 #include "robot_hardware_interface/common/robot_spec.hpp"
 #include "robot_hardware_interface/common/safe_start.hpp"
@@ -32,7 +35,8 @@ namespace robot_hardware_interface
 // The robot-independent part of every driver: the hand-off of frames between its threads and the
 // three-layer safe start (safe_start.hpp), built from parts with one job each: the joint table
 // (SlotTable), command mode claims and bounds (CommandClaims), the command guard (CommandGuard),
-// state freshness and decimation (StateFreshness) and monitoring (DriverMonitor). It knows
+// state freshness and decimation (StateFreshness), monitoring (DriverMonitor) and motors that are
+// not joints (JointTransmissions: ros2_control sees joints, frames hold motors). It knows
 // nothing of ros2_control's API (SystemDriver adapts it) nor of any SDK (transports feed it).
 //
 // Threads:
@@ -52,9 +56,10 @@ public:
   using State = MotorState<N, T>;
   using Imu = ImuSample<T>;
 
-  explicit DriverCore(const RobotSpec & spec)
+  // `transmission`: the robot's motors that are not joints, nullptr when every motor is its joint.
+  explicit DriverCore(const RobotSpec & spec, const TransmissionSpec * transmission = nullptr)
   : spec_(spec), parameters_(spec.parameters), slots_(spec), monitor_(spec.node_name, parameters_),
-    claims_(slots_), guard_(monitor_, parameters_)
+    claims_(slots_), guard_(monitor_, parameters_), transmissions_(transmission)
   {
     claims_.update_command_bounds(frames_);
   }
@@ -72,6 +77,43 @@ public:
   rclcpp::Clock & throttle_clock() {return monitor_.throttle_clock();}
   bool has_imu() const {return spec_.imu_name != nullptr;}
   CommandClaims<N, T> & claims() {return claims_;}
+  const JointTransmissions<N> & transmissions() const {return transmissions_;}
+
+  // on_configure: the generated transmissions, then the calibration file at `path` ("" for none)
+  // on top. Returns "" or the one line that says why the robot cannot be configured (the
+  // generated transmissions are kept then). Not while read() / write() run.
+  std::string calibrate(const std::string & path)
+  {
+    transmissions_.reset();
+    if (!transmissions_.error().empty() || path.empty()) {
+      return transmissions_.error();
+    }
+    CalibrationFile file;
+    if (!file.read(path)) {
+      return file.error();
+    }
+    for (const CalibrationEntry & entry : file.entries()) {
+      const int slot = slots_.slot_of(entry.joint);
+      if (slot < 0) {
+        return file.describe(
+          entry.line, "'" + entry.joint + "' is not a joint of " + spec_.plugin_name,
+          "use the joint names of the ros2_control description");
+      }
+      if (entry.direction != 1.0 && transmissions_.is_coupled(static_cast<size_t>(slot))) {
+        return file.describe(
+          entry.line, "joint '" + entry.joint + "' is coupled: its direction is its group's matrix",
+          "give a coupled joint an offset only");
+      }
+    }
+    for (const CalibrationEntry & entry : file.entries()) {
+      transmissions_.calibrate(
+        static_cast<size_t>(slots_.slot_of(entry.joint)), entry.direction, entry.offset);
+    }
+    RCLCPP_INFO(
+      logger(), "calibration_file '%s': %zu joint(s) calibrated", path.c_str(),
+      file.entries().size());
+    return "";
+  }
 
   // ros2_control storage, exported as interfaces: controller thread only.
   JointStorage<N> & joints() {return frames_.joints;}
@@ -154,11 +196,20 @@ public:
     // state of this activation, so when it is set the frame fetched below is at least that new.
     const bool state_is_current = safe_start_.first_state_received();
     const State * state = motor_state_buffer_.get_data();
-    if (state != nullptr) {
+    if (state != nullptr && transmissions_.active()) {
+      for_each_slot_block<N>(
+        [this, state](auto count, size_t begin) {
+          transmit_state_block<decltype(count)::value>(
+            *state, transmissions_.factors(), frames_.joints, begin);
+        });
+      transmissions_.couple_state(*state, frames_.joints);
+    } else if (state != nullptr) {
       for_each_slot_block<N>(
         [this, state](auto count, size_t begin) {
           copy_state_block<decltype(count)::value>(*state, frames_.joints, begin);
         });
+    }
+    if (state != nullptr) {
       if (state_is_current) {
         safe_start_.mark_state_copied();
       }
@@ -210,6 +261,15 @@ public:
       const size_t slot = slots_.velocity_slots()[k];
       frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);
     }
+    // Bounded in joint space above; the motors' command from here.
+    if (transmissions_.active()) {
+      for_each_slot_block<N>(
+        [this](auto count, size_t begin) {
+          transmit_command_block<decltype(count)::value>(
+            transmissions_.factors(), frames_.command, begin);
+        });
+      transmissions_.couple_command(frames_.command);
+    }
     motor_command_buffer_.set_data(frames_.command);
     return rewritten;
   }
@@ -223,6 +283,7 @@ private:
   CommandGuard<N, T> guard_;
   SafeStart safe_start_;
   StateFreshness freshness_;
+  JointTransmissions<N> transmissions_;  // read() / write(); calibrated in on_configure
 
   // Thread-safe state/command exchange (producer -> one consumer each)
   // The state and IMU callbacks never overlap (they share the parsing buffers state_frame() and

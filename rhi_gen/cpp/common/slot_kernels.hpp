@@ -74,6 +74,56 @@ void copy_state_block(
   }
 }
 
+// Per slot, how the joint follows its motor (JointTransmissions builds it): joint = scale * motor +
+// offset, scale = direction / reduction; `inverse` = 1 / scale. The identity for an unmapped slot
+// and for a coupled joint (its group's matrix is applied after these kernels).
+template<size_t N>
+struct TransmissionFactors
+{
+  std::array<double, N> scale{};
+  std::array<double, N> offset{};
+  std::array<double, N> inverse{};
+};
+
+// read() on a robot with transmissions: copy_state_block through the factors (effort: power is
+// conserved, so it scales by the inverse).
+template<size_t Count, size_t N, typename T>
+ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
+void transmit_state_block(
+  const MotorState<N, T> & __restrict state, const TransmissionFactors<N> & __restrict factors,
+  JointStorage<N> & __restrict joints, size_t begin)
+{
+  for (size_t k = 0; k < Count; ++k) {
+    const size_t i = begin + k;
+    joints.pos[i] = factors.scale[i] * static_cast<double>(state.q[i]) + factors.offset[i];
+    joints.vel[i] = factors.scale[i] * static_cast<double>(state.dq[i]);
+    joints.tau[i] = factors.inverse[i] * static_cast<double>(state.tau[i]);
+  }
+}
+
+// write() on a robot with transmissions: the bounded joint-space command, in place, into motor
+// space. The motor's PD law reproduces the joint's: kp and kd scale by scale^2, the feed-forward
+// effort by scale. Signs are kept (a negative gain stays negative for the command guard), NaN
+// stays NaN.
+template<size_t Count, size_t N, typename T>
+ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
+void transmit_command_block(
+  const TransmissionFactors<N> & __restrict factors, MotorCommand<N, T> & __restrict command,
+  size_t begin)
+{
+  for (size_t k = 0; k < Count; ++k) {
+    const size_t i = begin + k;
+    const double scale = factors.scale[i];
+    const double inverse = factors.inverse[i];
+    command.q_target[i] =
+      static_cast<T>((static_cast<double>(command.q_target[i]) - factors.offset[i]) * inverse);
+    command.dq_target[i] = static_cast<T>(static_cast<double>(command.dq_target[i]) * inverse);
+    command.kp[i] = static_cast<T>(static_cast<double>(command.kp[i]) * (scale * scale));
+    command.kd[i] = static_cast<T>(static_cast<double>(command.kd[i]) * (scale * scale));
+    command.tau_ff[i] = static_cast<T>(static_cast<double>(command.tau_ff[i]) * scale);
+  }
+}
+
 // `value` in T, within [lower, upper]. Rounding to T is monotonic, so this equals bounding in
 // double and rounding after. A NaN stays NaN, for next_command() to reject.
 template<typename T>

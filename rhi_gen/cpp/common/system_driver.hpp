@@ -68,6 +68,19 @@ public:
     transport_->shutdown();
   }
 
+  // Calibration without a rebuild: the `calibration_file` hardware parameter, read here so that
+  // cleanup + configure picks up a re-zeroed motor. A bad file refuses the configuration (FAILURE:
+  // the component stays unconfigured, fix the file and configure again) with one error line.
+  CallbackReturn on_configure(const rclcpp_lifecycle::State & /*previous_state*/) override
+  {
+    const std::string problem = core_.calibrate(calibration_file_);
+    if (!problem.empty()) {
+      RCLCPP_ERROR(core_.logger(), "%s", problem.c_str());
+      return CallbackReturn::FAILURE;
+    }
+    return CallbackReturn::SUCCESS;
+  }
+
   CallbackReturn on_activate(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
     core_.reset_for_activation();
@@ -154,9 +167,12 @@ public:
   }
 
 protected:
-  SystemDriver(const RobotSpec & spec, std::unique_ptr<DriverTransport<N, T>> transport)
+  // `transmission`: the robot's motors that are not joints (nullptr: every motor is its joint).
+  SystemDriver(
+    const RobotSpec & spec, std::unique_ptr<DriverTransport<N, T>> transport,
+    const TransmissionSpec * transmission = nullptr)
   : SystemInterfaceAdapter(rclcpp::get_logger(spec.node_name)),
-    core_(spec), transport_(std::move(transport))
+    core_(spec, transmission), transport_(std::move(transport))
   {
   }
 
@@ -191,6 +207,13 @@ private:
     {
       return CallbackReturn::ERROR;
     }
+    if (!core_.transmissions().error().empty()) {
+      RCLCPP_ERROR(log, "%s", core_.transmissions().error().c_str());
+      return CallbackReturn::ERROR;
+    }
+    const auto calibration = info.hardware_parameters.find("calibration_file");
+    calibration_file_ = calibration == info.hardware_parameters.end() ?
+      std::string() : std::string(trimmed(calibration->second));
     const CallbackReturn user = on_init_hook(info);
     if (user != CallbackReturn::SUCCESS) {
       return user;
@@ -339,6 +362,7 @@ private:
 
   DriverCore<N, T> core_;
   std::unique_ptr<DriverTransport<N, T>> transport_;
+  std::string calibration_file_;  // the `calibration_file` hardware parameter, "" for none
 };
 
 }  // namespace robot_hardware_interface

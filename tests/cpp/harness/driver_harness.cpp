@@ -11,6 +11,7 @@
 // Sections (see tests/cpp/harness/README.md): interfaces, safety, joint_map, imu, commands,
 // command_safety, crc, parameters, decimation, allocations, threads.
 // Output: "section <name>: P passed, F failed" per section and "rhi-check: P passed, F failed".
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cinttypes>
@@ -27,6 +28,8 @@
 #include <thread>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>
 
 #include <hardware_interface/system_interface.hpp>
 #include <rclcpp/rclcpp.hpp>
@@ -217,6 +220,42 @@ void check_state_interfaces(const Interfaces& ifs, const StateFrame& f, const ch
     CHECK_EQ(ifs.vel[k]->get(), f.dq[j.slot], "%s: %s/velocity = SDK slot %zu", what, j.name, j.slot);
     CHECK_EQ(ifs.eff[k]->get(), f.tau[j.slot], "%s: %s/effort = SDK slot %zu", what, j.name, j.slot);
   }
+}
+
+// Zero heap allocations in the hot paths after warm-up: 200 cycles of state callback, IMU
+// callback, read(), write() and command writer, each counted; prints the "allocations over" line.
+void check_hot_path_allocations(Transport& t, SystemInterface& hw, Interfaces& ifs, const ControllerCommand& cmd) {
+  // Warm up: the fakes size their retained messages on first use.
+  for (uint32_t k = 0; k < 20; ++k) {
+    t.prepare_state(coded_state(k));
+    t.deliver_prepared();
+    t.deliver_prepared_imu();
+    hw.read(kTime, kPeriod);
+    apply_command(ifs, cmd);
+    hw.write(kTime, kPeriod);
+    t.tick_writer();
+  }
+  uint64_t in_state = 0, in_imu = 0, in_read = 0, in_write = 0, in_writer = 0;
+  constexpr uint32_t kCycles = 200;
+  const uint64_t sent_before = t.sent_messages();
+  for (uint32_t k = 0; k < kCycles; ++k) {
+    t.prepare_state(coded_state(100 + k));  // harness side, not counted
+    in_state += rhi_alloc::count_in([&] { t.deliver_prepared(); });
+    in_imu += rhi_alloc::count_in([&] { t.deliver_prepared_imu(); });
+    in_read += rhi_alloc::count_in([&] { hw.read(kTime, kPeriod); });
+    in_write += rhi_alloc::count_in([&] { hw.write(kTime, kPeriod); });
+    in_writer += rhi_alloc::count_in([&] { t.tick_writer(); });
+  }
+  std::printf("allocations over %u cycles: state callback %" PRIu64 ", IMU callback %" PRIu64 ", read() %" PRIu64
+              ", write() %" PRIu64 ", command writer %" PRIu64 "\n",
+              kCycles, in_state, in_imu, in_read, in_write, in_writer);
+  CHECK_EQ(t.sent_messages() - sent_before, kCycles * Transport::command_messages_per_cycle(),
+           "the measured cycles really sent commands");
+  CHECK_EQ(in_state, 0U, "heap allocations in the state callback");
+  CHECK_EQ(in_imu, 0U, "heap allocations in the IMU callback");
+  CHECK_EQ(in_read, 0U, "heap allocations in read()");
+  CHECK_EQ(in_write, 0U, "heap allocations in write()");
+  CHECK_EQ(in_writer, 0U, "heap allocations in the command writer");
 }
 
 // ================================================================ interfaces
@@ -680,37 +719,7 @@ void test_main_scenario() {
 
   {
     rhi_check::Section section("allocations");
-    // Warm up: the fakes size their retained messages on first use.
-    ControllerCommand cmd = distinct_command(1);
-    for (uint32_t k = 0; k < 20; ++k) {
-      t.prepare_state(coded_state(k));
-      t.deliver_prepared();
-      t.deliver_prepared_imu();
-      hw.read(kTime, kPeriod);
-      apply_command(ifs, cmd);
-      hw.write(kTime, kPeriod);
-      t.tick_writer();
-    }
-    uint64_t in_state = 0, in_imu = 0, in_read = 0, in_write = 0, in_writer = 0;
-    constexpr uint32_t kCycles = 200;
-    const uint64_t sent_before = t.sent_messages();
-    for (uint32_t k = 0; k < kCycles; ++k) {
-      t.prepare_state(coded_state(100 + k));  // harness side, not counted
-      in_state += rhi_alloc::count_in([&] { t.deliver_prepared(); });
-      in_imu += rhi_alloc::count_in([&] { t.deliver_prepared_imu(); });
-      in_read += rhi_alloc::count_in([&] { hw.read(kTime, kPeriod); });
-      in_write += rhi_alloc::count_in([&] { hw.write(kTime, kPeriod); });
-      in_writer += rhi_alloc::count_in([&] { t.tick_writer(); });
-    }
-    std::printf("allocations over %u cycles: state callback %" PRIu64 ", IMU callback %" PRIu64 ", read() %" PRIu64
-                ", write() %" PRIu64 ", command writer %" PRIu64 "\n",
-                kCycles, in_state, in_imu, in_read, in_write, in_writer);
-    CHECK_EQ(t.sent_messages() - sent_before, kCycles * per_cycle, "the measured cycles really sent commands");
-    CHECK_EQ(in_state, 0U, "heap allocations in the state callback");
-    CHECK_EQ(in_imu, 0U, "heap allocations in the IMU callback");
-    CHECK_EQ(in_read, 0U, "heap allocations in read()");
-    CHECK_EQ(in_write, 0U, "heap allocations in write()");
-    CHECK_EQ(in_writer, 0U, "heap allocations in the command writer");
+    check_hot_path_allocations(t, hw, ifs, distinct_command(1));
   }
 
   {
@@ -1115,17 +1124,19 @@ void test_crc_functions() {
 // monitor thread reading what the robot received. Every frame encodes one code in every joint's
 // position; a frame mixing codes within one consistency group is torn.
 // In a command (`present` given) a velocity-commanded joint carries its measured position, not a
-// code: it is left out.
+// code: it is left out. `q` holds motor positions: a command's joint is where they put it; a state's
+// coupled joint, whose motors the caller cannot recover from its joint value, is left out.
 bool consistent_group(const std::array<double, N>& q, const std::array<bool, N>* present, size_t group, int* code) {
   int first = -1;
   for (const Joint& j : kJoints) {
-    if (j.group != group || !position_range(j).usable() || (present != nullptr && j.mode != 0)) {
+    if (j.group != group || !position_range(j).usable() || (present != nullptr && j.mode != 0) ||
+        (present == nullptr && is_coupled(j))) {
       continue;
     }
     if (present != nullptr && !(*present)[j.slot]) {
       return false;
     }
-    const int d = decode_position(j, q[j.slot]);
+    const int d = decode_position(j, present != nullptr ? joint_value(j, q, true) : q[j.slot]);
     if (first < 0) {
       first = d;
     } else if (d != first) {
@@ -1206,8 +1217,9 @@ void test_threads(int duration_ms) {
     std::array<double, N> q{};
     bool any = false;
     for (size_t k = 0; k < kJointCount; ++k) {
-      q[kJoints[k].slot] = rig.ifs.pos[k]->get();
-      any = any || q[kJoints[k].slot] != 0.0;
+      const double joint = rig.ifs.pos[k]->get();
+      q[kJoints[k].slot] = is_coupled(kJoints[k]) ? joint : motor_position(kJoints[k], joint);
+      any = any || joint != 0.0;
     }
     if (any) {
       ++states_seen;
@@ -1245,6 +1257,221 @@ void test_threads(int duration_ms) {
   CHECK_EQ(torn_states, 0U, "torn state frames seen by read()");
   CHECK_EQ(torn_commands.load(), 0U, "torn command frames received by the robot");
   CHECK_EQ(crc_errors.load(), 0U, "commands with a wrong CRC");
+}
+
+// ================================================================ transmission
+// Motors that are not joints, through the whole transport: the robot's generated transmissions
+// (robot_data.hpp's kTransmissions / kCoupledWeights; the identity for most robots) with a
+// calibration_file on top, read at on_configure. The state interfaces show the joints the motors
+// make, the safe start holds the measured pose, the motors receive what puts the joints where the
+// controller commanded (velocities, efforts and gains through the ratios), and a broken
+// calibration file refuses on_configure with one error line.
+const rclcpp_lifecycle::State kUnconfigured(lifecycle_msgs::msg::State::PRIMARY_STATE_UNCONFIGURED, "unconfigured");
+
+bool near(double got, double want, double tolerance) {
+  return std::fabs(got - want) <= tolerance * (1.0 + std::fabs(want));
+}
+
+std::string write_calibration(const char* name, const std::string& text) {
+  const char* dir = std::getenv("TMPDIR");
+  const std::string path = std::string(dir != nullptr ? dir : "/tmp") + "/rhi_harness_" + std::to_string(getpid()) +
+                           "_" + name + ".yaml";
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (f != nullptr) {
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+  }
+  return path;
+}
+
+void test_transmission() {
+  rhi_check::Section section("transmission");
+  // The calibration: the first simple position joint reversed and offset, the second offset, the
+  // first coupled joint offset (a coupled joint takes no direction).
+  std::array<double, kJointCount> direction{};
+  std::array<double, kJointCount> offset{};
+  direction.fill(1.0);
+  std::string text = "# harness calibration\n";
+  int simple_seen = 0;
+  bool coupled_seen = false;
+  for (size_t k = 0; k < kJointCount; ++k) {
+    const Joint& j = kJoints[k];
+    if (is_coupled(j) && !coupled_seen) {
+      coupled_seen = true;
+      offset[k] = 0.0625;
+      text += std::string("'") + j.name + "':\n  offset: 0.0625\n";
+    } else if (!is_coupled(j) && j.mode == 0 && simple_seen == 0) {
+      ++simple_seen;
+      direction[k] = -1.0;
+      offset[k] = 0.25;
+      text += std::string(j.name) + ": {offset: 0.25, direction: -1}  # remounted\n";
+    } else if (!is_coupled(j) && j.mode == 0 && simple_seen == 1) {
+      ++simple_seen;
+      offset[k] = -0.125;
+      text += std::string("\"") + j.name + "\": {offset: -0.125}\n";
+    }
+  }
+  const std::string path = write_calibration("good", text);
+  // Joint value of kJoints[k] from motor values, with the calibration.
+  auto joint = [&](size_t k, const std::array<double, N>& m, bool with_offset) {
+    const Joint& j = kJoints[k];
+    return direction[k] * joint_value(j, m, false) + (with_offset ? kTransmissions[k].offset + offset[k] : 0.0);
+  };
+
+  fresh_process();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["calibration_file"] = path;
+  bool ready = setup(rig, info);
+  if (ready) {
+    const CallbackReturn r = rig.hw->on_configure(kUnconfigured);
+    CHECK(r == CallbackReturn::SUCCESS, "on_configure with a valid calibration file returned %d", static_cast<int>(r));
+    ready = r == CallbackReturn::SUCCESS && activate(rig);
+  }
+  if (!ready) {
+    teardown(rig);
+    std::remove(path.c_str());
+    return;
+  }
+  Transport& t = rig.t;
+  SystemInterface& hw = *rig.hw;
+  const StateFrame s0 = distinct_state(0);
+  t.deliver_state(s0);
+  hw.read(kTime, kPeriod);
+  for (size_t k = 0; k < kJointCount; ++k) {
+    const Joint& j = kJoints[k];
+    CHECK(near(rig.ifs.pos[k]->get(), joint(k, s0.q, true), 1e-9), "%s/position %.9g: the joint its motors make (%.9g)",
+          j.name, rig.ifs.pos[k]->get(), joint(k, s0.q, true));
+    CHECK(near(rig.ifs.vel[k]->get(), joint(k, s0.dq, false), 1e-9), "%s/velocity %.9g, expected %.9g", j.name,
+          rig.ifs.vel[k]->get(), joint(k, s0.dq, false));
+    if (!is_coupled(j)) {
+      const double want = s0.tau[j.slot] / (direction[k] * kTransmissions[k].scale);
+      CHECK(near(rig.ifs.eff[k]->get(), want, 1e-9), "%s/effort %.9g, expected %.9g", j.name, rig.ifs.eff[k]->get(),
+            want);
+    }
+  }
+  // A coupled group's joint efforts, taken back through the matrix's transpose, are its motors'.
+  for (size_t e = 0; e < kCoupledWeightCount; ++e) {
+    const size_t motor = kCoupledWeights[e].motor_slot;
+    double back = 0.0;
+    for (size_t f = 0; f < kCoupledWeightCount; ++f) {
+      if (kCoupledWeights[f].motor_slot == motor) {
+        const Joint* j = joint_of_slot(kCoupledWeights[f].joint_slot);
+        back += kCoupledWeights[f].weight * rig.ifs.eff[index_of(*j)]->get();
+      }
+    }
+    CHECK(near(back, s0.tau[motor], 1e-9), "coupled motor %zu effort %.9g from its joints, measured %.9g", motor, back,
+          s0.tau[motor]);
+  }
+  // The safe start holds the measured pose (within the joint's limits: a calibration may put a
+  // joint outside them), no gains.
+  CommandFrame c;
+  hw.write(kTime, kPeriod);
+  t.tick_writer();
+  if (last_command(t, c, "transmission safe start")) {
+    for (const Joint& j : kJoints) {
+      const size_t k = index_of(j);
+      const double measured = joint(k, s0.q, true);
+      const double held = j.mode == 0 ? std::min(std::max(measured, j.lower), j.upper) : measured;
+      CHECK(near(joint(k, c.q, true), held, 1e-6), "safe start: the motors hold %s at %.9g, measured %.9g", j.name,
+            joint(k, c.q, true), measured);
+      if (c.has_gains) {
+        CHECK_EQ(c.kp[j.slot], 0.0, "safe start: motor of %s stiffness", j.name);
+        CHECK_EQ(c.kd[j.slot], 0.0, "safe start: motor of %s damping", j.name);
+      }
+    }
+  }
+  // A controller's command: the motors receive what puts the joints there.
+  const ControllerCommand cmd = distinct_command(0);
+  apply_command(rig.ifs, cmd);
+  hw.write(kTime, kPeriod);
+  t.tick_writer();
+  if (last_command(t, c, "transmission commands")) {
+    for (size_t k = 0; k < kJointCount; ++k) {
+      const Joint& j = kJoints[k];
+      const size_t s = j.slot;
+      if (j.mode == 0) {
+        CHECK(near(joint(k, c.q, true), cmd.q[s], 1e-6), "%s: the motors put the joint at %.9g, commanded %.9g", j.name,
+              joint(k, c.q, true), cmd.q[s]);
+      } else {
+        CHECK(near(c.q[s], s0.q[s], 1e-6), "velocity-commanded %s: motor target = its measured position", j.name);
+      }
+      CHECK(near(joint(k, c.dq, false), cmd.dq[s], 1e-6), "%s: joint velocity %.9g from the motors, commanded %.9g",
+            j.name, joint(k, c.dq, false), cmd.dq[s]);
+      if (is_coupled(j)) {
+        continue;
+      }
+      const double scale = direction[k] * kTransmissions[k].scale;
+      CHECK(near(c.tau[s], cmd.ff[s] * scale, 1e-6), "%s: motor feed-forward %.9g, expected %.9g", j.name, c.tau[s],
+            cmd.ff[s] * scale);
+      if (c.has_gains) {
+        const double kp = j.mode == 0 ? cmd.kp[s] : 0.0;
+        CHECK(near(c.kp[s], kp * scale * scale, 1e-6), "%s: motor stiffness %.9g, expected %.9g", j.name, c.kp[s],
+              kp * scale * scale);
+        CHECK(near(c.kd[s], cmd.kd[s] * scale * scale, 1e-6), "%s: motor damping %.9g, expected %.9g", j.name, c.kd[s],
+              cmd.kd[s] * scale * scale);
+      }
+    }
+    // Coupled motors: effort by the transpose, gains the diagonal of transpose * diag(k) * matrix.
+    for (size_t e = 0; e < kCoupledWeightCount; ++e) {
+      const size_t motor = kCoupledWeights[e].motor_slot;
+      double ff = 0.0, kp = 0.0, kd = 0.0;
+      for (size_t f = 0; f < kCoupledWeightCount; ++f) {
+        if (kCoupledWeights[f].motor_slot == motor) {
+          const double w = kCoupledWeights[f].weight;
+          const size_t js = kCoupledWeights[f].joint_slot;
+          ff += w * cmd.ff[js];
+          kp += w * w * (joint_of_slot(js)->mode == 0 ? cmd.kp[js] : 0.0);
+          kd += w * w * cmd.kd[js];
+        }
+      }
+      CHECK(near(c.tau[motor], ff, 1e-6), "coupled motor %zu feed-forward %.9g, expected %.9g", motor, c.tau[motor], ff);
+      if (c.has_gains) {
+        CHECK(near(c.kp[motor], kp, 1e-6), "coupled motor %zu stiffness %.9g, expected %.9g", motor, c.kp[motor], kp);
+        CHECK(near(c.kd[motor], kd, 1e-6), "coupled motor %zu damping %.9g, expected %.9g", motor, c.kd[motor], kd);
+      }
+    }
+  }
+  if (kHasTransmission) {
+    // The main scenario's allocation count assumes motors that are their joints: measured here.
+    check_hot_path_allocations(t, hw, rig.ifs, cmd);
+  }
+  teardown(rig);
+  std::remove(path.c_str());
+
+  // A broken calibration file: on_configure refuses (FAILURE: fix it and configure again) with
+  // exactly one error line naming the file, the line and the fix.
+  struct Broken {
+    const char* name;
+    std::string text;
+    std::string says;
+  };
+  const std::string first = kJoints[0].name;
+  const Broken broken[] = {
+      {"unknown", "rhi_no_such_joint: {offset: 0.1}\n", "line 1: 'rhi_no_such_joint' is not a joint of"},
+      {"degrees", "\n'" + first + "': {offset: 90}\n", "line 2: joint '" + first + "': offset 90 is beyond one turn"},
+      {"nan", "'" + first + "':\n  offset: .nan\n", "is not a finite number"},
+  };
+  for (const Broken& b : broken) {
+    fresh_process();
+    Rig bad;
+    const std::string bad_path = write_calibration(b.name, b.text);
+    hardware_interface::HardwareInfo bad_info = make_hardware_info();
+    bad_info.hardware_parameters["calibration_file"] = bad_path;
+    if (setup(bad, bad_info)) {
+      rhi_fake::logs::clear();
+      const CallbackReturn r = bad.hw->on_configure(kUnconfigured);
+      CHECK(r == CallbackReturn::FAILURE, "%s calibration file: on_configure returned %d, not FAILURE", b.name,
+            static_cast<int>(r));
+      CHECK_EQ(rhi_fake::logs::count(Severity::Error), 1U, "%s calibration file: error lines", b.name);
+      CHECK_EQ(rhi_fake::logs::count_containing(("calibration_file '" + bad_path + "' ").c_str(), Severity::Error), 1U,
+               "%s calibration file: the error names the file", b.name);
+      CHECK_EQ(rhi_fake::logs::count_containing(b.says, Severity::Error), 1U, "%s calibration file: the error says '%s'",
+               b.name, b.says.c_str());
+    }
+    teardown(bad);
+    std::remove(bad_path.c_str());
+  }
 }
 
 #if defined(RHI_CUSTOM_EXPECT_UNFILLED)
@@ -1312,7 +1539,13 @@ int main(int argc, char** argv) {
     test_unfilled_refuses_activation();
     only = "none";  // the other scenarios need a filled transport
 #endif
+    if (kHasTransmission && only.empty()) {
+      // The main scenario, decimation and parameters compare exact motor values with joint values.
+      std::printf("motors that are not joints: sections interfaces, transmission, threads\n");
+      only = "interfaces,transmission,threads";
+    }
     if (selected(only, "interfaces")) test_interfaces();
+    if (selected(only, "transmission")) test_transmission();
     if (selected(only, "main")) test_main_scenario();
     if (selected(only, "parameters")) test_parameters();
     if (selected(only, "decimation")) test_decimation_keeps_state_fresh();

@@ -303,4 +303,31 @@ inline void apply_command(Interfaces& ifs, const ControllerCommand& c) {
   }
 }
 
+// ---------------------------------------------------------------- motors that are not joints
+// robot_data.hpp's kTransmissions (per kJoints entry) and kCoupledWeights, written from the model
+// by formula; identity for a robot whose motors are its joints.
+inline size_t index_of(const Joint& j) { return static_cast<size_t>(&j - kJoints); }
+inline bool is_coupled(const Joint& j) { return kTransmissions[index_of(j)].group >= 0; }
+
+// The joint value motor values `m` (positions, or velocities without the offset) make.
+inline double joint_value(const Joint& j, const std::array<double, N>& m, bool with_offset) {
+  const Transmission& t = kTransmissions[index_of(j)];
+  double v = with_offset ? t.offset : 0.0;
+  if (t.group < 0) {
+    return v + t.scale * m[j.slot];
+  }
+  for (size_t e = 0; e < kCoupledWeightCount; ++e) {
+    if (kCoupledWeights[e].joint_slot == j.slot) {
+      v += kCoupledWeights[e].weight * m[kCoupledWeights[e].motor_slot];
+    }
+  }
+  return v;
+}
+
+// A simple joint's motor position for joint position `v` (coupled joints have no such inverse here).
+inline double motor_position(const Joint& j, double v) {
+  const Transmission& t = kTransmissions[index_of(j)];
+  return (v - t.offset) / t.scale;
+}
+
 }  // namespace rhi_test

@@ -65,6 +65,40 @@ struct RobotSpec
   ParameterDefaults parameters;
 };
 
+// How one joint follows its motor, ros2_control's SimpleTransmission convention:
+// joint = direction * motor / reduction + offset; velocity without the offset; effort times
+// direction * reduction (power is conserved). A coupled joint (CoupledJointsSpec) has direction 1
+// and reduction 1 here: its group's matrix says how it follows the motors, `offset` is its zero.
+struct JointTransmissionSpec
+{
+  size_t slot;       // the joint's SDK motor slot
+  double direction;  // +1 or -1
+  double reduction;  // motor turns per joint turn, > 0
+  double offset;     // joint value at motor zero [rad or m]
+};
+
+// n joints driven by n motors through a constant matrix (a differential wrist, a parallel ankle):
+// joint = matrix * motor + offset, where motor k is the SDK slot of joint k (ros2_control's
+// DifferentialTransmission is one such matrix). Velocities map by the same matrix, efforts by its
+// inverse transpose.
+struct CoupledJointsSpec
+{
+  const char * name;      // the group's name, for log lines
+  size_t size;            // n
+  const size_t * slots;   // the joints' SDK slots, n of them: rows of the matrix and its motors
+  const double * matrix;  // n x n, row-major: joint per motor
+};
+
+// The robot's transmissions: only joints that are not their motor are listed (and every joint of
+// a coupled group, for its offset). A robot without any has none (nullptr in SystemDriver).
+struct TransmissionSpec
+{
+  const JointTransmissionSpec * joints;
+  size_t joint_count;
+  const CoupledJointsSpec * groups;
+  size_t group_count;
+};
+
 // True when every joint has its own slot below `motor_count`: robot sources static_assert it.
 template<size_t M>
 constexpr bool slots_are_valid(const std::array<JointSpec, M> & joints, size_t motor_count)

@@ -17,6 +17,9 @@ code through the harness's fake robot (tests/cpp/harness/transport_<transport>.h
 * readwrite_pos  read() + write() of one controller cycle with a producer thread delivering state, under
                  a position-only claim (each joint's position, or velocity for a wheel: the common case)
 * readwrite_all  the same with every command interface claimed
+* readwrite_cal  readwrite_all with a calibration_file that offsets every joint: the motors are not the
+                 joints, so read() and write() convert between them (the cost of a robot with transmissions;
+                 readwrite_all is the same robot without)
 
 with monitoring on (enable_monitor = true), and, in the same binary, the floors over the same
 arrays: a memcpy, and the seed template's std::shared_mutex hand-off (the writer takes a unique
@@ -72,11 +75,11 @@ from tests.support import cpp_build, vendor_msgs  # noqa: E402
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
 TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics"}
-DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite_pos", "readwrite_all")
-READWRITE_PATHS = ("readwrite_pos", "readwrite_all")
+DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite_pos", "readwrite_all", "readwrite_cal")
+READWRITE_PATHS = ("readwrite_pos", "readwrite_all", "readwrite_cal")
 FLOOR_OF = {"state": "state", "state_dec4": "state", "writer": "writer", "readwrite_pos": "readwrite",
-            "readwrite_all": "readwrite"}
-LOCKS_OF = {"readwrite_pos": "locks_pos", "readwrite_all": "locks_all"}
+            "readwrite_all": "readwrite", "readwrite_cal": "readwrite"}
+LOCKS_OF = {"readwrite_pos": "locks_pos", "readwrite_all": "locks_all", "readwrite_cal": "locks_all"}
 DEFAULT_DISTROS = ("humble", "jazzy", "rolling")
 FLAGS = ("-O2", "-g")  # -g: function names for callgrind's per-function figures; code is the same
 

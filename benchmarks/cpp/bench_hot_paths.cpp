@@ -13,6 +13,8 @@
 //               state, under a position-only claim (each joint's position, velocity for a
 //               velocity-commanded joint: the robot's position controller, the common case)
 //   readwrite_all  the same with every command interface claimed
+//   readwrite_cal  readwrite_all with a calibration_file offsetting every joint: the motors are not
+//                  the joints, so read() and write() convert (what a robot with transmissions costs)
 // and, in the same binary, the floors over the same arrays:
 //   memcpy_*    memcpy of the arrays the path moves (state: q, dq, tau + 10 IMU values; writer:
 //               q, dq, tau, kp, kd; readwrite: both)
@@ -44,6 +46,7 @@
 #include <tuple>
 #include <vector>
 
+#include <unistd.h>
 #include <valgrind/callgrind.h>
 
 #include <hardware_interface/system_interface.hpp>
@@ -75,6 +78,7 @@ using CallbackReturn = rclcpp_lifecycle::node_interfaces::LifecycleNodeInterface
 
 const rclcpp::Time kTime(0, 0, RCL_ROS_TIME);
 const rclcpp::Duration kPeriod(0, 2000000);
+const rclcpp_lifecycle::State kUnconfigured(lifecycle_msgs::msg::State::PRIMARY_STATE_UNCONFIGURED, "unconfigured");
 const rclcpp_lifecycle::State kInactive(lifecycle_msgs::msg::State::PRIMARY_STATE_INACTIVE, "inactive");
 const rclcpp_lifecycle::State kActive(lifecycle_msgs::msg::State::PRIMARY_STATE_ACTIVE, "active");
 
@@ -149,10 +153,20 @@ __attribute__((noinline)) void handle_locks(Rig& rig) {
 
 // Initialised, exported, activated (monitoring on, as the issue measures), first state delivered,
 // a controller command in the command interfaces and the writer warmed up.
-void start(Rig& rig, uint32_t decimation, Claim claim_kind) {
+// `calibrated`: a calibration_file gives every joint a small offset, so read() and write() convert
+// between motors and joints (the path of a robot with transmissions).
+void start(Rig& rig, uint32_t decimation, Claim claim_kind, bool calibrated) {
   rhi_fake::reset_all();
   rclcpp::init(0, nullptr);
   hardware_interface::HardwareInfo info = make_hardware_info();
+  if (calibrated) {
+    const std::string path = "/tmp/rhi_bench_calibration_" + std::to_string(getpid()) + ".yaml";
+    FILE* f = std::fopen(path.c_str(), "w");
+    if (f == nullptr) fail("cannot write the calibration file");
+    for (const Joint& j : kJoints) std::fprintf(f, "'%s': {offset: 0.001}\n", j.name);
+    std::fclose(f);
+    info.hardware_parameters["calibration_file"] = path;
+  }
   info.hardware_parameters["enable_monitor"] = "true";
   info.hardware_parameters["state_decimation"] = std::to_string(decimation);
   info.hardware_parameters["state_timeout_ms"] = "100000";  // valgrind is slow: never stale
@@ -161,6 +175,7 @@ void start(Rig& rig, uint32_t decimation, Claim claim_kind) {
   rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
   rig.ifs.index();
   if (!rig.ifs.complete()) fail("incomplete interfaces");
+  if (rig.hw->on_configure(kUnconfigured) != CallbackReturn::SUCCESS) fail("on_configure failed");
   claim(rig, claim_kind);
   if (rig.hw->on_activate(kInactive) != CallbackReturn::SUCCESS) fail("on_activate failed");
 #if defined(RHI_TRANSPORT_ROS)
@@ -251,6 +266,7 @@ struct Path {
   bool producer;        // a producer thread delivers state while the path runs
   std::function<void(Rig&, Floors&)> call;
   Claim claim = Claim::kAll;  // what the controllers claim while the path runs
+  bool calibrated = false;    // every joint offset by a calibration file: motors are not joints
 };
 
 
@@ -272,6 +288,12 @@ std::vector<Path> paths() {
          r.hw->write(kTime, kPeriod);
        },
        Claim::kAll},
+      {"readwrite_cal", 1, true,
+       [](Rig& r, Floors&) {
+         r.hw->read(kTime, kPeriod);
+         r.hw->write(kTime, kPeriod);
+       },
+       Claim::kAll, true},
       {"locks_pos", 1, false, [](Rig& r, Floors&) { handle_locks(r); }, Claim::kTargets},
       {"locks_all", 1, false, [](Rig& r, Floors&) { handle_locks(r); }, Claim::kAll},
       {"memcpy_state", 0, false, [](Rig&, Floors& f) { memcpy_arrays(f.state_dst, f.state_src); }},
@@ -346,7 +368,7 @@ int main(int argc, char** argv) {
         continue;
       }
       Rig rig;
-      start(rig, p.decimation, p.claim);
+      start(rig, p.decimation, p.claim, p.calibrated);
       time_path(p, &rig, floors, iterations);
       stop(rig);
     }
@@ -358,7 +380,7 @@ int main(int argc, char** argv) {
     for (const Path& p : paths()) {
       if (name != p.name) continue;
       Rig rig;
-      if (p.decimation != 0) start(rig, p.decimation, p.claim);
+      if (p.decimation != 0) start(rig, p.decimation, p.claim, p.calibrated);
       Producer producer;
       if (p.producer) producer.begin();
       for (uint32_t i = 0; i < 100; ++i) p.call(rig, floors);  // warm-up, not counted

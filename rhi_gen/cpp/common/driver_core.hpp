@@ -196,20 +196,15 @@ public:
     // state of this activation, so when it is set the frame fetched below is at least that new.
     const bool state_is_current = safe_start_.first_state_received();
     const State * state = motor_state_buffer_.get_data();
-    if (state != nullptr && transmissions_.active()) {
-      for_each_slot_block<N>(
-        [this, state](auto count, size_t begin) {
-          transmit_state_block<decltype(count)::value>(
-            *state, transmissions_.factors(), frames_.joints, begin);
-        });
-      transmissions_.couple_state(*state, frames_.joints);
-    } else if (state != nullptr) {
-      for_each_slot_block<N>(
-        [this, state](auto count, size_t begin) {
-          copy_state_block<decltype(count)::value>(*state, frames_.joints, begin);
-        });
-    }
     if (state != nullptr) {
+      if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(transmissions_.active())) {
+        transmit_state(*state);
+      } else {
+        for_each_slot_block<N>(
+          [this, state](auto count, size_t begin) {
+            copy_state_block<decltype(count)::value>(*state, frames_.joints, begin);
+          });
+      }
       if (state_is_current) {
         safe_start_.mark_state_copied();
       }
@@ -262,19 +257,36 @@ public:
       frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);
     }
     // Bounded in joint space above; the motors' command from here.
-    if (transmissions_.active()) {
-      for_each_slot_block<N>(
-        [this](auto count, size_t begin) {
-          transmit_command_block<decltype(count)::value>(
-            transmissions_.factors(), frames_.command, begin);
-        });
-      transmissions_.couple_command(frames_.command);
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(transmissions_.active())) {
+      transmit_command();
     }
     motor_command_buffer_.set_data(frames_.command);
     return rewritten;
   }
 
 private:
+  // read() and write() of a robot whose motors are not its joints (kept out of line, so that the
+  // plain loops of every other robot stay as they were).
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE void transmit_state(const State & state)
+  {
+    for_each_slot_block<N>(
+      [this, &state](auto count, size_t begin) {
+        transmit_state_block<decltype(count)::value>(
+          state, transmissions_.factors(), frames_.joints, begin);
+      });
+    transmissions_.couple_state(state, frames_.joints);
+  }
+
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE void transmit_command()
+  {
+    for_each_slot_block<N>(
+      [this](auto count, size_t begin) {
+        transmit_command_block<decltype(count)::value>(
+          transmissions_.factors(), frames_.command, begin);
+      });
+    transmissions_.couple_command(frames_.command);
+  }
+
   const RobotSpec & spec_;
   DriverParameters parameters_;
   SlotTable<N> slots_;

@@ -30,6 +30,16 @@ namespace robot_hardware_interface
 #define ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
 #endif
 
+// The conversions of a robot whose motors are not its joints are called out of line, behind a
+// branch marked unlikely, so that every other robot's read() and write() stay the plain loops.
+#if defined(__GNUC__)
+#define ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE __attribute__((noinline))
+#define ROBOT_HARDWARE_INTERFACE_UNLIKELY(condition) __builtin_expect(!!(condition), 0)
+#else
+#define ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE
+#define ROBOT_HARDWARE_INTERFACE_UNLIKELY(condition) (condition)
+#endif
+
 constexpr size_t kSlotBlock = 8;
 
 // Calls kernel(count, begin) over [0, N): whole blocks of kSlotBlock slots, then, when N is not a

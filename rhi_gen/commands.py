@@ -165,6 +165,7 @@ def generate(*, robots: Sequence[str] | None, dry_run: bool, verbose: bool, forc
     _out(f"robots: {names}")
     _out(_summary(counts, dry_run=dry_run))
     _warn(existing_tag_warnings(loaded if only is None else only))
+    _warn([w for r in (loaded if only is None else only) for w in r.transmission_warnings])
     return 0
 
 

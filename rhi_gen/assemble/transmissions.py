@@ -33,6 +33,8 @@ class Decided:
     joints: dict[str, JointTransmission]    # mapped joint -> its transmission (identity joints absent)
     groups: tuple[CoupledGroup, ...]        # by the lowest SDK slot of their joints
     warnings: tuple[InputWarning, ...]      # URDF transmissions not applied, one line per kind of reason
+    urdf_applied: int = 0                   # URDF transmissions applied (before the YAML's replace any)
+    urdf_skipped: int = 0                   # URDF transmissions not applied (the warnings' subjects)
 
 
 def urdf_source(t: UrdfTransmission) -> str:
@@ -138,7 +140,8 @@ def decide_transmissions(config: VendorConfig, urdf: UrdfRobot) -> Decided:
     decided = {name: t for name, t in joints.items() if not t.is_identity}
     ordered = sorted((g for g in groups.values() if not _identity(g.matrix)),
                      key=lambda g: min(mapped[j] for j in g.joints))
-    return Decided(decided, tuple(ordered), _warnings(skipped, urdf))
+    applied = len(urdf.transmissions) - len(skipped) if config.urdf_transmissions else 0
+    return Decided(decided, tuple(ordered), _warnings(skipped, urdf), applied, len(skipped))
 
 
 def _identity(matrix: tuple[tuple[float, ...], ...]) -> bool:

@@ -29,7 +29,7 @@ from ..model.urdf import TRANSMISSION_KINDS
 from .urdf_joints import _number
 from .urdf_parse import Tag, UrdfContext
 
-__all__ = ["read_transmissions"]
+__all__ = ["describe", "read_transmissions"]
 
 _REDUCTION_TAGS = ("mechanicalReduction", "mechanical_reduction")
 
@@ -136,3 +136,22 @@ def read_transmissions(root: etree._Element, q: Tag, ctx: UrdfContext,
     for el in root.iter(q("transmission")):
         out.append(replace(_read_one(el, q, by_name), line=None if ctx.expanded else ctx.line(el)))
     return tuple(out)
+
+
+def _num(value: float) -> str:
+    return f"{value:g}"
+
+
+def describe(t: UrdfTransmission) -> str:
+    """One line for a reader (`inspect`, `new`): joints, kind and name, then what it does or why not."""
+    head = f"{', '.join(t.joints) or '(no joint)'}: {t.short_kind} '{t.name}'"
+    if t.problem:
+        return f"{head}: not applied, {t.problem}"
+    offsets = [f"offset {_num(o)}" for o in t.offsets if o != 0.0]
+    if t.matrix:
+        matrix = ", ".join("[" + ", ".join(_num(x) for x in row) + "]" for row in t.matrix)
+        return f"{head}: matrix [{matrix}]" + "".join(f", {o}" for o in offsets)
+    if abs(t.reduction) == 1.0 and not offsets and t.reduction > 0:
+        return f"{head}: identity (changes nothing)"
+    parts = [f"reduction {_num(abs(t.reduction))}", f"direction {'-1' if t.reduction < 0 else '+1'}", *offsets]
+    return f"{head}: {', '.join(parts)}"

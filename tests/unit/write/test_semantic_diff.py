@@ -82,7 +82,7 @@ def test_inputs_changed_without_robot_change_says_so():
     d = diff_robot(BASE, replace(BASE, yaml_sha256="z" * 64))
     assert d.stale and not d.robot_changed
     assert d.lines() == ["acme/arm: robots/acme/arm.yaml changed",
-                         "  no joint, limit, motor count or float type change (see the file diff)"]
+                         "  no joint, limit, transmission, motor count or float type change (see the file diff)"]
 
 
 def test_format_1_yaml_fingerprints_are_not_compared():

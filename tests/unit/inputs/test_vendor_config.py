@@ -11,18 +11,9 @@ from rhi_gen.inputs.vendor_config import load_config
 from rhi_gen.transports.agibot_topics import AgibotTopicsOptions
 from rhi_gen.transports.generic_topics import GenericTopicsOptions
 from tests.support.repo import REPO
+from tests.support.vendor_yaml import ARM_YAML
 
-BASE = """\
-vendor: acme
-robot: arm
-urdf: arm.urdf
-transport: generic_topics
-motor_count: 3
-joint_map:
-  j1: 0
-  j2: 1
-  j3: 2
-"""
+BASE = ARM_YAML  # the next line is line 10
 
 
 def write(tmp_path: Path, text: str) -> Path:

@@ -8,6 +8,7 @@ those of joint_map (checked by inputs/vendor_config.py before these run).
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 from ..model.naming import suggest
@@ -19,6 +20,7 @@ GROUP_KEYS = ("joints", "matrix")
 MAX_OFFSET = 2.0 * math.pi  # rad: one turn; beyond it the zero is wrong, not far away
 MAX_REDUCTION = 1e6
 MAX_GROUP = 16              # joints of one coupled group: far above a wrist or an ankle
+GROUP_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_.\-]{0,63}$")
 MIN_CONDITION = 1e-9        # |det| / product of row norms below this: singular for double precision
 
 # joint -> (direction, reduction, offset), as VendorConfig.transmissions holds it
@@ -83,6 +85,9 @@ def read_coupled_joints(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple
     out = []
     for name, item in raw.items():
         path = f"coupled_joints.{name}"
+        if not GROUP_NAME_RE.match(name):
+            raise v.error(path, f"{name!r} is not a group name (a letter or _, then letters, digits, _ . -; "
+                          "at most 64)", fix="name the group, e.g. left_wrist")
         m = v.mapping(item, path, GROUP_KEYS)
         for key in GROUP_KEYS:
             if key not in m:

@@ -103,3 +103,15 @@ def test_new_on_talos_applies_its_differential_wrists(tmp_path):
     manifest = json.loads((root / "generated/.rhi-gen-manifest").read_text())["robots"]["pal/talos"]
     assert sorted(manifest["coupled_groups"]) == ["talos_torso_trans", "wrist_left_trans", "wrist_right_trans"]
     assert "transmissions" not in manifest  # every SimpleTransmission of TALOS is the identity
+
+
+def test_generate_warns_and_check_and_diff_stay_quiet(tmp_path):
+    root = tmp_path / "proj"
+    new_arm(root)
+    generate = run_cli("generate", "--project", root)
+    assert generate.code == 0, generate.err
+    assert [line.split(": <transmission> ")[1].split(" ")[0] for line in generate.err.splitlines()] == [
+        "'finger_trans'", "'broken_trans'"]
+    for command in ("check", "diff"):
+        result = run_cli(command, "--project", root)
+        assert result.code == 0 and "warning" not in result.err + result.out, (command, result.err)

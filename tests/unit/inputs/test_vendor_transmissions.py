@@ -82,6 +82,8 @@ def test_defaults_without_the_keys(tmp_path):
     ("coupled_joints:\n  wrist:\n    joints: [j1, j2]\n    matrix: [[1, 0], [0, 1]]\n    extra: 1\n", 14,
      "coupled_joints.wrist.extra", "unknown key"),
     ("coupled_joints: [j1, j2]\n", 10, "coupled_joints", "mapping of group name"),
+    ("coupled_joints:\n  'wrist\\n; x':\n    joints: [j1, j2]\n", 11, "coupled_joints.wrist\\n; x", "not a group name"),
+    ("coupled_joints:\n  '':\n    joints: [j1, j2]\n", 11, "coupled_joints.", "not a group name"),
     (WRIST + "transmissions:\n  j2: {direction: -1}\n", 15, "transmissions.j2.direction",
      "joint 'j2' is coupled: its direction and reduction are in coupled_joints.wrist.matrix"),
     (WRIST + "transmissions:\n  j1: {offset: 0.1, reduction: 2}\n", 15, "transmissions.j1.reduction", "is coupled"),

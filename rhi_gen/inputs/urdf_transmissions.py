@@ -15,7 +15,9 @@ and ``<offset>`` under <joint>). Both are read into ros2_control's transmission_
 
 A URDF is often third-party, so nothing here raises: a kind rhi-gen does not apply, a transmission
 on a joint that is missing, fixed or a mimic, and a malformed number or a zero reduction each give a
-transmission with ``problem`` set, which assemble/transmissions.py turns into one warning.
+transmission with ``problem`` set, which assemble/transmissions.py turns into one warning. The vendor
+YAML's bounds hold here too: an offset within one turn, a reduction from 1e-6 to 1e6, an invertible
+matrix.
 """
 from __future__ import annotations
 
@@ -28,10 +30,12 @@ from ..model import UrdfJoint, UrdfTransmission
 from ..model.urdf import TRANSMISSION_KINDS
 from .urdf_joints import _number
 from .urdf_parse import Tag, UrdfContext
+from .vendor_transmissions import MAX_OFFSET, MAX_REDUCTION, MIN_CONDITION, condition
 
 __all__ = ["describe", "read_transmissions"]
 
 _REDUCTION_TAGS = ("mechanicalReduction", "mechanical_reduction")
+MIN_REDUCTION = 1.0 / MAX_REDUCTION
 
 
 class _Malformed(Exception):
@@ -109,23 +113,36 @@ def _read_one(el: etree._Element, q: Tag, joints: dict[str, UrdfJoint]) -> UrdfT
     if len(names) != wanted or len(actuator_els) > wanted or (wanted == 2 and len(actuator_els) != 2):
         return replace(base, problem=f"a {short} has {wanted} <joint> and {wanted} <actuator>, this one "
                            f"{len(names)} and {len(actuator_els)}")
+    if len(set(names)) != len(names):
+        return replace(base, problem=f"lists joint {names[0]!r} twice")
     for joint_name in names:
         if (problem := _joint_problem(joint_name, joints)):
             return replace(base, problem=problem)
     try:
-        offsets = tuple(_value(j, q, ("offset",), f"joint {j.get('name')!r}", 0.0) for j in joint_els)
-        jr = _reductions(joint_els, q, "joint")
-        ar = _reductions(actuator_els, q, "actuator")
-        if wanted == 1:
-            # PR2's form: the reduction straight under <transmission>.
-            whole = _reductions([el], q, "transmission")[0]
-            return UrdfTransmission(name=name, kind=kind, joints=names, offsets=offsets,
-                                    reduction=whole * jr[0] * (ar[0] if ar else 1.0))
+        return _applied(base, el, q, joint_els, actuator_els)
     except _Malformed as exc:
         return replace(base, problem=str(exc))
+
+
+def _applied(base: UrdfTransmission, el: etree._Element, q: Tag, joint_els: list[etree._Element],
+             actuator_els: list[etree._Element]) -> UrdfTransmission:
+    """The transmission in ros2_control's convention (``_Malformed`` when a value cannot be used)."""
+    offsets = tuple(_value(j, q, ("offset",), f"joint {j.get('name')!r}", 0.0) for j in joint_els)
+    if any(abs(o) > MAX_OFFSET for o in offsets):
+        raise _Malformed(f"an <offset> of {max(offsets, key=abs):g} is beyond one turn ({MAX_OFFSET:.4f} rad)")
+    jr = _reductions(joint_els, q, "joint")
+    ar = _reductions(actuator_els, q, "actuator")
+    if len(joint_els) == 1:
+        # PR2's form: the reduction straight under <transmission>.
+        reduction = _reductions([el], q, "transmission")[0] * jr[0] * (ar[0] if ar else 1.0)
+        if not MIN_REDUCTION <= abs(reduction) <= MAX_REDUCTION:
+            raise _Malformed(f"the reduction {reduction:g} is outside {MIN_REDUCTION:g}..{MAX_REDUCTION:g}")
+        return replace(base, offsets=offsets, reduction=reduction)
     matrix = ((1.0 / (2.0 * jr[0] * ar[0]), 1.0 / (2.0 * jr[0] * ar[1])),
               (1.0 / (2.0 * jr[1] * ar[0]), -1.0 / (2.0 * jr[1] * ar[1])))
-    return UrdfTransmission(name=name, kind=kind, joints=names, offsets=offsets, matrix=matrix)
+    if condition([*matrix]) < MIN_CONDITION:
+        raise _Malformed("its reductions make a singular matrix (a reduction too large or too small)")
+    return replace(base, offsets=offsets, matrix=matrix)
 
 
 def read_transmissions(root: etree._Element, q: Tag, ctx: UrdfContext,

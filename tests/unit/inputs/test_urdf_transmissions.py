@@ -121,6 +121,17 @@ SIMPLE = "<transmission name='t'><type>transmission_interface/SimpleTransmission
      "2 <joint> and 2 <actuator>"),
     (SIMPLE.format("<joint name='jx'/>"), "'jx', which is not a joint of this URDF"),
     (SIMPLE.format("<joint/>"), "has no name"),
+    (SIMPLE.format("<joint name='j1'><offset>10</offset></joint>"), "beyond one turn"),
+    (SIMPLE.format("<joint name='j1'><mechanicalReduction>1e4</mechanicalReduction></joint>"
+                   "<actuator name='m'><mechanicalReduction>-1e4</mechanicalReduction></actuator>"),
+     "reduction -1e+08 is outside"),
+    (SIMPLE.format("<joint name='j1'><mechanicalReduction>1e300</mechanicalReduction></joint>"
+                   "<actuator name='m'><mechanicalReduction>1e300</mechanicalReduction></actuator>"), "outside"),
+    (SIMPLE.format("<joint name='j1'/><joint name='j1'/><actuator name='a'/><actuator name='b'/>")
+     .replace("Simple", "Differential"), "lists joint 'j1' twice"),
+    (SIMPLE.format("<joint name='j1'/><joint name='j2'/><actuator name='a'><mechanicalReduction>1e200"
+                   "</mechanicalReduction></actuator><actuator name='b'/>").replace("Simple", "Differential"),
+     "singular matrix"),
     ("<transmission><type>x<sub>y</sub></type><joint name='j1'><joint name='j2'/></joint></transmission>",
      "applies only"),
 ])

@@ -6,7 +6,6 @@ exist, every actuated joint mapped) live in assemble/robot_model.py.
 """
 from __future__ import annotations
 
-import math
 import os
 import re
 from pathlib import Path
@@ -182,12 +181,12 @@ def _default_gains(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tupl
         gains = []
         for key in GAIN_KEYS:
             q = f"{path}.{name}.{key}"
-            value = v.scalar(m[key], q) if key in m else 0.0
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-                    or not 0.0 <= value <= MAX_GAIN:
-                raise v.error(q, f"must be a number from 0 to {MAX_GAIN:g}, got {getattr(m.get(key), 'raw', value)!r}",
-                              fix="write the gain in N*m/rad (stiffness) or N*m*s/rad (damping), e.g. 60.0")
-            gains.append(float(value))
+            what = f"a number from 0 to {MAX_GAIN:g}"
+            fix = "write the gain in N*m/rad (stiffness) or N*m*s/rad (damping), e.g. 60.0"
+            value = v.finite_number(m[key], q, fix, what) if key in m else 0.0
+            if not 0.0 <= value <= MAX_GAIN:
+                raise v.error(q, f"must be {what}, got {m[key].raw!r}", fix=fix)
+            gains.append(value)
         out.append((name, gains[0], gains[1]))
     return tuple(out)
 
@@ -206,11 +205,8 @@ def _initial_positions(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[
     out = []
     for name, item in entries.items():
         q = f"{path}.{name}"
-        value = v.scalar(item, q)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise v.error(q, f"must be a finite number, got {getattr(item, 'raw', value)!r}",
-                          fix="write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")
-        out.append((name, float(value)))
+        out.append((name, v.finite_number(
+            item, q, "write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")))
     return tuple(out)
 
 

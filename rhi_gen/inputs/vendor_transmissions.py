@@ -29,13 +29,6 @@ Transmission = tuple[str, int, float, float]
 Group = tuple[str, tuple[str, ...], tuple[tuple[float, ...], ...]]
 
 
-def _number(v: Validator, item: Any, path: str, fix: str) -> float:
-    value = v.scalar(item, path)
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise v.error(path, f"must be a finite number, got {getattr(item, 'raw', value)!r}", fix=fix)
-    return float(value)
-
-
 def read_transmissions(v: Validator, entries: dict[str, Any], coupled: dict[str, str]) -> tuple[Transmission, ...]:
     """``transmissions: {joint: {direction, reduction, offset}}``; ``coupled``: joint -> its coupled group."""
     out = []
@@ -57,7 +50,7 @@ def read_transmissions(v: Validator, entries: dict[str, Any], coupled: dict[str,
         reduction = 1.0
         if "reduction" in m:
             q = f"{path}.reduction"
-            reduction = _number(v, m["reduction"], q, "write the motor turns per joint turn, e.g. 50.0")
+            reduction = v.finite_number(m["reduction"], q, "write the motor turns per joint turn, e.g. 50.0")
             if reduction <= 0.0:
                 raise v.error(q, f"must be above 0, got {m['reduction'].raw!r}",
                               fix="write the reduction's size (e.g. 50.0) and direction: -1 for a reversed motor")
@@ -66,7 +59,7 @@ def read_transmissions(v: Validator, entries: dict[str, Any], coupled: dict[str,
         offset = 0.0
         if "offset" in m:
             q = f"{path}.offset"
-            offset = _number(v, m["offset"], q, "write the joint position at motor zero in rad (m), e.g. 0.1")
+            offset = v.finite_number(m["offset"], q, "write the joint position at motor zero in rad (m), e.g. 0.1")
             if abs(offset) > MAX_OFFSET:
                 raise v.error(q, f"|{offset:g}| is above {MAX_OFFSET:.4f} (one turn): an offset beyond one turn "
                               "is a mistake", fix="write the joint position at motor zero within one turn, in rad")
@@ -131,7 +124,7 @@ def _matrix(v: Validator, raw: Any, path: str, n: int) -> tuple[tuple[float, ...
         q = f"{path}[{i}]"
         if not isinstance(row, list) or len(row) != n:
             raise v.error(q, f"must be a list of {n} numbers (one per motor)", fix=fix)
-        rows.append(tuple(_number(v, x, f"{q}[{k}]", fix) for k, x in enumerate(row)))
+        rows.append(tuple(v.finite_number(x, f"{q}[{k}]", fix) for k, x in enumerate(row)))
     if condition(rows) < MIN_CONDITION:
         raise v.error(path, "matrix is singular: the motors cannot reach every joint position",
                       fix="check the rows: no row may be a multiple or a sum of the others")

@@ -87,6 +87,10 @@ def test_agibot_groups_get_offsets():
      "not a valid ROS topic"),
     (BASE + "unmapped_joints: [j1]\n", 10, "unmapped_joints[0]", "also in joint_map"),
     (BASE + "imu: {enabled: yes please}\n", 10, "imu.enabled", "true or false"),
+    # an integer too large for a float is one line too, not an OverflowError
+    (BASE + "initial_positions:\n  j1: 1" + "0" * 400 + "\n", 11, "initial_positions.j1", "finite number"),
+    (BASE + "default_gains:\n  j1: {stiffness: 1" + "0" * 400 + "}\n", 11, "default_gains.j1.stiffness",
+     "number from 0 to 1e+06"),
 ])
 def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
     err = error_of(tmp_path, text)

@@ -49,6 +49,7 @@ def test_defaults_without_the_keys(tmp_path):
     ("transmissions:\n  j1: {offset: .inf}\n", 11, "transmissions.j1.offset", "finite number"),
     ("transmissions:\n  j1: {offset: 10}\n", 11, "transmissions.j1.offset", "beyond one turn is a mistake"),
     ("transmissions:\n  j1: {offset: '0.1'}\n", 11, "transmissions.j1.offset", "finite number"),
+    ("transmissions:\n  j1: {reduction: 1" + "0" * 400 + "}\n", 11, "transmissions.j1.reduction", "finite number"),
     ("transmissions:\n  j1: {reductoin: 5}\n", 11, "transmissions.j1.reductoin", "did you mean 'reduction'"),
     ("transmissions:\n  j9: {reduction: 5}\n", 11, "transmissions.j9", "not a joint of joint_map"),
     ("transmissions:\n  j1: 50\n", 11, "transmissions.j1", "mapping"),

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 from .errors import InputWarning, ProjectError, RhiGenError
 
 if TYPE_CHECKING:
+    from .model import UrdfRobot, VendorConfig
     from .project import Project
     from .write.api_migration import ApiRename
     from .write.changes import FileChange
@@ -89,6 +90,8 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
         inputs.add(plan.copy.rel)
     counts = _print_changes([c for c in plan.changes if c.path not in inputs], verbose=False)
     _out(_summary(counts))
+    if plan.robot.urdf.transmissions:
+        _out(_transmissions_line(plan.robot.config, plan.robot.urdf, plan.yaml_relpath))
     _out(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
     mock, real = bringup_commands(m.robot)
     _out("then build the package in a ROS 2 workspace (README: Try it without the robot) and bring it up:")
@@ -96,6 +99,16 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
     _out(f"  on the robot:      {real}")
     _warn(plan.warnings)
     return 0
+
+
+def _transmissions_line(config: VendorConfig, urdf: UrdfRobot, yaml_relpath: str) -> str:
+    """`new`: how many <transmission>s the URDF has and how many apply to the mapped joints."""
+    from .assemble.transmissions import decide_transmissions
+
+    decided = decide_transmissions(config, urdf)
+    total = len(urdf.transmissions)
+    return (f"transmissions: {total} in the URDF, {decided.urdf_applied} applied, {decided.urdf_skipped} not "
+            f"(listed in {yaml_relpath}; README: Motors that are not joints)")
 
 
 def _use_colour() -> bool:
@@ -165,6 +178,7 @@ def generate(*, robots: Sequence[str] | None, dry_run: bool, verbose: bool, forc
     _out(f"robots: {names}")
     _out(_summary(counts, dry_run=dry_run))
     _warn(existing_tag_warnings(loaded if only is None else only))
+    _warn([w for r in (loaded if only is None else only) for w in r.transmission_warnings])
     return 0
 
 

@@ -1,7 +1,8 @@
 """Cross-check a vendor YAML against its URDF and decide every name: -> RobotModel.
 
 This is where "joint not in the URDF", "actuated joint not mapped" and "mimic joint mapped to a
-motor" are caught, each with the YAML line and a fix. No file is written here.
+motor" are caught, each with the YAML line and a fix; each joint's transmission is decided by
+``transmissions.py``. No file is written here.
 """
 from __future__ import annotations
 
@@ -14,8 +15,9 @@ from .. import transports
 from ..errors import ConfigError, UrdfError
 from ..model.config import VendorConfig
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
-from ..model.robot import InputProvenance, MotorJoint, RobotModel
+from ..model.robot import InputProvenance, JointTransmission, MotorJoint, RobotModel
 from ..model.urdf import UrdfJoint, UrdfRobot, limits_problem, safe_position
+from .transmissions import decide_transmissions
 
 
 def sha256_hex(data: bytes) -> str:
@@ -97,6 +99,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         if (problem := limits_problem(joint.type, joint.limits, value)):
             raise err(f"initial_positions.{name}", f"joint {name!r}: {problem} ({urdf_shown} line {joint.line})",
                       f"use a position inside the limits, e.g. {safe_position(joint.type, joint.limits):g}")
+    decided = decide_transmissions(config, urdf)
     joints = []
     for joint in actuated:
         if joint.name not in mapped:
@@ -110,7 +113,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  command_interfaces=transport.command_interfaces(mode),
                                  default_stiffness=stiffness if mode == "position" else 0.0,
                                  default_damping=damping,
-                                 initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits))))
+                                 initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),
+                                 transmission=decided.joints.get(joint.name, JointTransmission())))
 
     imu = config.imu
     if imu.enabled:
@@ -139,7 +143,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         unmapped_joints=tuple(config.unmapped_joints),
         mimic_joints=tuple(j.name for j in urdf.mimic_joints),
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
-        provenance=provenance, urdf_name=urdf.name,
+        provenance=provenance, coupled_groups=decided.groups, urdf_name=urdf.name,
         urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"),
     )
 

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from .. import transports
 from ..model import UrdfRobot
+from .urdf_transmissions import describe
 
 
 def _fmt(value: float | None) -> str:
@@ -10,7 +11,8 @@ def _fmt(value: float | None) -> str:
 
 
 def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | None = None) -> str:
-    """The report: every joint with type, limits and mimic, then the suggested joint_map."""
+    """The report: every joint with type, limits and mimic, existing <ros2_control> tags, the
+    <transmission>s, then the suggested joint_map."""
     actuated = urdf.actuated_joints
     out = [(f"robot {urdf.name!r} from {urdf.source}: {len(urdf.joints)} joints, {len(urdf.links)} links, "
             f"{len(actuated)} actuated, {len(urdf.mimic_joints)} mimic")]
@@ -36,6 +38,11 @@ def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | Non
         out.append("note: `rhi-gen new` writes its own ros2_control macro for the mapped joints: replace the "
                    "existing tag with it, or keep the tag and do not include the macro (README: \"A description "
                    "that already has <ros2_control>\")")
+    if urdf.transmissions:
+        applicable = sum(1 for t in urdf.transmissions if not t.problem)
+        out.append(f"transmissions: {len(urdf.transmissions)} <transmission> (joint = direction * motor / reduction "
+                   f"+ offset; {applicable} applicable to mapped joints, README: \"Motors that are not joints\")")
+        out += [f"  {describe(t)}" + (f" (line {t.line})" if t.line else "") for t in urdf.transmissions]
     known = transports.known_robot(vendor, robot) if vendor and robot else None
     order = transports.suggest_order([j.name for j in actuated], known)
     source = f"the {known.vendor} profile ({known.note})" if known else "URDF order"

@@ -17,6 +17,9 @@ from ..model.naming import joint_name_problem
 from ..model.urdf import safe_position
 from ..transports import KnownRobot
 from ..typed_yaml.yaml_source import yaml_string
+from .urdf_transmissions import describe
+
+MAX_LISTED = 12  # <transmission>s the YAML's comment lists before "and N more"
 
 
 def _limits_comment(joint: UrdfJoint) -> str:
@@ -111,6 +114,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         label = f"{group_of[index]}, " if group_of else ""
         lines.append(f"  {yaml_string(name)}: {slot}  # {label}{_limits_comment(by_name[name])}")
     lines.append("unmapped_joints: []")
+    lines += _transmission_lines(urdf)
     if chosen.carries_gains:
         lines += _default_gains_lines(vendor, robot, known, order)
     lines += ["# Where the joints start in the description (mock hardware starts there; the launch file's",
@@ -119,6 +123,23 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
     lines += [f"  {yaml_string(name)}: {_yaml_float(safe_position(by_name[name].type, by_name[name].limits))}"
               for name in order]
     return "\n".join(lines) + "\n"
+
+
+def _transmission_lines(urdf: UrdfRobot) -> list[str]:
+    """What the URDF's <transmission>s do, as comments above ``urdf_transmissions: true`` (none: nothing)."""
+    if not urdf.transmissions:
+        return []
+    shown = urdf.transmissions[:MAX_LISTED]
+    more = len(urdf.transmissions) - len(shown)
+    return [
+        f"# The URDF has {len(urdf.transmissions)} <transmission>(s) (README: Motors that are not joints). rhi-gen",
+        "# applies SimpleTransmission and DifferentialTransmission to mapped joints; a joint under",
+        "# transmissions: {joint: {direction, reduction, offset}} or coupled_joints: {group: {joints, matrix}}",
+        "# replaces the URDF's; urdf_transmissions: false ignores them all.",
+        *(f"#   {''.join(c if c.isprintable() else '?' for c in describe(t))}" for t in shown),
+        *([f"#   ... and {more} more (`rhi-gen inspect` lists them all)"] if more else []),
+        "urdf_transmissions: true",
+    ]
 
 
 def _yaml_float(value: float) -> str:

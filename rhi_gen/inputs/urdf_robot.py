@@ -2,7 +2,8 @@
 
 Checks the root (a named <robot>, no xacro element left over), reads the links here and each
 joint with :mod:`.urdf_joints`, checks the mimics and the tree (:mod:`.urdf_tree`), reads the
-existing <ros2_control> blocks (:mod:`.urdf_ros2_control`) and keeps the canonical bytes the
+existing <ros2_control> blocks (:mod:`.urdf_ros2_control`) and the <transmission>s
+(:mod:`.urdf_transmissions`) and keeps the canonical bytes the
 manifest fingerprints (:mod:`.urdf_canonical`).
 """
 from __future__ import annotations
@@ -14,6 +15,7 @@ from .urdf_canonical import canonical_urdf_bytes
 from .urdf_joints import JointRefs, check_mimic, read_joint
 from .urdf_parse import UrdfContext, first_xacro_element, quoted
 from .urdf_ros2_control import read_ros2_control
+from .urdf_transmissions import read_transmissions
 from .urdf_tree import check_tree
 
 __all__ = ["robot_from_root"]
@@ -81,5 +83,6 @@ def robot_from_root(root: etree._Element, data: bytes, ctx: UrdfContext, canonic
         joints=tuple(joints),
         links=tuple(links),
         ros2_control=read_ros2_control(root, q, ctx),
+        transmissions=read_transmissions(root, q, ctx, joints),
         canonical_xml=canonical_urdf_bytes(data) if canonical is None else canonical,
     )

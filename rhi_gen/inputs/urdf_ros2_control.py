@@ -2,7 +2,7 @@
 
 Read as they are (names, type, hardware plugin, joints and their interfaces), without judging
 them: ``assemble/robot_model.py`` applies ros2_control's rules to them and ``pipeline/existing_tags.py``
-decides what to warn about. rhi-gen reads no <transmission>.
+decides what to warn about. Its <transmission>s are read by ``urdf_transmissions.py``.
 """
 from __future__ import annotations
 

@@ -6,7 +6,6 @@ exist, every actuated joint mapped) live in assemble/robot_model.py.
 """
 from __future__ import annotations
 
-import math
 import os
 import re
 from pathlib import Path
@@ -18,10 +17,12 @@ from ..model import FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
 from ..typed_yaml.validator import Validator
 from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
+from .vendor_transmissions import read_coupled_joints, read_transmissions
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
-            "unmapped_joints", "default_gains", "command_modes", "initial_positions")
+            "unmapped_joints", "default_gains", "command_modes", "initial_positions", "transmissions",
+            "coupled_joints", "urdf_transmissions")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
                   "state_decimation", "state_timeout_ms")
@@ -139,6 +140,11 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     default_gains = _default_gains(v, data.get("default_gains"), mapped) if "default_gains" in data else ()
     command_modes = _command_modes(v, data.get("command_modes"), mapped) if "command_modes" in data else ()
     initial = _initial_positions(v, data.get("initial_positions"), mapped) if "initial_positions" in data else ()
+    coupled = read_coupled_joints(v, data["coupled_joints"], mapped) if "coupled_joints" in data else ()
+    transmissions = read_transmissions(
+        v, _joint_entries(v, data["transmissions"], "transmissions", mapped, "{knee_joint: {reduction: 50.0}}"),
+        {joint: name for name, joints, _ in coupled for joint in joints}) if "transmissions" in data else ()
+    urdf_transmissions = v.optional(data, "", "urdf_transmissions", v.boolean, True)
 
     return VendorConfig(
         source=shown, vendor=vendor, robot=robot, urdf=str(urdf_path), urdf_relative=urdf_rel,
@@ -146,6 +152,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         unmapped_joints=unmapped, imu=imu, transport_options=options, parameters=params,
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
         default_gains=default_gains, command_modes=command_modes, initial_positions=initial,
+        transmissions=transmissions, coupled_joints=coupled, urdf_transmissions=urdf_transmissions,
         content_sha256=content_sha256(data), key_lines=dict(lines),
     )
 
@@ -174,12 +181,12 @@ def _default_gains(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tupl
         gains = []
         for key in GAIN_KEYS:
             q = f"{path}.{name}.{key}"
-            value = v.scalar(m[key], q) if key in m else 0.0
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-                    or not 0.0 <= value <= MAX_GAIN:
-                raise v.error(q, f"must be a number from 0 to {MAX_GAIN:g}, got {getattr(m.get(key), 'raw', value)!r}",
-                              fix="write the gain in N*m/rad (stiffness) or N*m*s/rad (damping), e.g. 60.0")
-            gains.append(float(value))
+            what = f"a number from 0 to {MAX_GAIN:g}"
+            fix = "write the gain in N*m/rad (stiffness) or N*m*s/rad (damping), e.g. 60.0"
+            value = v.finite_number(m[key], q, fix, what) if key in m else 0.0
+            if not 0.0 <= value <= MAX_GAIN:
+                raise v.error(q, f"must be {what}, got {m[key].raw!r}", fix=fix)
+            gains.append(value)
         out.append((name, gains[0], gains[1]))
     return tuple(out)
 
@@ -198,11 +205,8 @@ def _initial_positions(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[
     out = []
     for name, item in entries.items():
         q = f"{path}.{name}"
-        value = v.scalar(item, q)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise v.error(q, f"must be a finite number, got {getattr(item, 'raw', value)!r}",
-                          fix="write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")
-        out.append((name, float(value)))
+        out.append((name, v.finite_number(
+            item, q, "write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")))
     return tuple(out)
 
 

@@ -24,6 +24,7 @@ from .urdf import (
     Ros2ControlJoint,
     UrdfJoint,
     UrdfRobot,
+    UrdfTransmission,
 )
 
 __all__ = [
@@ -45,5 +46,6 @@ __all__ = [
     "TransportOptions",
     "UrdfJoint",
     "UrdfRobot",
+    "UrdfTransmission",
     "VendorConfig",
 ]

@@ -80,6 +80,11 @@ class VendorConfig:
     # joint -> rad (or m) the description starts the joint at (YAML initial_positions); checked against
     # the URDF limits in assemble/robot_model.py
     initial_positions: tuple[tuple[str, float], ...] = ()
+    # joint -> (direction, reduction, offset): joint = direction * motor / reduction + offset (YAML transmissions)
+    transmissions: tuple[tuple[str, int, float, float], ...] = ()
+    # (group, joints, matrix): joint = matrix @ motor + offset, motor k in the slot of joints[k] (YAML coupled_joints)
+    coupled_joints: tuple[tuple[str, tuple[str, ...], tuple[tuple[float, ...], ...]], ...] = ()
+    urdf_transmissions: bool = True  # apply the URDF's <transmission>s (YAML urdf_transmissions)
     # sha256 of the parsed YAML content (typed_yaml/yaml_source.content_sha256): comments and layout do not count
     content_sha256: str = ""
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
+TRANSMISSION_KINDS = ("SimpleTransmission", "DifferentialTransmission")  # the <transmission>s rhi-gen applies
 
 
 @dataclass(frozen=True)
@@ -83,12 +84,36 @@ class Ros2ControlBlock:
 
 
 @dataclass(frozen=True)
+class UrdfTransmission:
+    """A <transmission> of the URDF (ROS 1 top-level ``<type>`` form, or ros2_control's ``<plugin>`` form
+    inside <ros2_control>), read by inputs/urdf_transmissions.py into ros2_control's convention.
+
+    Simple (one joint): joint = motor / reduction + offset, ``reduction`` signed (negative: the motor
+    turns the other way). Differential (two joints): joint = matrix @ motor + offsets, motor k being
+    the motor of ``joints[k]``. ``problem`` says why rhi-gen does not apply it ("" when it can)."""
+    name: str
+    kind: str                                  # the type as written, e.g. transmission_interface/SimpleTransmission
+    joints: tuple[str, ...]                    # joint names in role order (joint1, joint2)
+    offsets: tuple[float, ...] = ()            # per joint [rad or m]
+    reduction: float = 1.0                     # Simple: actuator x joint mechanical reduction, signed
+    matrix: tuple[tuple[float, ...], ...] = ()  # Differential: joint per motor
+    problem: str = ""                          # why it is not applied ("" when it is)
+    line: int | None = None                    # line in the URDF (None in a xacro expansion)
+
+    @property
+    def short_kind(self) -> str:
+        """``SimpleTransmission`` for ``transmission_interface/SimpleTransmission``."""
+        return self.kind.rsplit("/", 1)[-1] or "?"
+
+
+@dataclass(frozen=True)
 class UrdfRobot:
     name: str
     source: str  # path as given (for messages)
     joints: tuple[UrdfJoint, ...]  # document order
     links: tuple[str, ...]
     ros2_control: tuple[Ros2ControlBlock, ...] = ()
+    transmissions: tuple[UrdfTransmission, ...] = ()  # document order
     canonical_xml: bytes = b""  # expanded XML without the volatile xacro header, for hashing
 
     @property

@@ -7,7 +7,8 @@ from pathlib import Path
 
 from .. import transports
 from ..assemble.robot_model import build_model
-from ..errors import ConfigError, ProjectError
+from ..assemble.transmissions import decide_transmissions
+from ..errors import ConfigError, InputWarning, ProjectError
 from ..inputs import package_info
 from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import load_config
@@ -22,6 +23,11 @@ class LoadedRobot:
     config: VendorConfig
     urdf: UrdfRobot
     model: RobotModel
+
+    @property
+    def transmission_warnings(self) -> tuple[InputWarning, ...]:
+        """The URDF <transmission>s rhi-gen does not apply to this robot, one warning per kind of reason."""
+        return decide_transmissions(self.config, self.urdf).warnings
 
 
 def load_robot(project: Project, yaml_path: Path) -> LoadedRobot:

@@ -127,4 +127,5 @@ def plan_new_robot(project: Project, *, vendor: str, robot: str, urdf_path: Path
     warning = existing_tag_warning(urdf, model, xacro=is_xacro(urdf_path))
     inputs = {yaml_rel: text.encode("utf-8"), **({copy.rel: copy.data} if copy is not None else {})}
     return NewRobotPlan(yaml_rel, text, new, [*compare(project.root, inputs), *prefixed],
-                        warnings=(warning,) if warning is not None else (), copy=copy)
+                        warnings=(*((warning,) if warning is not None else ()), *new.transmission_warnings),
+                        copy=copy)

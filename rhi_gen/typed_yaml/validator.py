@@ -5,6 +5,8 @@ Shared by the top-level schema (inputs/vendor_config.py) and every transport's `
 """
 from __future__ import annotations
 
+import contextlib
+import math
 import re
 from collections.abc import Callable
 from typing import Any, TypeVar
@@ -68,6 +70,17 @@ class Validator:
             raise self.error(path, f"{v} is out of range {low}..{high}",
                              fix=f"write a whole number from {low} to {high}")
         return v
+
+    def finite_number(self, value: Any, path: str, fix: str, what: str = "a finite number") -> float:
+        """A finite float (an int too big for a float, .nan, .inf, true and '1.0' are refused)."""
+        v = self.scalar(value, path)
+        number = math.nan
+        if not isinstance(v, bool) and isinstance(v, (int, float)):
+            with contextlib.suppress(OverflowError):  # an int too large for a float
+                number = float(v)
+        if not math.isfinite(number):
+            raise self.error(path, f"must be {what}, got {getattr(value, 'raw', v)!r}", fix=fix)
+        return number
 
     def integer_in(self, low: int, high: int) -> Callable[[Any, str], int]:
         """A reader for ``optional``: a whole number from ``low`` to ``high``."""

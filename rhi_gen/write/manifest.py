@@ -10,7 +10,9 @@ The generated files name only their inputs; every hash and the generator version
   layout, quoting and key order do not count, so a comment-only edit changes nothing here), the
   URDF after xacro expansion without xacro's volatile header. `check` calls a robot stale when a
   fingerprint differs. Then the robot as the model saw it (motor_count, float_type, one row per
-  joint: index, name, type, limits) so `rhi-gen diff` can explain the next regeneration in robot terms.
+  joint: index, name, type, limits; ``transmissions`` per joint that is not its motor and
+  ``coupled_groups``, both only when there are any, so a manifest without them means identity) so
+  `rhi-gen diff` can explain the next regeneration in robot terms.
 - Per generated file: the sha256 of its text with every user-region body removed, so a hand edit
   *outside* the regions is detected and an edit inside one is not.
 
@@ -59,6 +61,23 @@ class JointRecord:
 
 
 @dataclass(frozen=True)
+class TransmissionRecord:
+    """A joint whose motor is not the joint: joint = direction * motor / reduction + offset."""
+    joint: str
+    direction: int = 1
+    reduction: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class GroupRecord:
+    """A coupled group: joint = matrix @ motor + offset, motor k in the slot of joints[k]."""
+    name: str
+    joints: tuple[str, ...]
+    matrix: tuple[tuple[float, ...], ...]
+
+
+@dataclass(frozen=True)
 class RobotRecord:
     key: str                # "vendor/robot"
     yaml_path: str
@@ -68,6 +87,8 @@ class RobotRecord:
     motor_count: int
     float_type: str
     joints: tuple[JointRecord, ...]   # sorted by index
+    transmissions: tuple[TransmissionRecord, ...] = ()  # joints that are not their motor, by joint name
+    coupled_groups: tuple[GroupRecord, ...] = ()        # by name
 
 
 @dataclass(frozen=True)
@@ -104,8 +125,13 @@ def robot_record(model: RobotModel) -> RobotRecord:
         joints.append(JointRecord(j.index, j.name, j.type,
                                   lim.lower if lim else None, lim.upper if lim else None,
                                   lim.velocity if lim else None, lim.effort if lim else None))
+    transmissions = tuple(sorted(
+        (TransmissionRecord(j.name, j.transmission.direction, j.transmission.reduction, j.transmission.offset)
+         for j in model.joints if not j.transmission.is_identity), key=lambda t: t.joint))
+    groups = tuple(sorted((GroupRecord(g.name, g.joints, g.matrix) for g in model.coupled_groups),
+                          key=lambda g: g.name))
     return RobotRecord(robot_key(model), p.yaml_path, p.yaml_sha256, p.urdf_path, p.urdf_sha256,
-                       model.motor_count, model.float_type, tuple(joints))
+                       model.motor_count, model.float_type, tuple(joints), transmissions, groups)
 
 
 # ---------------------------------------------------------------- text form
@@ -142,6 +168,14 @@ def _to_data(manifest: Manifest) -> dict[str, Any]:
             "joints": [[j.index, j.name, j.type, _num(j.lower), _num(j.upper), _num(j.velocity), _num(j.effort)]
                        for j in sorted(r.joints, key=lambda j: j.index)],
         }
+        # Only robots with transmissions carry these keys: a manifest without them means identity.
+        if r.transmissions:
+            robots[key]["transmissions"] = {t.joint: [t.direction, _num(t.reduction), _num(t.offset)]
+                                            for t in r.transmissions}
+        if r.coupled_groups:
+            robots[key]["coupled_groups"] = {g.name: {"joints": list(g.joints),
+                                                      "matrix": [[_num(x) for x in row] for row in g.matrix]}
+                                             for g in r.coupled_groups}
     return {
         "format": FORMAT,
         "note": NOTE,
@@ -224,9 +258,41 @@ def _from_data(data: Any) -> Manifest:
         robots[_str(key, "robot")] = RobotRecord(
             key, _str(r["yaml"]["path"], "yaml.path"), _str(r["yaml"]["sha256"], "yaml.sha256"),
             _str(r["urdf"]["path"], "urdf.path"), _str(r["urdf"]["sha256"], "urdf.sha256"), motor_count,
-            _str(r["float_type"], "float_type"), tuple(sorted(joints, key=lambda j: j.index)))
+            _str(r["float_type"], "float_type"), tuple(sorted(joints, key=lambda j: j.index)),
+            _transmissions(r.get("transmissions", {}), f"robots.{key}.transmissions"),
+            _groups(r.get("coupled_groups", {}), f"robots.{key}.coupled_groups"))
     files = {_str(k, "files"): _str(v, f"files.{k}") for k, v in data["files"].items()}
     return Manifest(_str(data["generator_version"], "generator_version"), robots, files, fmt)
+
+
+def _float(value: Any, where: str) -> float:
+    number = _unnum(value, where)
+    if number is None:
+        raise ValueError(f"{where}: expected a number")
+    return number
+
+
+def _transmissions(data: Any, where: str) -> tuple[TransmissionRecord, ...]:
+    """{joint: [direction, reduction, offset]} (absent in manifests of robots without transmissions)."""
+    out = []
+    for joint, row in data.items():
+        if not isinstance(row, list) or len(row) != 3 or row[0] not in (1, -1) or isinstance(row[0], bool):
+            raise ValueError(f"{where}.{joint}: expected [direction, reduction, offset]")
+        out.append(TransmissionRecord(_str(joint, where), int(row[0]), _float(row[1], where), _float(row[2], where)))
+    return tuple(sorted(out, key=lambda t: t.joint))
+
+
+def _groups(data: Any, where: str) -> tuple[GroupRecord, ...]:
+    """{group: {joints: [...], matrix: [[...], ...]}} (absent in manifests of robots without coupled groups)."""
+    out = []
+    for name, g in data.items():
+        if not isinstance(g, dict) or not isinstance(g["joints"], list) or not isinstance(g["matrix"], list) \
+                or not all(isinstance(row, list) for row in g["matrix"]):
+            raise ValueError(f"{where}.{name}: expected {{joints: [...], matrix: [[...], ...]}}")
+        joints = tuple(_str(j, f"{where}.{name}.joints") for j in g["joints"])
+        matrix = tuple(tuple(_float(x, f"{where}.{name}.matrix") for x in row) for row in g["matrix"])
+        out.append(GroupRecord(_str(name, where), joints, matrix))
+    return tuple(sorted(out, key=lambda g: g.name))
 
 
 def path(generated_dir: Path) -> Path:

@@ -7,7 +7,11 @@ the last `generate` (manifest.RobotRecord). Definitions:
 - remapped: same name, a different index;
 - added / removed: a name only in the new / old table (not part of a rename);
 - limits / type: a joint present in both (by name, or a renamed pair) whose limits or type differ;
-- motor_count / float_type: the MotorCommand<N, T> parameters.
+- motor_count / float_type: the MotorCommand<N, T> parameters;
+- transmission: a joint of the new table whose direction, reduction or offset differs (a joint the
+  manifest has no transmission for is the identity: manifests before transmissions, and every
+  joint that is its own motor);
+- coupled group: added, removed (by name), or its joints or matrix changed.
 """
 from __future__ import annotations
 
@@ -15,7 +19,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
-from .manifest import JointRecord, Manifest, RobotRecord
+from .manifest import GroupRecord, JointRecord, Manifest, RobotRecord, TransmissionRecord
 
 
 @dataclass(frozen=True)
@@ -31,13 +35,15 @@ class RobotDiff:
     types: tuple[tuple[str, int, str, str], ...] = ()         # (name, index, old type, new type)
     motor_count: tuple[int, int] | None = None
     float_type: tuple[str, str] | None = None
+    transmissions: tuple[tuple[str, str], ...] = ()           # (joint, what changed, in words)
+    coupled_groups: tuple[tuple[str, str], ...] = ()          # (group, what changed, in words)
     new_record: RobotRecord | None = field(default=None, compare=False)
     old_record: RobotRecord | None = field(default=None, compare=False)
 
     @property
     def robot_changed(self) -> bool:
         return bool(self.renamed or self.remapped or self.added or self.removed or self.limits or self.types
-                    or self.motor_count or self.float_type)
+                    or self.motor_count or self.float_type or self.transmissions or self.coupled_groups)
 
     @property
     def stale(self) -> bool:
@@ -74,8 +80,12 @@ class RobotDiff:
             out.append(f"  motor_count {self.motor_count[0]} -> {self.motor_count[1]}")
         if self.float_type:
             out.append(f"  float_type  {self.float_type[0]} -> {self.float_type[1]}")
+        for name, what in self.transmissions:
+            out.append(f"  {name}: transmission {what}")
+        for name, what in self.coupled_groups:
+            out.append(f"  coupled group {name}: {what}")
         if not self.robot_changed:
-            out.append("  no joint, limit, motor count or float type change (see the file diff)")
+            out.append("  no joint, limit, transmission, motor count or float type change (see the file diff)")
         return out
 
 
@@ -96,6 +106,44 @@ def _same(a: float | None, b: float | None) -> bool:
     if a is None or b is None:
         return a is b
     return a == b or (math.isnan(a) and math.isnan(b))
+
+
+def _transmission_changes(old: RobotRecord, new: RobotRecord) -> tuple[tuple[str, str], ...]:
+    """Per joint of the new table: its direction, reduction and offset against the old (identity when absent)."""
+    before = {t.joint: t for t in old.transmissions}
+    after = {t.joint: t for t in new.transmissions}
+    out = []
+    for j in new.joints:
+        o, n = before.get(j.name, TransmissionRecord(j.name)), after.get(j.name, TransmissionRecord(j.name))
+        parts = [f"{what} {a} -> {b}" for what, a, b in (
+            ("reduction", _num(o.reduction), _num(n.reduction)),
+            ("direction", f"{o.direction:+d}", f"{n.direction:+d}"),
+            ("offset", _num(o.offset), _num(n.offset))) if a != b]
+        if parts:
+            out.append((j.name, ", ".join(parts)))
+    return tuple(out)
+
+
+def _matrix_text(g: GroupRecord) -> str:
+    return "[" + ", ".join("[" + ", ".join(_num(x) for x in row) + "]" for row in g.matrix) + "]"
+
+
+def _group_changes(old: RobotRecord, new: RobotRecord) -> tuple[tuple[str, str], ...]:
+    before = {g.name: g for g in old.coupled_groups}
+    after = {g.name: g for g in new.coupled_groups}
+    out = []
+    for name in sorted(before.keys() | after.keys()):
+        o, n = before.get(name), after.get(name)
+        if o is None and n is not None:
+            out.append((name, f"added ({', '.join(n.joints)}), matrix {_matrix_text(n)}"))
+        elif n is None and o is not None:
+            out.append((name, f"removed ({', '.join(o.joints)})"))
+        elif o is not None and n is not None and o != n:
+            what = [f"joints ({', '.join(o.joints)}) -> ({', '.join(n.joints)})"] if o.joints != n.joints else []
+            if o.matrix != n.matrix:
+                what.append(f"matrix {_matrix_text(o)} -> {_matrix_text(n)}")
+            out.append((name, ", ".join(what)))
+    return tuple(out)
 
 
 def _inputs(old: RobotRecord, new: RobotRecord, yaml_comparable: bool) -> tuple[str, ...]:
@@ -166,6 +214,7 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None, *, yaml_compara
         limits=tuple(limits), types=tuple(types),
         motor_count=(old.motor_count, new.motor_count) if old.motor_count != new.motor_count else None,
         float_type=(old.float_type, new.float_type) if old.float_type != new.float_type else None,
+        transmissions=_transmission_changes(old, new), coupled_groups=_group_changes(old, new),
         new_record=new, old_record=old)
     if diff.status == "unchanged" and diff.robot_changed:  # the same hashes cannot give a new table
         diff = replace(diff, status="changed", inputs=("manifest out of date",))

@@ -60,6 +60,14 @@ def robot_name(stem: str, taken: set[str]) -> str:
     return name
 
 
+def example_robot(under: str) -> Path:
+    """A description of example-robot-data by its path under robots/ (``talos_data/robots/talos_reduced.urdf``)."""
+    for description in corpus():
+        if description.label == f"example-robot-data:{under}":
+            return description.path
+    pytest.fail(f"example-robot-data has no robots/{under}")
+
+
 def corpus() -> list[Description]:
     try:
         files = importlib.metadata.files("example-robot-data") or []

@@ -11,18 +11,9 @@ from rhi_gen.inputs.vendor_config import load_config
 from rhi_gen.transports.agibot_topics import AgibotTopicsOptions
 from rhi_gen.transports.generic_topics import GenericTopicsOptions
 from tests.support.repo import REPO
+from tests.support.vendor_yaml import ARM_YAML
 
-BASE = """\
-vendor: acme
-robot: arm
-urdf: arm.urdf
-transport: generic_topics
-motor_count: 3
-joint_map:
-  j1: 0
-  j2: 1
-  j3: 2
-"""
+BASE = ARM_YAML  # the next line is line 10
 
 
 def write(tmp_path: Path, text: str) -> Path:
@@ -96,6 +87,10 @@ def test_agibot_groups_get_offsets():
      "not a valid ROS topic"),
     (BASE + "unmapped_joints: [j1]\n", 10, "unmapped_joints[0]", "also in joint_map"),
     (BASE + "imu: {enabled: yes please}\n", 10, "imu.enabled", "true or false"),
+    # an integer too large for a float is one line too, not an OverflowError
+    (BASE + "initial_positions:\n  j1: 1" + "0" * 400 + "\n", 11, "initial_positions.j1", "finite number"),
+    (BASE + "default_gains:\n  j1: {stiffness: 1" + "0" * 400 + "}\n", 11, "default_gains.j1.stiffness",
+     "number from 0 to 1e+06"),
 ])
 def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
     err = error_of(tmp_path, text)

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -11,8 +12,18 @@ from rhi_gen import __version__
 from rhi_gen.cli import main
 from rhi_gen.errors import ManifestError
 from rhi_gen.render.markers import REGION_BEGIN, REGION_END
-from rhi_gen.write.manifest import JointRecord, Manifest, RobotRecord, dumps, generated_hash, loads, parse
-from tests.support.repo import copy_project
+from rhi_gen.write.manifest import (
+    GroupRecord,
+    JointRecord,
+    Manifest,
+    RobotRecord,
+    TransmissionRecord,
+    dumps,
+    generated_hash,
+    loads,
+    parse,
+)
+from tests.support.repo import REPO, copy_project
 
 
 def _record(key="unitree/g1", joints=None) -> RobotRecord:
@@ -106,3 +117,35 @@ def test_corrupt_manifest_blocks_generate_and_force_rebuilds_it(tmp_path, capsys
     assert main(["generate", "--force", "--project", str(root)]) == 0
     assert manifest.read_bytes() == good
     assert (root / "generated" / ".rhi-gen-backup" / ".rhi-gen-manifest.1").read_text() == "{ not json\n"
+
+
+def test_transmissions_round_trip_only_where_there_are_any():
+    plain = _record()
+    geared = replace(_record("acme/arm"),
+                     transmissions=(TransmissionRecord("hip", -1, 50.0, 0.25),),
+                     coupled_groups=(GroupRecord("wrist", ("wheel", "odd"), ((0.5, 0.5), (0.5, -0.5))),))
+    text = dumps(Manifest("0.1.0", {"unitree/g1": plain, "acme/arm": geared}, {}))
+    assert loads(text) == Manifest("0.1.0", {"unitree/g1": plain, "acme/arm": geared}, {})
+    data = json.loads(text)
+    # a robot without transmissions has no such keys: every existing manifest keeps its bytes
+    assert "transmissions" not in data["robots"]["unitree/g1"] and "coupled_groups" not in data["robots"]["unitree/g1"]
+    assert data["robots"]["acme/arm"]["transmissions"] == {"hip": [-1, 50.0, 0.25]}
+    assert data["robots"]["acme/arm"]["coupled_groups"] == {
+        "wrist": {"joints": ["wheel", "odd"], "matrix": [[0.5, 0.5], [0.5, -0.5]]}}
+    assert '      "hip": [-1, 50.0, 0.25]\n' in text
+
+
+@pytest.mark.parametrize("bad", ['{"hip": [2, 50.0, 0.0]}', '{"hip": [1, "x", 0.0]}', '{"hip": [1, 2.0]}',
+                                 '{"hip": "geared"}'])
+def test_corrupt_transmissions_are_one_line_errors(bad):
+    text = dumps(Manifest("0.1.0", {"unitree/g1": _record()}, {}))
+    data = json.loads(text)
+    data["robots"]["unitree/g1"]["transmissions"] = json.loads(bad)
+    with pytest.raises(ManifestError) as info:
+        loads(json.dumps(data))
+    assert "transmissions" in str(info.value) and "\n" not in str(info.value)
+
+
+def test_reference_manifest_without_transmissions_reads_as_identity():
+    manifest = loads((REPO / "generated" / ".rhi-gen-manifest").read_text(encoding="utf-8"))
+    assert manifest.robots and all(not r.transmissions and not r.coupled_groups for r in manifest.robots.values())

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from rhi_gen.write.manifest import JointRecord, Manifest, RobotRecord
+from rhi_gen.write.manifest import GroupRecord, JointRecord, Manifest, RobotRecord, TransmissionRecord
 from rhi_gen.write.semantic_diff import diff_manifest, diff_robot
 
 
@@ -82,7 +82,7 @@ def test_inputs_changed_without_robot_change_says_so():
     d = diff_robot(BASE, replace(BASE, yaml_sha256="z" * 64))
     assert d.stale and not d.robot_changed
     assert d.lines() == ["acme/arm: robots/acme/arm.yaml changed",
-                         "  no joint, limit, motor count or float type change (see the file diff)"]
+                         "  no joint, limit, transmission, motor count or float type change (see the file diff)"]
 
 
 def test_format_1_yaml_fingerprints_are_not_compared():
@@ -101,3 +101,24 @@ def test_new_and_removed_robots():
                                  "robots/acme/arm.urdf)")]
     assert "robot removed" in diffs[1].lines()[0]
     assert [d.status for d in diff_manifest(None, [BASE])] == ["new"]
+
+
+def test_transmission_changes_in_robot_terms():
+    geared = replace(BASE, yaml_sha256="z" * 64, transmissions=(TransmissionRecord("knee", -1, 50.0, 0.0),),
+                     coupled_groups=(GroupRecord("wrist", ("ankle", "wrist"), ((0.5, 0.5), (0.5, -0.5))),))
+    d = diff_robot(BASE, geared)
+    assert d.robot_changed
+    assert d.lines()[1:] == ["  knee: transmission reduction 1 -> 50, direction +1 -> -1",
+                             "  coupled group wrist: added (ankle, wrist), matrix [[0.5, 0.5], [0.5, -0.5]]"]
+    back = diff_robot(geared, replace(
+        BASE, yaml_sha256="w" * 64, transmissions=(TransmissionRecord("knee", -1, 50.0, 0.1),),
+        coupled_groups=(GroupRecord("wrist", ("ankle", "wrist"), ((1.0, 0.0), (0.0, 2.0))),)))
+    assert back.lines()[1:] == ["  knee: transmission offset 0 -> 0.1",
+                                "  coupled group wrist: matrix [[0.5, 0.5], [0.5, -0.5]] -> [[1, 0], [0, 2]]"]
+    gone = diff_robot(geared, replace(BASE, yaml_sha256="v" * 64))
+    assert gone.lines()[1:] == ["  knee: transmission reduction 50 -> 1, direction -1 -> +1",
+                                "  coupled group wrist: removed (ankle, wrist)"]
+
+
+def test_a_manifest_without_transmissions_is_the_identity():
+    assert not diff_robot(BASE, replace(BASE, transmissions=(TransmissionRecord("knee"),))).robot_changed

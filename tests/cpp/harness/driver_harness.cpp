@@ -1124,13 +1124,12 @@ void test_crc_functions() {
 // monitor thread reading what the robot received. Every frame encodes one code in every joint's
 // position; a frame mixing codes within one consistency group is torn.
 // In a command (`present` given) a velocity-commanded joint carries its measured position, not a
-// code: it is left out. `q` holds motor positions: a command's joint is where they put it; a state's
-// coupled joint, whose motors the caller cannot recover from its joint value, is left out.
+// code: it is left out. A state's `q` holds the joint positions read(); a command's the motor
+// positions, whose joints (joint_value: the robot's transmissions) carry the code.
 bool consistent_group(const std::array<double, N>& q, const std::array<bool, N>* present, size_t group, int* code) {
   int first = -1;
   for (const Joint& j : kJoints) {
-    if (j.group != group || !position_range(j).usable() || (present != nullptr && j.mode != 0) ||
-        (present == nullptr && is_coupled(j))) {
+    if (j.group != group || !position_range(j).usable() || (present != nullptr && j.mode != 0)) {
       continue;
     }
     if (present != nullptr && !(*present)[j.slot]) {
@@ -1217,9 +1216,8 @@ void test_threads(int duration_ms) {
     std::array<double, N> q{};
     bool any = false;
     for (size_t k = 0; k < kJointCount; ++k) {
-      const double joint = rig.ifs.pos[k]->get();
-      q[kJoints[k].slot] = is_coupled(kJoints[k]) ? joint : motor_position(kJoints[k], joint);
-      any = any || joint != 0.0;
+      q[kJoints[k].slot] = rig.ifs.pos[k]->get();
+      any = any || q[kJoints[k].slot] != 0.0;
     }
     if (any) {
       ++states_seen;

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <hardware_interface/hardware_info.hpp>
@@ -114,11 +115,17 @@ inline int decode_position(const Joint& j, double v) {
   return static_cast<int>(std::floor((v - r.lo) / (r.hi - r.lo) * kCodes));
 }
 
+inline void motors_for_joints(const std::array<double, N>& joint, std::array<double, N>& motor);
+
+// Every joint at the code's position (for a robot with transmissions: the motor positions that put
+// it there), so that a command holding the measured pose carries the code too.
 inline StateFrame coded_state(uint32_t code) {
   StateFrame s = distinct_state(0);
+  std::array<double, N> joint{};
   for (const Joint& j : kJoints) {
-    s.q[j.slot] = encode_position(j, code);
+    joint[j.slot] = encode_position(j, code);
   }
+  motors_for_joints(joint, s.q);
   s.sequence = code;
   return s;
 }
@@ -324,10 +331,56 @@ inline double joint_value(const Joint& j, const std::array<double, N>& m, bool w
   return v;
 }
 
-// A simple joint's motor position for joint position `v` (coupled joints have no such inverse here).
+// A simple joint's motor position for joint position `v`.
 inline double motor_position(const Joint& j, double v) {
   const Transmission& t = kTransmissions[index_of(j)];
   return (v - t.offset) / t.scale;
+}
+
+// The motor positions (by slot) that put every joint at `joint` (by slot): simple joints through
+// their ratio, each coupled group by solving matrix * motor = joint - offset (Gauss elimination
+// with partial pivoting). Unmapped slots keep their value.
+inline void motors_for_joints(const std::array<double, N>& joint, std::array<double, N>& motor) {
+  for (const Joint& j : kJoints) {
+    if (!is_coupled(j)) {
+      motor[j.slot] = motor_position(j, joint[j.slot]);
+    }
+  }
+  for (int g = 0;; ++g) {
+    std::vector<size_t> slots;  // the group's joints' slots: its rows, and its motors' columns
+    for (const Joint& j : kJoints) {
+      if (kTransmissions[index_of(j)].group == g) slots.push_back(j.slot);
+    }
+    const size_t n = slots.size();
+    if (n == 0) {
+      return;
+    }
+    std::vector<double> a(n * (n + 1), 0.0);  // augmented [matrix | joint - offset]
+    for (size_t r = 0; r < n; ++r) {
+      for (size_t e = 0; e < kCoupledWeightCount; ++e) {
+        if (kCoupledWeights[e].joint_slot != slots[r]) continue;
+        for (size_t c = 0; c < n; ++c) {
+          if (kCoupledWeights[e].motor_slot == slots[c]) a[r * (n + 1) + c] = kCoupledWeights[e].weight;
+        }
+      }
+      a[r * (n + 1) + n] = joint[slots[r]] - kTransmissions[index_of(*joint_of_slot(slots[r]))].offset;
+    }
+    for (size_t c = 0; c < n; ++c) {
+      size_t pivot = c;
+      for (size_t r = c + 1; r < n; ++r) {
+        if (std::fabs(a[r * (n + 1) + c]) > std::fabs(a[pivot * (n + 1) + c])) pivot = r;
+      }
+      for (size_t k = 0; k <= n; ++k) std::swap(a[c * (n + 1) + k], a[pivot * (n + 1) + k]);
+      for (size_t r = 0; r < n; ++r) {
+        if (r == c) continue;
+        const double f = a[r * (n + 1) + c] / a[c * (n + 1) + c];
+        for (size_t k = 0; k <= n; ++k) a[r * (n + 1) + k] -= f * a[c * (n + 1) + k];
+      }
+    }
+    for (size_t r = 0; r < n; ++r) {
+      motor[slots[r]] = a[r * (n + 1) + n] / a[r * (n + 1) + r];
+    }
+  }
 }
 
 }  // namespace rhi_test

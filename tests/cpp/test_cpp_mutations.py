@@ -41,7 +41,8 @@ from tests.support.repo import REPO
 
 ROBOTS = ("unitree/g1", "engineai/pm01")
 GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message family
-CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS)  # every robot a mutation runs on passes unmodified
+TRANSMISSION_ROBOTS = ("pal/talos_arm",)  # tests/cpp/harness/robots/: motors that are not joints
+CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS)  # every robot a mutation runs on passes unmodified
 THREADS_MS = 100
 
 # Generated files, by their path in the package (what the edits change, wherever the source lives).
@@ -51,6 +52,7 @@ COMMAND_CLAIMS = COMMON + "command_claims.hpp"
 STATE_FRESHNESS = COMMON + "state_freshness.hpp"
 COMMAND_GUARD = COMMON + "command_guard.hpp"
 SLOT_KERNELS = COMMON + "slot_kernels.hpp"
+JOINT_TRANSMISSIONS = COMMON + "joint_transmissions.hpp"
 PARAMETERS = COMMON + "hardware_parameters.hpp"
 SYSTEM_DRIVER = COMMON + "system_driver.hpp"
 DATA_BUFFER = COMMON + "data_buffer.hpp"
@@ -148,6 +150,15 @@ MUTATIONS = (
              TokenEdit(SYSTEM_DRIVER, "fetch_command_values();",
                        "fetch_command_values(); { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }"),
              ("allocations",)),
+    Mutation("transmission_effort_scaled", "read() scales a motor's effort like its position, not by the inverse",
+             TokenEdit(SLOT_KERNELS, "joints.tau[i] = factors.inverse[i] *", "joints.tau[i] = factors.scale[i] *"),
+             ("transmission",), robots=TRANSMISSION_ROBOTS),
+    Mutation("coupled_command_untransformed", "write() sends a coupled group's joint targets to its motors as they are",
+             TokenEdit(JOINT_TRANSMISSIONS, "command.q_target[motor] = static_cast<T>(q);", ""),
+             ("transmission",), robots=TRANSMISSION_ROBOTS),
+    Mutation("calibration_ignored", "on_configure reads the calibration file but does not apply it",
+             TokenEdit(DRIVER_CORE, "transmissions_.calibrate($$);", ""), ("transmission",),
+             robots=("engineai/pm01",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

@@ -157,7 +157,7 @@ MUTATIONS = (
              TokenEdit(JOINT_TRANSMISSIONS, "command.q_target[motor] = static_cast<T>(q);", ""),
              ("transmission",), robots=TRANSMISSION_ROBOTS),
     Mutation("calibration_ignored", "on_configure reads the calibration file but does not apply it",
-             TokenEdit(DRIVER_CORE, "transmissions_.calibrate($$);", ""), ("transmission",),
+             TokenEdit(DRIVER_CORE, "transmissions_.calibrate($$);", "static_cast<void>(entry);"), ("transmission",),
              robots=("engineai/pm01",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),

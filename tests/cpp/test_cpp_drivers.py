@@ -18,7 +18,9 @@ the package is rendered into a temporary folder, then:
   safety (the three layers, re-armed on re-activation), joint_map, imu, commands
   (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
   SDK_FACTS.md vectors, every field, bad frames dropped), parameters (description values, defaults,
-  overrides, invalid values), decimation, allocations (zero in read/write/callbacks/writer after
+  overrides, invalid values), decimation, faults (a dead link: read() OK while held, ERROR after
+  fault_timeout_ms, one error line, on_error keeps the hold, configure + activate pass the safe start),
+  allocations (zero in read/write/callbacks/writer after
   warm-up) and threads (real writer/executor threads, no torn frames);
 * sanitizer runs must print no report.
 

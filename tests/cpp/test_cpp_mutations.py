@@ -141,9 +141,10 @@ MUTATIONS = (
     Mutation("dead_link_never_faults", "read() never returns ERROR: controllers keep running on a held state",
              TokenEdit(SYSTEM_DRIVER, "if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_.link_dead($$)))",
                        "if (false)"), ("faults",)),
-    Mutation("dead_link_faults_from_the_last_activation", "a robot that never answers after on_activate "
-             "never faults: the wait for the first state is not counted",
-             TokenEdit(STATE_FRESHNESS, "last_ns > activated_ns_ ? last_ns : activated_ns_", "last_ns"),
+    Mutation("dead_link_never_answered", "a robot that never answers after on_activate never faults: the "
+             "wait for the first state is not counted",
+             TokenEdit(STATE_FRESHNESS, "last_ns > activated_ns_ ? last_ns : activated_ns_",
+                       "last_ns > activated_ns_ ? last_ns : now_ns"),
              ("faults",)),
     Mutation("error_hold_released", "on_error does not latch the hold: once the state is back the last "
              "controller command is sent again",

@@ -106,6 +106,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         "  command_writer_period_us: 2000",
         "  state_decimation: 1",
         "  state_timeout_ms: 100",
+        "  fault_timeout_ms: 1000",
     ]
     lines += ["transport_options:", *_with_given(chosen.suggest_options(order, known, given), given)]
     group_of = chosen.joint_labels(order, known)

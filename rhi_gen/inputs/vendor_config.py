@@ -25,7 +25,7 @@ TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type",
             "coupled_joints", "urdf_transmissions")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
-                  "state_decimation", "state_timeout_ms")
+                  "state_decimation", "state_timeout_ms", "fault_timeout_ms")
 IMU_KEYS = ("enabled", "name", "frame_id")
 GAIN_KEYS = ("stiffness", "damping")
 COMMAND_MODES = ("position", "velocity")
@@ -34,6 +34,18 @@ MAX_GAIN = 1e6  # N*m/rad: far above any real motor; a typo of a few zeros still
 FRAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_/.\-]*$")
 NETIF_RE = re.compile(r"^[A-Za-z0-9_.:\-]{1,64}$")
 SENSOR_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,63}$")
+
+
+def _check_fault_timeout(v: Validator, params: Parameters, *, given: bool) -> None:
+    """The driver holds the joints after state_timeout_ms and faults after fault_timeout_ms: in that order."""
+    state, fault = params.state_timeout_ms, params.fault_timeout_ms
+    if fault > state:
+        return
+    if given:
+        raise v.error("parameters.fault_timeout_ms", f"{fault} must be greater than state_timeout_ms ({state})",
+                      fix=f"set fault_timeout_ms above {state}, e.g. {state * 10}")
+    raise v.error("parameters.state_timeout_ms", f"{state} must be less than fault_timeout_ms ({fault}, the default)",
+                  fix=f"set parameters.fault_timeout_ms above {state}, e.g. {state * 10}")
 
 
 def load_config(path: str | Path, *, display_path: str | None = None) -> VendorConfig:
@@ -109,7 +121,10 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
             if "state_decimation" in m else params.state_decimation,
             state_timeout_ms=v.integer(m["state_timeout_ms"], "parameters.state_timeout_ms", 1, 600_000)
             if "state_timeout_ms" in m else params.state_timeout_ms,
+            fault_timeout_ms=v.integer(m["fault_timeout_ms"], "parameters.fault_timeout_ms", 2, 3_600_000)
+            if "fault_timeout_ms" in m else params.fault_timeout_ms,
         )
+        _check_fault_timeout(v, params, given="fault_timeout_ms" in m)
 
     raw_options = data.get("transport_options")
     options = transport.read_options(

@@ -33,6 +33,7 @@ class Parameters:
     command_writer_period_us: int = 2000
     state_decimation: int = 1
     state_timeout_ms: int = 100
+    fault_timeout_ms: int = 1000
 
 
 @dataclass(frozen=True)

@@ -24,6 +24,7 @@ ARGUMENT_HELP = {
     "command_writer_period_us": "period of the command writer in microseconds",
     "state_decimation": "process every n-th state message",
     "state_timeout_ms": "milliseconds without state before the driver holds the joints",
+    "fault_timeout_ms": "milliseconds without state before read() returns ERROR (the link is dead)",
     "description_file": "the robot's URDF the description includes ('': urdf/<robot>.urdf of the package)",
     "controllers_file": "controller manager parameters and controllers ('': config/<robot>_controllers.yaml)",
     "active_controllers": "controllers to activate (names in the controllers file, space-separated)",
@@ -36,7 +37,8 @@ def argument_defaults(robot: RobotModel) -> tuple[tuple[str, str], ...]:
     p = robot.parameters
     values = {"network_interface": p.network_interface, "enable_monitor": "true" if p.enable_monitor else "false",
               "command_writer_period_us": str(p.command_writer_period_us),
-              "state_decimation": str(p.state_decimation), "state_timeout_ms": str(p.state_timeout_ms)}
+              "state_decimation": str(p.state_decimation), "state_timeout_ms": str(p.state_timeout_ms),
+              "fault_timeout_ms": str(p.fault_timeout_ms)}
     return (("use_mock_hardware", "false"), *((name, values[name]) for name in DESCRIPTION_ARGUMENTS[1:]))
 
 

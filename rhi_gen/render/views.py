@@ -26,7 +26,7 @@ from ..transports import COMMON_DEPENDENCIES, PLAIN_CMAKE, VENDOR_SOURCE, Depend
 # The ros2_control macro's parameters a launch file passes to xacro (templates/robot/ros2_control.xacro.j2):
 # the mock switch, then the driver's parameters, the same for every transport.
 DESCRIPTION_ARGUMENTS = ("use_mock_hardware", "network_interface", "enable_monitor", "command_writer_period_us",
-                         "state_decimation", "state_timeout_ms")
+                         "state_decimation", "state_timeout_ms", "fault_timeout_ms")
 
 
 @dataclass(frozen=True)
@@ -240,7 +240,7 @@ def xacro_view(robot: RobotModel) -> XacroView:
     defaults = (("name", f"{robot.robot}_hardware"), ("network_interface", p.network_interface),
                 ("enable_monitor", "true" if p.enable_monitor else "false"),
                 ("command_writer_period_us", p.command_writer_period_us), ("state_decimation", p.state_decimation),
-                ("state_timeout_ms", p.state_timeout_ms))
+                ("state_timeout_ms", p.state_timeout_ms), ("fault_timeout_ms", p.fault_timeout_ms))
     return XacroView(
         macro_name=f"{robot.robot}_ros2_control",
         defaults={key: xacro_default(value) for key, value in defaults},

@@ -27,7 +27,7 @@ from tests.support.repo import URDF_FIXTURES, copy_project
 LABELS = project_robot_labels()
 XACRO = Path(sys.executable).parent / "xacro"
 DESCRIPTION_ARGUMENTS = ["use_mock_hardware", "network_interface", "enable_monitor", "command_writer_period_us",
-                         "state_decimation", "state_timeout_ms"]
+                         "state_decimation", "state_timeout_ms", "fault_timeout_ms"]
 LAUNCH_ARGUMENTS = [*DESCRIPTION_ARGUMENTS, "description_file", "controllers_file", "active_controllers",
                     "inactive_controllers"]
 
@@ -76,9 +76,11 @@ def test_description_arguments_reach_the_driver(package):
     package_dir, _ = package
     path = package_dir / "description" / "g1.urdf.xacro"
     d, _ = parse_ros2_control(xacro(path, "network_interface:=enp3s0", "enable_monitor:=false",
-                                    "command_writer_period_us:=5000", "state_decimation:=4", "state_timeout_ms:=250"))
+                                    "command_writer_period_us:=5000", "state_decimation:=4", "state_timeout_ms:=250",
+                                    "fault_timeout_ms:=3000"))
     assert d.parameters == {"network_interface": "enp3s0", "enable_monitor": "false",
-                            "command_writer_period_us": "5000", "state_decimation": "4", "state_timeout_ms": "250"}
+                            "command_writer_period_us": "5000", "state_decimation": "4", "state_timeout_ms": "250",
+                            "fault_timeout_ms": "3000"}
 
 
 def test_description_takes_another_urdf(package, tmp_path):
@@ -170,7 +172,8 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
         "use_mock_hardware": "false", "network_interface": p.network_interface,
         "enable_monitor": "true" if p.enable_monitor else "false",
         "command_writer_period_us": str(p.command_writer_period_us), "state_decimation": str(p.state_decimation),
-        "state_timeout_ms": str(p.state_timeout_ms), "description_file": "", "controllers_file": "",
+        "state_timeout_ms": str(p.state_timeout_ms), "fault_timeout_ms": str(p.fault_timeout_ms),
+        "description_file": "", "controllers_file": "",
         "active_controllers": " ".join(start_controllers(m)[0]),
         "inactive_controllers": " ".join(start_controllers(m)[1])}
     assert all(a.description for a in launched.arguments.values())

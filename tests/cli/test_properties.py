@@ -221,12 +221,14 @@ def robot_specs(draw, vendor: str, robot: str, transports: tuple[str, ...] = TRA
             imu["frame_id"] = draw(st.sampled_from(framable))
     parameters = None
     if draw(st.booleans()):
+        state_timeout_ms = draw(st.integers(1, 600_000))
         parameters = {
             "network_interface": draw(st.from_regex(r"[A-Za-z0-9_.:\-]{1,15}", fullmatch=True)),
             "enable_monitor": draw(st.booleans()),
             "command_writer_period_us": draw(st.integers(100, 10_000_000)),
             "state_decimation": draw(st.integers(1, 10_000)),
-            "state_timeout_ms": draw(st.integers(1, 600_000)),
+            "state_timeout_ms": state_timeout_ms,
+            "fault_timeout_ms": draw(st.integers(state_timeout_ms + 1, 3_600_000)),
         }
     qos = None
     if draw(st.booleans()):

@@ -18,7 +18,9 @@ the package is rendered into a temporary folder, then:
   safety (the three layers, re-armed on re-activation), joint_map, imu, commands
   (slots and float type; CRC, mode_pr, mode_machine for unitree), command_safety, crc (unitree:
   SDK_FACTS.md vectors, every field, bad frames dropped), parameters (description values, defaults,
-  overrides, invalid values), decimation, allocations (zero in read/write/callbacks/writer after
+  overrides, invalid values), decimation, faults (a dead link: read() OK while held, ERROR after
+  fault_timeout_ms, one error line, on_error keeps the hold, configure + activate pass the safe start),
+  allocations (zero in read/write/callbacks/writer after
   warm-up) and threads (real writer/executor threads, no torn frames);
 * sanitizer runs must print no report.
 
@@ -53,7 +55,7 @@ from tests.support.description_checks import check_ros2_control
 ROBOTS = project_robot_labels()
 SECTION_ORDER = ("interfaces", "transmission", "safety", "joint_map", "imu", "commands", "command_safety",
                  "command_modes",
-                 "crc", "parameters", "decimation", "allocations", "threads")
+                 "crc", "parameters", "decimation", "faults", "allocations", "threads")
 THREADS_MS = 300
 # (distro, flavour) of every build. RUN cells build the harness and drive the robot: plain on Humble
 # (2.x: interfaces over driver-owned doubles), Jazzy (4.x) and Rolling (6.x: framework-owned handles,
@@ -186,10 +188,10 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
     assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{label} ({flavour}): {run.describe()}"
     model = _robot(reference, label).model
     expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes", "parameters",
-                "decimation", "allocations", "threads", "transmission"}
+                "decimation", "faults", "allocations", "threads", "transmission"}
     if model.has_transmission:
         # motors that are not joints: the exact motor = joint checks give way to the transmission section's
-        expected = {"interfaces", "transmission", "threads"}
+        expected = {"interfaces", "transmission", "faults", "threads"}
     if model.transport == "unitree_dds" and not model.has_transmission:
         expected.add("crc")
     missing = expected - set(run.sections)

@@ -138,6 +138,17 @@ MUTATIONS = (
     Mutation("stale_state_never_held", "the command writer never notices that the state stopped",
              TokenEdit(STATE_FRESHNESS, "age_ns > static_cast<int64_t>(timeout_ms) * 1000000",
                        "age_ns < 0 && timeout_ms == 0"), ("command_safety",)),
+    Mutation("dead_link_never_faults", "read() never returns ERROR: controllers keep running on a held state",
+             TokenEdit(SYSTEM_DRIVER, "if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_.link_dead($$)))",
+                       "if (false)"), ("faults",)),
+    Mutation("dead_link_never_answered", "a robot that never answers after on_activate never faults: the "
+             "wait for the first state is not counted",
+             TokenEdit(STATE_FRESHNESS, "last_ns > activated_ns_ ? last_ns : activated_ns_",
+                       "last_ns > activated_ns_ ? last_ns : now_ns"),
+             ("faults",)),
+    Mutation("error_hold_released", "on_error does not latch the hold: once the state is back the last "
+             "controller command is sent again",
+             TokenEdit(SYSTEM_DRIVER, "core_.hold_until_activation();", ""), ("faults",)),
     Mutation("negative_gain_forwarded", "the command guard forwards a negative gain",
              TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", ""), ("command_safety",)),
     Mutation("fetch_unclaimed", "write() fetches every command handle, claimed or not (framework-owned handles)",

@@ -30,6 +30,7 @@ DESCRIPTION_ARGUMENTS = [
     'command_writer_period_us',
     'state_decimation',
     'state_timeout_ms',
+    'fault_timeout_ms',
 ]
 ARGUMENTS = [
     ('robot', 'the robot: launch/<robot>.launch.py, description/<robot>.urdf.xacro'),

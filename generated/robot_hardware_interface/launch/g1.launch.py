@@ -34,6 +34,8 @@ ARGUMENTS = [
      'process every n-th state message'),
     ('state_timeout_ms', '100',
      'milliseconds without state before the driver holds the joints'),
+    ('fault_timeout_ms', '1000',
+     'milliseconds without state before read() returns ERROR (the link is dead)'),
     ('description_file', '',
      "the robot's URDF the description includes ('': urdf/<robot>.urdf of the package)"),
     ('controllers_file', '',

@@ -51,6 +51,7 @@ struct ParameterDefaults
   uint64_t command_writer_period_us;
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
+  uint64_t fault_timeout_ms;
 };
 
 // Everything the driver core needs to know about one robot; each robot's source file defines one.

@@ -19,9 +19,11 @@ namespace robot_hardware_interface
 class StateFreshness
 {
 public:
-  // on_activate (no transport thread runs): nothing of the previous activation counts.
+  // on_activate (no transport thread runs): nothing of the previous activation counts; the wait
+  // for its first state starts now.
   void reset()
   {
+    activated_ns_ = steady_now_ns();
     last_state_time_ns_.store(0);
     frame_counter_.store(0);
     frames_valid_ = false;
@@ -74,9 +76,20 @@ public:
     return age_ns > static_cast<int64_t>(timeout_ms) * 1000000;
   }
 
+  // Controller thread, at steady time `now_ns`: no valid state for more than `timeout_ms`,
+  // counted from the newest valid state or, before the first one, from the activation (a robot
+  // that never answers is as dead as one that stopped answering).
+  bool silent(uint64_t timeout_ms, int64_t now_ns) const
+  {
+    const int64_t last_ns = last_state_time_ns_.load(std::memory_order_acquire);
+    const int64_t since_ns = last_ns > activated_ns_ ? last_ns : activated_ns_;
+    return now_ns - since_ns > static_cast<int64_t>(timeout_ms) * 1000000;
+  }
+
 private:
   std::atomic<int64_t> last_state_time_ns_{0};  // steady time of the newest valid state
   std::atomic<uint32_t> frame_counter_{0};      // decimation frame counter
+  int64_t activated_ns_{0};                     // steady time of the last reset()
   bool frames_valid_{false};                    // state thread: the last parsed frame was valid
   uint64_t invalid_state_count_{0};             // state thread: rejected frames
   uint64_t invalid_imu_count_{0};               // IMU callback: rejected samples

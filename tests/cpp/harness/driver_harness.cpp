@@ -9,7 +9,7 @@
 // with a clock, logger and executor + the framework's export order and shared handles).
 //
 // Sections (see tests/cpp/harness/README.md): interfaces, safety, joint_map, imu, commands,
-// command_safety, crc, parameters, decimation, allocations, threads.
+// command_safety, crc, parameters, decimation, faults, allocations, threads.
 // Output: "section <name>: P passed, F failed" per section and "rhi-check: P passed, F failed".
 #include <algorithm>
 #include <atomic>
@@ -68,6 +68,7 @@ using Severity = rhi_fake::logs::Severity;
 const rclcpp::Time kTime(0, 0, RCL_ROS_TIME);
 const rclcpp::Duration kPeriod(0, 2000000);
 const rclcpp_lifecycle::State kInactive(lifecycle_msgs::msg::State::PRIMARY_STATE_INACTIVE, "inactive");
+const rclcpp_lifecycle::State kUnconfigured(lifecycle_msgs::msg::State::PRIMARY_STATE_UNCONFIGURED, "unconfigured");
 const rclcpp_lifecycle::State kActive(lifecycle_msgs::msg::State::PRIMARY_STATE_ACTIVE, "active");
 constexpr const char* kFloatName = sizeof(SdkFloat) == sizeof(float) ? "float" : "double";
 
@@ -1015,6 +1016,7 @@ void test_parameters() {
   // Invalid values: CallbackReturn::ERROR and an error line naming the parameter; no exception.
   {
     rhi_check::Section section("parameters");
+    const std::string description_timeout = std::to_string(kDescriptionTimeoutMs);
     const std::vector<std::pair<const char*, const char*>> invalid = {
         {"command_writer_period_us", "abc"}, {"command_writer_period_us", ""},
         {"command_writer_period_us", "-1"},  {"command_writer_period_us", "0"},
@@ -1023,6 +1025,9 @@ void test_parameters() {
         {"state_decimation", "two"},         {"state_decimation", "4.5"},
         {"state_timeout_ms", "0"},           {"state_timeout_ms", "soon"},
         {"enable_monitor", "maybe"},
+        {"fault_timeout_ms", "1"},           {"fault_timeout_ms", "later"},
+        // not more than the description's state_timeout_ms: the driver would fault before it holds
+        {"fault_timeout_ms", description_timeout.c_str()},
     };
     fresh_process();
     rhi_fake::hw::Framework fw;
@@ -1110,6 +1115,191 @@ void test_decimation_keeps_state_fresh() {
   teardown(rig);
 }
 
+// ================================================================ faults
+// A dead link. Timeouts are short and the checks only rely on ordering: a read() that returned
+// ERROR must have started more than fault_timeout_ms after the last state was delivered, and a
+// read() that ended within fault_timeout_ms of it must have returned OK.
+constexpr int kFaultStateTimeoutMs = 20;
+constexpr int kFaultTimeoutMs = 300;
+
+int64_t ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Every joint damping only: kp = 0 (when the robot takes gains), no velocity target or effort.
+void check_damping_only(const CommandFrame& c, const char* what) {
+  for (const Joint& j : kJoints) {
+    CHECK_EQ(c.dq[j.slot], 0.0, "%s: %s velocity target", what, j.name);
+    CHECK_EQ(c.tau[j.slot], 0.0, "%s: %s feed-forward effort", what, j.name);
+    if (c.has_gains) {
+      CHECK_EQ(c.kp[j.slot], 0.0, "%s: %s stiffness", what, j.name);
+    }
+  }
+}
+
+// Controller cycles without any new state since `t0` until read() returns ERROR (or far past the
+// fault timeout). Returns the milliseconds after t0 at which the ERROR read() ended, -1 for none.
+// `stale_ok`: a read() after state_timeout_ms returned OK while the writer held damping only.
+int64_t cycle_until_error(Rig& rig, std::chrono::steady_clock::time_point t0, const ControllerCommand& cmd,
+                          bool* stale_ok, uint64_t* allocations) {
+  CommandFrame c;
+  while (ms_since(t0) < kFaultTimeoutMs + 5000) {
+    hardware_interface::return_type r = hardware_interface::return_type::OK;
+    const uint64_t in_read = rhi_alloc::count_in([&] { r = rig.hw->read(kTime, kPeriod); });
+    const int64_t after = ms_since(t0);
+    if (r == hardware_interface::return_type::ERROR) {  // its error line may allocate, once
+      CHECK(after >= kFaultTimeoutMs, "read() returned ERROR %" PRId64 " ms after the last state, not after more "
+            "than fault_timeout_ms (%d)", after, kFaultTimeoutMs);
+      return after;
+    }
+    CHECK(r == hardware_interface::return_type::OK, "read() returns OK or ERROR");
+    *allocations += in_read;
+    apply_command(rig.ifs, cmd);
+    *allocations += rhi_alloc::count_in([&] { rig.hw->write(kTime, kPeriod); });
+    const uint64_t sent = rig.t.sent_messages();
+    rig.t.tick_writer();
+    if (after > 3 * kFaultStateTimeoutMs && rig.t.sent_messages() > sent && rig.t.last_command(c)) {
+      check_damping_only(c, "stale state, read() still OK");
+      *stale_ok = true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  CHECK(false, "read() never returned ERROR within fault_timeout_ms (%d) + 5 s without state", kFaultTimeoutMs);
+  return -1;
+}
+
+// on_error after read() said ERROR: SUCCESS (the component can be configured again).
+void enter_error(Rig& rig) {
+  const CallbackReturn r = rig.hw->on_error(kActive);
+  CHECK(r == CallbackReturn::SUCCESS, "on_error returned %d", static_cast<int>(r));
+  rig.active = false;  // ros2_control calls no on_deactivate: the component is unconfigured now
+}
+
+// Configure and activate again (ros2 control set_hardware_component_state <name> active).
+bool recover(Rig& rig) {
+  const CallbackReturn r = rig.hw->on_configure(kUnconfigured);
+  CHECK(r == CallbackReturn::SUCCESS, "on_configure after on_error returned %d", static_cast<int>(r));
+  return r == CallbackReturn::SUCCESS && activate(rig);
+}
+
+void test_faults() {
+  rhi_check::Section section("faults");
+  fresh_process();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["state_timeout_ms"] = std::to_string(kFaultStateTimeoutMs);
+  info.hardware_parameters["fault_timeout_ms"] = std::to_string(kFaultTimeoutMs);
+  if (!setup(rig, info)) {
+    teardown(rig);
+    return;
+  }
+  auto t0 = std::chrono::steady_clock::now();  // before on_activate: the wait for a first state
+  if (!activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  Transport& t = rig.t;
+  const ControllerCommand cmd = distinct_command(5);
+  CommandFrame c;
+  uint64_t allocations = 0;
+  bool stale_ok = false;
+
+  // A robot that never answers is a dead link too: ERROR fault_timeout_ms after on_activate.
+  const hardware_interface::return_type first_read = rig.hw->read(kTime, kPeriod);
+  CHECK(first_read == hardware_interface::return_type::OK || ms_since(t0) >= kFaultTimeoutMs,
+        "read() right after on_activate, before any state, returns OK");
+  CHECK(cycle_until_error(rig, t0, cmd, &stale_ok, &allocations) > 0,
+        "no state at all after on_activate: read() returns ERROR after fault_timeout_ms");
+  enter_error(rig);
+  t.tick_writer();
+  CHECK_EQ(t.sent_messages(), 0U, "no state ever came: nothing is sent after on_error either (layer 1)");
+
+  // A link that dies while the robot runs.
+  if (!recover(rig)) {
+    teardown(rig);
+    return;
+  }
+  for (uint32_t k = 0; k < 3; ++k) {
+    t.deliver_state(coded_state(k));
+    rig.hw->read(kTime, kPeriod);
+    apply_command(rig.ifs, cmd);
+    rig.hw->write(kTime, kPeriod);
+    t.tick_writer();
+  }
+  bool gains_sent = false;
+  if (last_command(t, c, "before the link dies")) {
+    for (const Joint& j : kJoints) {
+      gains_sent = gains_sent || c.kp[j.slot] != 0.0 || !c.has_gains;
+    }
+  }
+  CHECK(gains_sent, "the controller's command reaches the robot before the link dies");
+  rhi_fake::logs::clear();
+  stale_ok = false;
+  allocations = 0;
+  t0 = std::chrono::steady_clock::now();
+  t.deliver_state(coded_state(3));  // the last state: the link dies after it
+  const int64_t error_ms = cycle_until_error(rig, t0, cmd, &stale_ok, &allocations);
+  CHECK(stale_ok, "read() returned OK while the writer already held the joints damping-only (between "
+        "state_timeout_ms and fault_timeout_ms)");
+  hardware_interface::return_type again = hardware_interface::return_type::ERROR;
+  for (int i = 0; i < 200; ++i) {  // read() runs at the control rate: ERROR each time, said once
+    allocations += rhi_alloc::count_in([&] { again = rig.hw->read(kTime, kPeriod); });
+    CHECK(again == hardware_interface::return_type::ERROR, "read() keeps returning ERROR on a dead link");
+    allocations += rhi_alloc::count_in([&] { rig.hw->write(kTime, kPeriod); });
+  }
+  std::printf("faults: read() ERROR %" PRId64 " ms after the last state (state_timeout_ms %d, fault_timeout_ms "
+              "%d); heap allocations in read()/write() on the way: %" PRIu64 "\n",
+              error_ms, kFaultStateTimeoutMs, kFaultTimeoutMs, allocations);
+  CHECK_EQ(allocations, 0U, "heap allocations in read()/write() while the link dies (but the one error line)");
+  CHECK_EQ(rhi_fake::logs::count(Severity::Error), 1U, "exactly one error line for a dead link");
+  CHECK_EQ(rhi_fake::logs::count_containing("fault_timeout_ms", Severity::Error), 1U,
+           "the error line names fault_timeout_ms");
+  CHECK_EQ(rhi_fake::logs::count_containing("set_hardware_component_state", Severity::Error), 1U,
+           "the error line says what the operator runs next");
+
+  // on_error: the writer keeps sending the hold, even once the state is back.
+  enter_error(rig);
+  const uint64_t sent = t.sent_messages();
+  t.tick_writer();
+  CHECK(t.sent_messages() > sent, "after on_error the writer still sends");
+  if (last_command(t, c, "after on_error")) {
+    check_damping_only(c, "after on_error");
+  }
+  t.deliver_state(coded_state(4));
+  rig.hw->write(kTime, kPeriod);
+  t.tick_writer();
+  if (last_command(t, c, "state back, still in error")) {
+    check_damping_only(c, "state back while in error (no controller runs): still damping only");
+  }
+
+  // Recovery: configure + activate go through the full three-layer safe start.
+  if (!recover(rig)) {
+    teardown(rig);
+    return;
+  }
+  const uint64_t sent_at_activation = t.sent_messages();
+  t.tick_writer();
+  CHECK_EQ(t.sent_messages(), sent_at_activation, "after recovery, layer 1: nothing sent before the first state");
+  const StateFrame back = coded_state(7);
+  t.deliver_state(back);
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK, "read() returns OK after recovery");
+  t.tick_writer();
+  if (last_command(t, c, "recovery, layer 2")) {
+    check_hold(c, back, "first command after recovery (layer 2)");
+  }
+  apply_command(rig.ifs, cmd);
+  rig.hw->write(kTime, kPeriod);
+  t.tick_writer();
+  if (last_command(t, c, "recovery, layer 3")) {
+    if (kHasTransmission) {
+      check_damping_only(c, "first write() after recovery (layer 3)");
+    } else {
+      check_hold(c, back, "first write() after recovery (layer 3)");
+    }
+  }
+  teardown(rig);
+}
+
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
 // ================================================================ CRC (reference and generated)
 void test_crc_functions() {
@@ -1165,6 +1355,7 @@ void test_threads(int duration_ms) {
   rig.t.use_real_threads(true);
   hardware_interface::HardwareInfo info = make_hardware_info();
   info.hardware_parameters["state_timeout_ms"] = "2000";  // sanitizers slow everything down
+  info.hardware_parameters["fault_timeout_ms"] = "20000";
   if (!setup(rig, info) || !activate(rig)) {
     teardown(rig);
     rig.t.use_real_threads(false);
@@ -1264,7 +1455,6 @@ void test_threads(int duration_ms) {
 // make, the safe start holds the measured pose, the motors receive what puts the joints where the
 // controller commanded (velocities, efforts and gains through the ratios), and a broken
 // calibration file refuses on_configure with one error line.
-const rclcpp_lifecycle::State kUnconfigured(lifecycle_msgs::msg::State::PRIMARY_STATE_UNCONFIGURED, "unconfigured");
 
 bool near(double got, double want, double tolerance) {
   return std::fabs(got - want) <= tolerance * (1.0 + std::fabs(want));
@@ -1510,7 +1700,7 @@ void test_unfilled_refuses_activation() {
 
 }  // namespace
 
-// --only=threads (or a comma list of interfaces,main,parameters,decimation,crc,threads) runs just
+// --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,crc,threads) runs just
 // those scenarios, e.g. to repeat the threaded one many times.
 static bool selected(const std::string& only, const char* name) {
   if (only.empty()) {
@@ -1539,14 +1729,15 @@ int main(int argc, char** argv) {
 #endif
     if (kHasTransmission && only.empty()) {
       // The main scenario, decimation and parameters compare exact motor values with joint values.
-      std::printf("motors that are not joints: sections interfaces, transmission, threads\n");
-      only = "interfaces,transmission,threads";
+      std::printf("motors that are not joints: sections interfaces, transmission, faults, threads\n");
+      only = "interfaces,transmission,faults,threads";
     }
     if (selected(only, "interfaces")) test_interfaces();
     if (selected(only, "transmission")) test_transmission();
     if (selected(only, "main")) test_main_scenario();
     if (selected(only, "parameters")) test_parameters();
     if (selected(only, "decimation")) test_decimation_keeps_state_fresh();
+    if (selected(only, "faults")) test_faults();
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
     if (selected(only, "crc")) test_crc_functions();
 #endif

@@ -38,6 +38,7 @@ def test_base_config_loads_with_transport_defaults(tmp_path):
     assert cfg.float_type == "double"
     assert cfg.parameters.command_writer_period_us == 2000 and cfg.parameters.state_decimation == 1
     assert cfg.parameters.enable_monitor is True and cfg.parameters.network_interface == "lo"
+    assert cfg.parameters.state_timeout_ms == 100 and cfg.parameters.fault_timeout_ms == 1000
     options = cfg.transport_options
     assert isinstance(options, GenericTopicsOptions)
     assert options.state_topic == "/hardware/joint_states"
@@ -80,6 +81,12 @@ def test_agibot_groups_get_offsets():
     (BASE + "parameters:\n  state_decimation: 0\n", 11, "parameters.state_decimation", "out of range"),
     (BASE + "parameters:\n  command_writer_period_us: fast\n", 11, "parameters.command_writer_period_us",
      "whole number"),
+    (BASE + "parameters:\n  fault_timeout_ms: soon\n", 11, "parameters.fault_timeout_ms", "whole number"),
+    (BASE + "parameters:\n  fault_timeout_ms: 2.5\n", 11, "parameters.fault_timeout_ms", "whole number"),
+    (BASE + "parameters:\n  state_timeout_ms: 200\n  fault_timeout_ms: 200\n", 12, "parameters.fault_timeout_ms",
+     "must be greater than state_timeout_ms (200) -> set fault_timeout_ms above 200"),
+    (BASE + "parameters:\n  state_timeout_ms: 1500\n", 11, "parameters.state_timeout_ms",
+     "must be less than fault_timeout_ms (1000, the default) -> set parameters.fault_timeout_ms above 1500"),
     (BASE + "parameters:\n  enable_monitor: maybe\n", 11, "parameters.enable_monitor", "true or false"),
     (BASE + "parameters:\n  network_iface: eth0\n", 11, "parameters.network_iface", "did you mean 'network_interface'"),
     (BASE + "transport_options:\n  lowcmd_topic: rt/lowcmd\n", 11, "transport_options.lowcmd_topic", "unknown key"),
@@ -97,6 +104,13 @@ def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
     assert err.line == line, str(err)
     assert err.key == key, str(err)
     assert words in str(err)
+
+
+def test_fault_timeout_is_read_and_follows_the_state_timeout(tmp_path):
+    cfg = load_config(write(tmp_path, BASE + "parameters:\n  state_timeout_ms: 50\n  fault_timeout_ms: 400\n"))
+    assert (cfg.parameters.state_timeout_ms, cfg.parameters.fault_timeout_ms) == (50, 400)
+    just_above = load_config(write(tmp_path, BASE + "parameters:\n  state_timeout_ms: 999\n"))
+    assert just_above.parameters.fault_timeout_ms == 1000
 
 
 def test_unitree_motor_count_above_slots(tmp_path):

@@ -70,10 +70,11 @@ constexpr std::array<robot_hardware_interface::JointSpec, 31> kJoints = {{
 static_assert(robot_hardware_interface::slots_are_valid(kJoints, X2_NUM_MOTOR), "joint table");
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
-// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
+// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
+// fault_timeout_ms
 constexpr RobotSpec kRobot{"robot_hardware_interface/agibot/X2HardwareInterface",
   "x2_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"lo", true, 2000, 1, 100}};
+  {"lo", true, 2000, 1, 100, 1000}};
 
 // AimDK joint groups: {name, first motor slot, size, command topic, state topic}
 constexpr std::array<robot_hardware_interface::AimdkJointGroup, 4> kGroups = {{

@@ -58,10 +58,11 @@ constexpr std::array<robot_hardware_interface::JointSpec, 24> kJoints = {{
 static_assert(robot_hardware_interface::slots_are_valid(kJoints, PM01_NUM_MOTOR), "joint table");
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
-// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms
+// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
+// fault_timeout_ms
 constexpr RobotSpec kRobot{"robot_hardware_interface/engineai/PM01HardwareInterface",
   "pm01_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"lo", true, 2000, 1, 100}};
+  {"lo", true, 2000, 1, 100, 1000}};
 
 // transport_options: command, state and IMU topics, parallel_parser_type (0 CLASSIC, 1 RL), qos
 constexpr robot_hardware_interface::EngineaiTopicsOptions kTransport{

@@ -7,6 +7,7 @@
 #ifndef ROBOT_HARDWARE_INTERFACE__COMMON__COMMAND_GUARD_HPP_
 #define ROBOT_HARDWARE_INTERFACE__COMMON__COMMAND_GUARD_HPP_
 
+#include <atomic>
 #include <cinttypes>
 #include <cmath>
 #include <cstddef>
@@ -53,11 +54,24 @@ public:
   {
     safe_cmd_ = Command{};
     holding_ = false;
+    latched_.store(false, std::memory_order_release);
   }
+
+  // on_error (any thread): hold every joint damping-only until the next reset(), even once the
+  // state is back: the controllers that wrote the last command are no longer running.
+  void latch_hold() {latched_.store(true, std::memory_order_release);}
 
   // The frame to send for `cmd`; `stale`: no valid state for state_timeout_ms.
   const Command * guard(const Command & cmd, bool stale)
   {
+    if (latched_.load(std::memory_order_acquire)) {
+      RCLCPP_WARN_THROTTLE(
+        monitor_.logger(), monitor_.throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
+        "the driver is in error (no valid state for fault_timeout_ms): every joint held with kp = "
+        "0 until it is configured and activated again");
+      holding_ = true;
+      return hold();
+    }
     if (stale) {
       RCLCPP_WARN_THROTTLE(
         monitor_.logger(), monitor_.throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
@@ -87,18 +101,18 @@ public:
       }
     }
 
+    if (stale) {
+      return hold();
+    }
     bool rejected = false;
     for (size_t i = 0; i < N; ++i) {
       // Non-finite values or negative gains are never forwarded: that joint holds damping only.
       const bool valid =
         all_finite(cmd.q_target[i], cmd.dq_target[i], cmd.kp[i], cmd.kd[i], cmd.tau_ff[i]) &&
         cmd.kp[i] >= 0 && cmd.kd[i] >= 0;
-      if (stale || !valid) {
-        // Keep the last safe position target and damping of this joint.
-        safe_cmd_.dq_target[i] = 0;
-        safe_cmd_.kp[i] = 0;
-        safe_cmd_.tau_ff[i] = 0;
-        rejected = rejected || !valid;
+      if (!valid) {
+        hold_joint(i);
+        rejected = true;
         continue;
       }
       safe_cmd_.q_target[i] = cmd.q_target[i];
@@ -118,10 +132,28 @@ public:
   }
 
 private:
+  // Keep the last safe position target and damping of joint `i`.
+  void hold_joint(size_t i)
+  {
+    safe_cmd_.dq_target[i] = 0;
+    safe_cmd_.kp[i] = 0;
+    safe_cmd_.tau_ff[i] = 0;
+  }
+
+  // Every joint damping-only.
+  const Command * hold()
+  {
+    for (size_t i = 0; i < N; ++i) {
+      hold_joint(i);
+    }
+    return &safe_cmd_;
+  }
+
   DriverMonitor & monitor_;
   const DriverParameters & parameters_;
   Command safe_cmd_;                   // the frame actually sent
   bool holding_{false};                // holding because the state is stale
+  std::atomic<bool> latched_{false};   // on_error: hold until the next activation
   uint64_t invalid_command_count_{0};  // cycles with a rejected joint command
 };
 

@@ -130,6 +130,16 @@ public:
     guard_.reset();
   }
 
+  // read(), at steady time `now_ns`: the link is dead, no valid state for more than
+  // fault_timeout_ms since the newest one or, before the first, since the activation.
+  bool link_dead(int64_t now_ns) const
+  {
+    return freshness_.silent(parameters_.fault_timeout_ms, now_ns);
+  }
+
+  // on_error: the command writer holds every joint damping-only until the next activation.
+  void hold_until_activation() {guard_.latch_hold();}
+
   // ---------------------------------------------------------------- state thread (transport)
   // Decimation of a single state stream: true when this frame must be parsed.
   bool start_state_frame()

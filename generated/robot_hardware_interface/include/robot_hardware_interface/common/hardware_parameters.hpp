@@ -28,13 +28,15 @@ struct DriverParameters
   uint64_t command_writer_period_us;
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
+  uint64_t fault_timeout_ms;  // no state for this long after activation: read() returns ERROR
 
   explicit DriverParameters(const ParameterDefaults & defaults)
   : network_interface(defaults.network_interface),
     enable_monitor(defaults.enable_monitor),
     command_writer_period_us(defaults.command_writer_period_us),
     state_decimation(defaults.state_decimation),
-    state_timeout_ms(defaults.state_timeout_ms)
+    state_timeout_ms(defaults.state_timeout_ms),
+    fault_timeout_ms(defaults.fault_timeout_ms)
   {
   }
 };
@@ -134,8 +136,17 @@ bool read_driver_parameters(
       out.command_writer_period_us) ||
     !read_unsigned_parameter(logger, parameters, "state_decimation", 1, 10000, decimation) ||
     !read_unsigned_parameter(
-      logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms))
+      logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms) ||
+    !read_unsigned_parameter(
+      logger, parameters, "fault_timeout_ms", 2, 3600000, out.fault_timeout_ms))
   {
+    return false;
+  }
+  // The driver holds the joints after state_timeout_ms, then faults after fault_timeout_ms.
+  if (out.fault_timeout_ms <= out.state_timeout_ms) {
+    RCLCPP_ERROR(
+      logger, "hardware parameter 'fault_timeout_ms' is %" PRIu64 ": expected more than "
+      "state_timeout_ms (%" PRIu64 ")", out.fault_timeout_ms, out.state_timeout_ms);
     return false;
   }
   out.state_decimation = static_cast<uint32_t>(decimation);

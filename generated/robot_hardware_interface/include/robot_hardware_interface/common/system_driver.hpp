@@ -84,7 +84,11 @@ public:
 
   CallbackReturn on_activate(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
+    // After on_error the transport still sends the hold: stop it (a no-op when it is stopped)
+    // before the safe start is re-armed, which needs every transport thread stopped.
+    transport_->stop();
     core_.reset_for_activation();
+    link_dead_reported_ = false;
     const CallbackReturn user = on_activate_hook();
     if (user != CallbackReturn::SUCCESS) {
       return user;
@@ -120,6 +124,20 @@ public:
     return CallbackReturn::SUCCESS;
   }
 
+  // read() returned ERROR (the link is dead) or a transition failed: ros2_control stops the
+  // controllers and leaves the component unconfigured. The transport keeps running so that the
+  // command writer keeps sending the damping-only hold (kp = 0, the last safe position target),
+  // even if the state comes back, until on_activate restarts it through the full safe start.
+  CallbackReturn on_error(const rclcpp_lifecycle::State & /*previous_state*/) override
+  {
+    core_.hold_until_activation();
+    RCLCPP_ERROR(
+      core_.logger(), "in error: the %s transport keeps sending damping only (kp = 0) to every "
+      "joint; once the robot answers again, configure and activate the component",
+      transport_->name());
+    return CallbackReturn::SUCCESS;
+  }
+
   // The controller manager switches controllers: claimed command interfaces count, unclaimed
   // gains fall back to the joint's default (see DriverCore::write_command()).
   return_type prepare_command_mode_switch(
@@ -143,6 +161,9 @@ public:
     const auto start = std::chrono::steady_clock::now();
     core_.read_state();
     publish_state_values();
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_.link_dead(steady_ns(start)))) {
+      return report_dead_link();
+    }
     core_.monitor().check_read_latency(start);
     return return_type::OK;
   }
@@ -198,6 +219,22 @@ protected:
   rclcpp::Node::SharedPtr node_;
 
 private:
+  // read() of a dead link: ERROR, said once per activation (read() runs at the control rate).
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_dead_link()
+  {
+    if (!link_dead_reported_) {
+      link_dead_reported_ = true;
+      const DriverParameters & p = core_.parameters();
+      RCLCPP_ERROR(
+        core_.logger(), "link lost: no valid state from the robot for more than %" PRIu64 " ms "
+        "(fault_timeout_ms; held damping-only since state_timeout_ms = %" PRIu64 " ms): read() "
+        "returns ERROR, ros2_control stops the controllers. Check the robot's power and network, "
+        "then set the component active again (ros2 control set_hardware_component_state %s "
+        "active)", p.fault_timeout_ms, p.state_timeout_ms, hardware_name_.c_str());
+    }
+    return return_type::ERROR;
+  }
+
   CallbackReturn initialize(
     const hardware_interface::HardwareInfo & info, const rclcpp::Logger & logger) override
   {
@@ -212,6 +249,7 @@ private:
       RCLCPP_ERROR(log, "%s", core_.transmissions().error().c_str());
       return CallbackReturn::ERROR;
     }
+    hardware_name_ = info.name;
     const auto calibration = info.hardware_parameters.find("calibration_file");
     calibration_file_ = calibration == info.hardware_parameters.end() ?
       std::string() : std::string(trimmed(calibration->second));
@@ -233,8 +271,9 @@ private:
     const DriverParameters & p = core_.parameters();
     RCLCPP_INFO(
       log, "initialized: %zu joints, command period %" PRIu64 " us, state decimation %u, "
-      "state timeout %" PRIu64 " ms, monitor %s", core_.spec().joint_count,
-      p.command_writer_period_us, p.state_decimation, p.state_timeout_ms,
+      "state timeout %" PRIu64 " ms, fault timeout %" PRIu64 " ms, monitor %s",
+      core_.spec().joint_count, p.command_writer_period_us, p.state_decimation, p.state_timeout_ms,
+      p.fault_timeout_ms,
       p.enable_monitor ? "on" : "off");
     return CallbackReturn::SUCCESS;
   }
@@ -364,6 +403,8 @@ private:
   DriverCore<N, T> core_;
   std::unique_ptr<DriverTransport<N, T>> transport_;
   std::string calibration_file_;  // the `calibration_file` hardware parameter, "" for none
+  std::string hardware_name_;     // the <ros2_control name>, for the operator's command line
+  bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
 };
 
 }  // namespace robot_hardware_interface

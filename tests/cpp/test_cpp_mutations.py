@@ -139,7 +139,7 @@ MUTATIONS = (
              TokenEdit(STATE_FRESHNESS, "age_ns > static_cast<int64_t>(timeout_ms) * 1000000",
                        "age_ns < 0 && timeout_ms == 0"), ("command_safety",)),
     Mutation("dead_link_never_faults", "read() never returns ERROR: controllers keep running on a held state",
-             TokenEdit(SYSTEM_DRIVER, "if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_.link_dead($$)))",
+             TokenEdit(SYSTEM_DRIVER, "if (ROBOT_HARDWARE_INTERFACE_UNLIKELY($$ && core_.link_dead($$)))",
                        "if (false)"), ("faults",)),
     Mutation("dead_link_never_answered", "a robot that never answers after on_activate never faults: the "
              "wait for the first state is not counted",
@@ -169,6 +169,9 @@ MUTATIONS = (
              ("transmission",), robots=TRANSMISSION_ROBOTS),
     Mutation("calibration_ignored", "on_configure reads the calibration file but does not apply it",
              TokenEdit(DRIVER_CORE, "transmissions_.calibrate($$);", "static_cast<void>(entry);"), ("transmission",),
+             robots=("engineai/pm01",)),
+    Mutation("inactive_component_faults", "read() of an inactive, silent component returns ERROR",
+             TokenEdit(SYSTEM_DRIVER, "active_.load(std::memory_order_relaxed) &&", ""), ("faults",),
              robots=("engineai/pm01",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),

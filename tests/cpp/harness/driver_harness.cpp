@@ -1193,6 +1193,11 @@ void test_faults() {
     teardown(rig);
     return;
   }
+  // ros2_control also reads an inactive component: configured but not started, a silent robot is
+  // no fault, however long it stays silent.
+  std::this_thread::sleep_for(std::chrono::milliseconds(kFaultTimeoutMs + 50));
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK,
+        "read() of an inactive component, silent for longer than fault_timeout_ms, returns OK");
   auto t0 = std::chrono::steady_clock::now();  // before on_activate: the wait for a first state
   if (!activate(rig)) {
     teardown(rig);

@@ -7,6 +7,7 @@
 #ifndef ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
 #define ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <exception>
@@ -104,6 +105,7 @@ public:
       transport_->stop();
       return CallbackReturn::ERROR;
     }
+    active_.store(true, std::memory_order_relaxed);
     RCLCPP_INFO(core_.logger(), "activated: commands start after the first valid state");
     const size_t limp = core_.slots().joints_without_default_stiffness();
     if (limp > 0) {
@@ -117,6 +119,7 @@ public:
 
   CallbackReturn on_deactivate(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
+    active_.store(false, std::memory_order_relaxed);
     transport_->stop();
     on_deactivate_hook();
     RCLCPP_INFO(core_.logger(), "deactivated: the %s transport stopped sending",
@@ -130,6 +133,7 @@ public:
   // even if the state comes back, until on_activate restarts it through the full safe start.
   CallbackReturn on_error(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
+    active_.store(false, std::memory_order_relaxed);
     core_.hold_until_activation();
     RCLCPP_ERROR(
       core_.logger(), "in error: the %s transport keeps sending damping only (kp = 0) to every "
@@ -161,7 +165,11 @@ public:
     const auto start = std::chrono::steady_clock::now();
     core_.read_state();
     publish_state_values();
-    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_.link_dead(steady_ns(start)))) {
+    // Only an active component faults: ros2_control also reads an inactive one, and a robot that
+    // is configured but not yet started may well be silent.
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(
+        active_.load(std::memory_order_relaxed) && core_.link_dead(steady_ns(start))))
+    {
       return report_dead_link();
     }
     core_.monitor().check_read_latency(start);
@@ -405,6 +413,7 @@ private:
   std::string calibration_file_;  // the `calibration_file` hardware parameter, "" for none
   std::string hardware_name_;     // the <ros2_control name>, for the operator's command line
   bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
+  std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
 };
 
 }  // namespace robot_hardware_interface

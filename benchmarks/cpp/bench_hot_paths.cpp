@@ -170,6 +170,7 @@ void start(Rig& rig, uint32_t decimation, Claim claim_kind, bool calibrated) {
   info.hardware_parameters["enable_monitor"] = "true";
   info.hardware_parameters["state_decimation"] = std::to_string(decimation);
   info.hardware_parameters["state_timeout_ms"] = "100000";  // valgrind is slow: never stale
+  info.hardware_parameters["fault_timeout_ms"] = "200000";  // nor faulted
   rig.hw = rhi_fake::plugins::create<SystemInterface>(kPluginType);
   if (rig.fw.init(*rig.hw, info) != CallbackReturn::SUCCESS) fail("on_init failed");
   rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);

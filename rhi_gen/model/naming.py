@@ -51,7 +51,8 @@ PACKAGE_SCOPE_NAMES = frozenset({
     "unitree_crc", "unitree_go", "unitree_hg",                     # namespaces
     # functions (snake_case, ROS 2 style, so a vendor name could redeclare one)
     "all_finite", "bound_command_block", "bounded", "components_initialized", "copy_state_block",
-    "cpu_has_clmul", "elapsed_us", "for_each_slot_block", "load_word", "low_cmd_crc", "low_state_crc",
+    "cpu_has_clmul", "elapsed_us", "estop_pressed", "for_each_slot_block", "health_state_value", "load_word",
+    "low_cmd_crc", "low_state_crc",
     "make_joint_index_map", "make_qos", "make_resource_manager", "make_tables", "masked_crc",
     "masked_crc_clmul", "masked_crc_portable", "message_crc", "parse_bool", "parse_unsigned",
     "power_of_x_mod", "publish_ros_imu", "read_bool_parameter", "read_driver_parameters",

@@ -14,7 +14,7 @@ import re
 from dataclasses import dataclass
 
 from ..model import RobotModel
-from .views import DESCRIPTION_ARGUMENTS, controllers_view, xacro_text
+from .views import DESCRIPTION_ARGUMENTS, HEALTH_CONTROLLER, controllers_view, xacro_text
 
 ARGUMENT_HELP = {
     "use_mock_hardware": "true: ros2_control's mock_components/GenericSystem instead of the robot (no hardware "
@@ -100,11 +100,13 @@ class LaunchView:
 
 def start_controllers(robot: RobotModel) -> tuple[tuple[str, ...], tuple[str, ...]]:
     """(active, inactive) controllers of config/<robot>_controllers.yaml: the joint state broadcaster, the
-    IMU broadcaster and the position controller (the velocity controller when no joint is position-
-    commanded) start active; the other forward controllers are loaded inactive."""
+    IMU broadcaster, the health controller (the driver's health and its e-stop, ready from the start) and
+    the position controller (the velocity controller when no joint is position-commanded) start active;
+    the other forward controllers are loaded inactive."""
     forward = [c.name for c in controllers_view(robot).controllers]
     main = "forward_position_controller" if "forward_position_controller" in forward else forward[0]
-    active = ("joint_state_broadcaster", *(("imu_sensor_broadcaster",) if robot.imu.enabled else ()), main)
+    active = ("joint_state_broadcaster", *(("imu_sensor_broadcaster",) if robot.imu.enabled else ()),
+              HEALTH_CONTROLLER, main)
     return active, tuple(name for name in forward if name != main)
 
 

@@ -29,6 +29,15 @@ DESCRIPTION_ARGUMENTS = ("use_mock_hardware", "network_interface", "enable_monit
                          "state_decimation", "state_timeout_ms", "fault_timeout_ms")
 
 
+# The driver's health GPIO, <gpio name="<hardware name>_health"> (cpp/common/driver_health.hpp holds
+# the same names): its state interfaces, in order, and the e-stop command interface.
+HEALTH_STATE_INTERFACES = ("state_age_ms", "invalid_states", "stale_holds", "rejected_commands",
+                           "writer_overruns", "fault", "estop")
+ESTOP_INTERFACE = "estop"
+HEALTH_GPIO_SUFFIX = "_health"
+HEALTH_CONTROLLER = "health_controller"  # gpio_controllers/GpioCommandController of the health GPIO
+
+
 @dataclass(frozen=True)
 class PlainCheck:
     """One plain-CMake dependency in rhi_check_dependencies: found when its target variable is set."""
@@ -122,6 +131,10 @@ class ControllersView:
     limp_count: int                      # joints without default gains (0 stiffness and 0 damping)
     joint_count: int
     velocity_count: int
+    health_gpio: str = ""                # the health GPIO under the default hardware name
+    health_controller: str = HEALTH_CONTROLLER
+    health_states: tuple[str, ...] = HEALTH_STATE_INTERFACES
+    estop: str = ESTOP_INTERFACE
 
 
 def update_rate_hz(period_us: int) -> int:
@@ -150,7 +163,7 @@ def controllers_view(robot: RobotModel) -> ControllersView:
     return ControllersView(
         update_rate=update_rate_hz(period), period_us=period, gains=gains, controllers=tuple(controllers),
         limp_count=sum(1 for j in robot.joints if j.default_stiffness == 0.0 and j.default_damping == 0.0),
-        joint_count=len(robot.joints), velocity_count=len(velocity))
+        joint_count=len(robot.joints), velocity_count=len(velocity), health_gpio=health_gpio_name(robot))
 
 
 # ---------------------------------------------------------------- description/<robot>.ros2_control.xacro
@@ -194,11 +207,19 @@ class XacroView:
     mock_parameters: tuple[tuple[str, str], ...] = ()  # mock_components/GenericSystem hardware parameters
     mock_note: str = ""                                 # what the mock does with commands, for the header
     imu_initial: tuple[tuple[str, str], ...] = ()       # IMU state interface -> initial_value
+    health_states: tuple[str, ...] = HEALTH_STATE_INTERFACES  # the health GPIO's state interfaces
+    estop: str = ESTOP_INTERFACE                              # ... and its command interface
+    health_suffix: str = HEALTH_GPIO_SUFFIX                   # <gpio name="${name}_health">
 
 
 IMU_INTERFACES = ("orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
                   "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
                   "linear_acceleration.z")
+
+
+def health_gpio_name(robot: RobotModel) -> str:
+    """The health GPIO's name under the macro's default hardware name (what the controllers YAML names)."""
+    return f"{robot.robot}_hardware{HEALTH_GPIO_SUFFIX}"
 
 
 def mock_parameters(robot: RobotModel) -> tuple[tuple[str, str], ...]:

@@ -146,6 +146,14 @@ def check_controllers(launched: Launched, description, controllers_file: Path, m
         if kind == "forward_command_controller/ForwardCommandController":
             claimed = {f"{j}/{params['interface_name']}" for j in params["joints"]}
             assert params["joints"] and claimed <= commands, f"{name} claims {sorted(claimed - commands)}"
+        elif kind == "gpio_controllers/GpioCommandController":
+            # generate_parameter_library's maps: <key>.<gpio>.interfaces (a list there is not read)
+            gpios = params["gpios"]
+            claimed = {f"{g}/{i}" for g in gpios for i in params["command_interfaces"][g]["interfaces"]}
+            read = {f"{g}/{i}" for g in gpios for i in params["state_interfaces"][g]["interfaces"]}
+            assert gpios == [f"{description.name}_health"], gpios
+            assert claimed == {f"{gpios[0]}/estop"} and claimed <= commands, sorted(claimed)
+            assert read and read <= states, f"{name} reads {sorted(read - states)}"
         elif kind == "imu_sensor_broadcaster/IMUSensorBroadcaster":
             assert model.imu.enabled
             assert {f"{params['sensor_name']}/{i}" for i in ("orientation.w", "angular_velocity.x")} <= states
@@ -193,6 +201,7 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
     assert cm.remappings == [("~/robot_description", "/robot_description")]
     active, _ = spawned(node(launched, "spawner"))
     assert active == ["joint_state_broadcaster", *(["imu_sensor_broadcaster"] if m.imu.enabled else []),
+                      "health_controller",
                       "forward_position_controller" if any(j.command_mode == "position" for j in m.joints)
                       else "forward_velocity_controller"]
     check_controllers(launched, d, controllers_file, m)

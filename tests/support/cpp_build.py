@@ -236,6 +236,7 @@ class Description:
     parameters: dict[str, str]
     joints: list[dict]
     sensors: list[dict]
+    gpios: list[dict]
 
 
 def expand_description(package_dir: Path, robot: str, work_dir: Path) -> Description:
@@ -283,6 +284,7 @@ def expand_description(package_dir: Path, robot: str, work_dir: Path) -> Descrip
         parameters=params(hardware),
         joints=[component(j) for j in block.findall("joint")],
         sensors=[component(s) for s in block.findall("sensor")],
+        gpios=[component(g) for g in block.findall("gpio")],
     )
 
 
@@ -340,6 +342,7 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     assert set(joint_map) == set(by_name), f"{model.robot}: YAML joint_map and model joints differ"
     assert all(by_name[n].index == i for n, i in joint_map.items()), f"{model.robot}: model moved a joint"
     description = expand_description(package_dir, model.robot, work_dir)
+    health_gpio = description.gpios[0]["name"] if description.gpios else ""
     plugins = plugin_types(package_dir)
     opts = model.transport_options
     params = model.parameters
@@ -384,6 +387,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr size_t kMotorCount = {model.motor_count};",
         f"inline constexpr bool kImuEnabled = {'true' if model.imu.enabled else 'false'};",
         f"inline constexpr char kImuName[] = {_c_string(model.imu.name)};",
+        "// the <gpio> of the expanded description (the driver's health), \"\" for none",
+        f"inline constexpr char kHealthGpio[] = {_c_string(health_gpio)};",
         f"inline constexpr bool kHasGains = {'true' if has_gains else 'false'};  // stiffness/damping travel",
         "// mode: 0 position-commanded, 1 velocity-commanded (a continuous joint unless command_modes says",
         "// otherwise); kp/kd: the YAML's default_gains (kp is 0 for a velocity-commanded joint)",
@@ -439,7 +444,7 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     ]
     for key, value in description.parameters.items():
         lines.append(f"    {{'H', {_c_string(key)}, {_c_string(value)}, \"\"}},")
-    for kind, components in (("J", description.joints), ("S", description.sensors)):
+    for kind, components in (("J", description.joints), ("S", description.sensors), ("G", description.gpios)):
         for comp in components:
             lines.append(f"    {{'{kind}', {_c_string(comp['name'])}, \"\", \"\"}},")
             for iface, p in comp["command_interfaces"]:

@@ -19,6 +19,9 @@ IMU_INTERFACES = ["orientation.x", "orientation.y", "orientation.z", "orientatio
                   "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
                   "linear_acceleration.z"]
 MOCK_PLUGIN = "mock_components/GenericSystem"
+# The driver's health GPIO (README "See the driver's health"), written out here independently of rhi_gen.
+HEALTH_STATES = ["state_age_ms", "invalid_states", "stale_holds", "rejected_commands", "writer_overruns", "fault",
+                 "estop"]
 
 
 def params(element: etree._Element) -> dict[str, str]:
@@ -48,7 +51,8 @@ def parse_ros2_control(xml: str | bytes) -> tuple[Description, etree._Element]:
         name=attribute(block, "name"), type=attribute(block, "type"),
         plugin=(hardware.findtext("plugin") or "").strip(), parameters=params(hardware),
         joints=[component(j) for j in block.findall("joint")],
-        sensors=[component(s) for s in block.findall("sensor")]), root
+        sensors=[component(s) for s in block.findall("sensor")],
+        gpios=[component(g) for g in block.findall("gpio")]), root
 
 
 def check_ros2_control(d: Description, model: RobotModel, yaml_path: Path, package_dir: Path, *,
@@ -85,6 +89,13 @@ def check_ros2_control(d: Description, model: RobotModel, yaml_path: Path, packa
         assert math.isclose(math.hypot(*orientation), 1.0), f"IMU starts at a non-unit quaternion {orientation}"
     if not model.imu.enabled:
         assert d.sensors == []
+    assert [g["name"] for g in d.gpios] == [f"{d.name}_health"], "one health GPIO named after the hardware"
+    health = d.gpios[0]
+    assert health["state_interfaces"] == HEALTH_STATES
+    assert [c for c, _ in health["command_interfaces"]] == ["estop"]
+    assert dict(health["command_interfaces"])["estop"].get("initial_value") == "0.0", "the e-stop starts released"
+    if "initial_values" in health:
+        assert health["initial_values"] == {n: "-1.0" if n == "state_age_ms" else "0.0" for n in HEALTH_STATES}
     if mock:
         assert d.plugin == MOCK_PLUGIN
         wheels = any(j.command_mode == "velocity" for j in model.joints)
@@ -103,6 +114,6 @@ def check_ros2_control(d: Description, model: RobotModel, yaml_path: Path, packa
 
 def exported(d: Description) -> tuple[set[str], set[str]]:
     """(command interfaces, state interfaces) the description exports, as "<component>/<interface>"."""
-    commands = {f"{j['name']}/{c}" for j in d.joints for c, _ in j["command_interfaces"]}
-    states = {f"{c['name']}/{s}" for c in (*d.joints, *d.sensors) for s in c["state_interfaces"]}
+    commands = {f"{j['name']}/{c}" for j in (*d.joints, *d.gpios) for c, _ in j["command_interfaces"]}
+    states = {f"{c['name']}/{s}" for c in (*d.joints, *d.sensors, *d.gpios) for s in c["state_interfaces"]}
     return commands, states

@@ -40,7 +40,7 @@ ARGUMENTS = [
      "the robot's URDF the description includes ('': urdf/<robot>.urdf of the package)"),
     ('controllers_file', '',
      "controller manager parameters and controllers ('': config/<robot>_controllers.yaml)"),
-    ('active_controllers', 'joint_state_broadcaster imu_sensor_broadcaster forward_position_controller',
+    ('active_controllers', 'joint_state_broadcaster imu_sensor_broadcaster health_controller forward_position_controller',
      'controllers to activate (names in the controllers file, space-separated)'),
     ('inactive_controllers', 'forward_stiffness_controller forward_damping_controller',
      'controllers to load without activating them (space-separated)'),

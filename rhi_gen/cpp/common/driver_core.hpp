@@ -18,6 +18,7 @@
 #include "robot_hardware_interface/common/command_claims.hpp"
 #include "robot_hardware_interface/common/command_guard.hpp"
 #include "robot_hardware_interface/common/data_buffer.hpp"
+#include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/driver_monitor.hpp"
 #include "robot_hardware_interface/common/hardware_parameters.hpp"
 #include "robot_hardware_interface/common/joint_transmissions.hpp"
@@ -118,6 +119,7 @@ public:
   // ros2_control storage, exported as interfaces: controller thread only.
   JointStorage<N> & joints() {return frames_.joints;}
   ImuData & imu_data() {return imu_data_;}
+  DriverHealthData & health() {return health_;}
 
   // on_activate: re-arm the safe start. After a deactivation the robot may have moved, so nothing
   // from the previous activation may be sent. Called while no transport thread runs.
@@ -137,7 +139,32 @@ public:
   }
 
   // on_error: the command writer holds every joint damping-only until the next activation.
-  void hold_until_activation() {guard_.latch_hold();}
+  void hold_until_activation() {guard_.latch_hold(CommandGuard<N, T>::HoldReason::kError);}
+
+  // write(): the health GPIO's estop command is pressed. Latches the damping-only hold until the
+  // next activation (releasing the e-stop does not release the robot); true the first time.
+  bool press_estop()
+  {
+    if (guard_.latched() == CommandGuard<N, T>::HoldReason::kEstop) {
+      return false;
+    }
+    guard_.latch_hold(CommandGuard<N, T>::HoldReason::kEstop);
+    return true;
+  }
+
+  // read(), at steady time `now_ns`: the health GPIO's states (`link_dead`: read() returns ERROR).
+  void read_health(int64_t now_ns, bool link_dead)
+  {
+    const int64_t silence_ns = freshness_.silence_ns(now_ns);
+    health_.state_age_ms = silence_ns < 0 ? -1.0 : static_cast<double>(silence_ns) * 1e-6;
+    health_.invalid_states = static_cast<double>(freshness_.invalid_states());
+    health_.stale_holds = static_cast<double>(guard_.stale_holds());
+    health_.rejected_commands = static_cast<double>(guard_.rejected_commands());
+    health_.writer_overruns = static_cast<double>(monitor_.writer_overruns());
+    const auto latched = guard_.latched();
+    health_.fault = link_dead || latched != CommandGuard<N, T>::HoldReason::kNone ? 1.0 : 0.0;
+    health_.estop = latched == CommandGuard<N, T>::HoldReason::kEstop ? 1.0 : 0.0;
+  }
 
   // ---------------------------------------------------------------- state thread (transport)
   // Decimation of a single state stream: true when this frame must be parsed.
@@ -317,6 +344,7 @@ private:
   // ros2_control storage, the per-slot command bounds and write()'s frame: controller thread only
   ControllerFrames<N, T> frames_{};
   ImuData imu_data_{};
+  DriverHealthData health_{};
 
   // Pre-allocated frames (no heap allocation in hot paths)
   State motor_state_cache_;    // state thread: parsing buffer

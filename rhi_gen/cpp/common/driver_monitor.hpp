@@ -17,6 +17,7 @@
 #include <rclcpp/logger.hpp>
 #include <rclcpp/logging.hpp>
 
+#include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/hardware_parameters.hpp"
 #include "robot_hardware_interface/common/monitor.hpp"
 
@@ -49,12 +50,11 @@ public:
   void check_state_latency(std::chrono::steady_clock::time_point start) {check(state_, start);}
   void check_writer_latency(std::chrono::steady_clock::time_point start) {check(writer_, start);}
 
-  // Writer thread: warns when the send interval deviates from command_writer_period_us.
+  // Writer thread, once per send: counts an overrun (the send came more than
+  // CMD_INTERVAL_JITTER_WARN_US after command_writer_period_us; always, for the health GPIO) and,
+  // with the monitor on, warns when the interval deviates from the period either way.
   void check_writer_jitter()
   {
-    if (!parameters_.enable_monitor) {
-      return;
-    }
     const uint64_t now_us = steady_now_us();
     const uint64_t last_us = cmd_writer_last_time_us_.exchange(now_us, std::memory_order_relaxed);
     if (last_us == 0 || now_us < last_us) {
@@ -62,6 +62,12 @@ public:
     }
     const int64_t jitter_us = static_cast<int64_t>(now_us - last_us) -
       static_cast<int64_t>(parameters_.command_writer_period_us);
+    if (jitter_us > static_cast<int64_t>(MonitorThresholds::CMD_INTERVAL_JITTER_WARN_US)) {
+      writer_overruns_.add();
+    }
+    if (!parameters_.enable_monitor) {
+      return;
+    }
     if (static_cast<uint64_t>(std::llabs(jitter_us)) >
       MonitorThresholds::CMD_INTERVAL_JITTER_WARN_US)
     {
@@ -71,6 +77,9 @@ public:
         parameters_.command_writer_period_us);
     }
   }
+
+  // Any thread: sends later than the period allows since on_init (health GPIO).
+  uint64_t writer_overruns() const {return writer_overruns_.get();}
 
 private:
   // One monitored path: its threshold and its own warning throttle, touched only by the path's
@@ -109,6 +118,7 @@ private:
   rclcpp::Logger logger_;
   rclcpp::Clock throttle_clock_{RCL_STEADY_TIME};
   std::atomic<uint64_t> cmd_writer_last_time_us_{0};  // writer: jitter detection
+  HealthCounter writer_overruns_;                     // writer: late sends
   LatencyPath read_{"read()", MonitorThresholds::READ_WARN_US, kNever};
   LatencyPath write_{"write()", MonitorThresholds::WRITE_WARN_US, kNever};
   LatencyPath state_{"state callback", MonitorThresholds::STATE_HANDLER_WARN_US, kNever};

@@ -74,7 +74,7 @@ public:
   {
     auto exported = hardware_interface::SystemInterface::on_export_state_interfaces();
     state_links_.clear();
-    for (const auto * handles : {&joint_states_, &sensor_states_}) {
+    for (const auto * handles : {&joint_states_, &sensor_states_, &gpio_states_}) {
       for (const auto & handle : *handles) {
         const double * value = state_value(handle->get_prefix_name(), handle->get_interface_name());
         if (value != nullptr) {
@@ -98,6 +98,15 @@ public:
     }
     claimed_links_.clear();
     claimed_links_.reserve(command_links_.size());  // select_command_values() never allocates
+    // GPIO commands (the e-stop) are fetched every cycle: a controller claiming one switches no
+    // joint, so the joint claims never select it.
+    gpio_command_links_.clear();
+    for (const auto & handle : gpio_commands_) {
+      double * value = command_value(handle->get_prefix_name(), handle->get_interface_name());
+      if (value != nullptr) {
+        gpio_command_links_.push_back(CommandLink{handle.get(), value});
+      }
+    }
     return exported;
   }
 #else
@@ -112,7 +121,7 @@ public:
   std::vector<hardware_interface::StateInterface> export_state_interfaces() override
   {
     std::vector<hardware_interface::StateInterface> exported;
-    for (const auto * components : {&info_.joints, &info_.sensors}) {
+    for (const auto * components : {&info_.joints, &info_.sensors, &info_.gpios}) {
       for (const auto & component : *components) {
         for (const auto & interface : component.state_interfaces) {
           double * value = state_value(component.name, interface.name);
@@ -128,11 +137,13 @@ public:
   std::vector<hardware_interface::CommandInterface> export_command_interfaces() override
   {
     std::vector<hardware_interface::CommandInterface> exported;
-    for (const auto & joint : info_.joints) {
-      for (const auto & interface : joint.command_interfaces) {
-        double * value = command_value(joint.name, interface.name);
-        if (value != nullptr) {
-          exported.emplace_back(joint.name, interface.name, value);
+    for (const auto * components : {&info_.joints, &info_.gpios}) {
+      for (const auto & component : *components) {
+        for (const auto & interface : component.command_interfaces) {
+          double * value = command_value(component.name, interface.name);
+          if (value != nullptr) {
+            exported.emplace_back(component.name, interface.name, value);
+          }
         }
       }
     }
@@ -189,10 +200,12 @@ protected:
   void fetch_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
-    for (const CommandLink & link : claimed_links_) {
-      const std::optional<double> value = link.handle->get_optional();
-      if (value.has_value()) {
-        *link.value = *value;
+    for (const auto * links : {&claimed_links_, &gpio_command_links_}) {
+      for (const CommandLink & link : *links) {
+        const std::optional<double> value = link.handle->get_optional();
+        if (value.has_value()) {
+          *link.value = *value;
+        }
       }
     }
 #endif
@@ -225,6 +238,7 @@ private:
   std::vector<StateLink> state_links_;
   std::vector<CommandLink> command_links_;
   std::vector<CommandLink> claimed_links_;  // the command_links_ controllers claim
+  std::vector<CommandLink> gpio_command_links_;  // fetched every cycle (the e-stop)
 #endif
 };
 

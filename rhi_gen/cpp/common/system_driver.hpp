@@ -106,6 +106,11 @@ public:
     }
     active_.store(true, std::memory_order_relaxed);
     RCLCPP_INFO(core_.logger(), "activated: commands start after the first valid state");
+    if (estop_pressed(core_.health().estop_command)) {
+      RCLCPP_WARN(
+        core_.logger(), "the e-stop is still pressed (%s/%s): every joint stays damping-only; "
+        "release it and activate again", health_gpio_.c_str(), kEstopCommandInterface);
+    }
     const size_t limp = core_.slots().joints_without_default_stiffness();
     if (limp > 0) {
       RCLCPP_WARN(
@@ -162,13 +167,14 @@ public:
   return_type read(const rclcpp::Time & /*time*/, const rclcpp::Duration & /*period*/) override
   {
     const auto start = std::chrono::steady_clock::now();
+    const int64_t now_ns = steady_ns(start);
     core_.read_state();
-    publish_state_values();
     // Only an active component faults: ros2_control also reads an inactive one, and a robot that
     // is configured but not yet started may well be silent.
-    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(
-        active_.load(std::memory_order_relaxed) && core_.link_dead(steady_ns(start))))
-    {
+    const bool link_dead = active_.load(std::memory_order_relaxed) && core_.link_dead(now_ns);
+    core_.read_health(now_ns, link_dead);
+    publish_state_values();
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(link_dead)) {
       return report_dead_link();
     }
     core_.monitor().check_read_latency(start);
@@ -188,6 +194,9 @@ public:
         [&claims, &joints](const double * value) {return claims.claims_value(joints, value);});
     }
     fetch_command_values();
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(estop_pressed(core_.health().estop_command))) {
+      press_estop();
+    }
     if (core_.write_command()) {
       publish_command_values();
     }
@@ -226,6 +235,18 @@ protected:
   rclcpp::Node::SharedPtr node_;
 
 private:
+  // write() with the e-stop pressed: the hold latches until the next activation, said once.
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE void press_estop()
+  {
+    if (core_.press_estop()) {
+      RCLCPP_ERROR(
+        core_.logger(), "e-stop (%s/%s): every joint held damping-only (kp = 0, the last safe "
+        "target, no feed-forward) until the e-stop is released and the component is activated "
+        "again (ros2 control set_hardware_component_state %s inactive, then active)",
+        health_gpio_.c_str(), kEstopCommandInterface, hardware_name_.c_str());
+    }
+  }
+
   // read() of a dead link: ERROR, said once per activation (read() runs at the control rate).
   ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_dead_link()
   {
@@ -247,6 +268,8 @@ private:
   {
     core_.monitor().set_logger(logger);
     const rclcpp::Logger & log = core_.logger();
+    hardware_name_ = info.name;
+    health_gpio_ = info.gpios.empty() ? info.name + "_health" : info.gpios.front().name;
     if (!read_driver_parameters(log, info.hardware_parameters, core_.parameters()) ||
       !description_is_driven(info))
     {
@@ -256,7 +279,6 @@ private:
       RCLCPP_ERROR(log, "%s", core_.transmissions().error().c_str());
       return CallbackReturn::ERROR;
     }
-    hardware_name_ = info.name;
     const auto calibration = info.hardware_parameters.find("calibration_file");
     calibration_file_ = calibration == info.hardware_parameters.end() ?
       std::string() : std::string(trimmed(calibration->second));
@@ -316,11 +338,24 @@ private:
         }
       }
     }
-    if (!info.gpios.empty()) {
+    // One <gpio>: the driver's health (state interfaces) and its e-stop (command interface).
+    if (info.gpios.size() > 1) {
       RCLCPP_ERROR(
-        log, "<gpio> '%s' of the ros2_control description: %s has no GPIO interfaces",
-        info.gpios.front().name.c_str(), core_.spec().plugin_name);
+        log, "<gpio> '%s' of the ros2_control description: %s has one GPIO, its health ('%s')",
+        info.gpios[1].name.c_str(), core_.spec().plugin_name, info.gpios.front().name.c_str());
       return false;
+    }
+    for (const auto & gpio : info.gpios) {
+      for (const auto & interface : gpio.state_interfaces) {
+        if (!supported(state_value(gpio.name, interface.name), interface, gpio.name)) {
+          return false;
+        }
+      }
+      for (const auto & interface : gpio.command_interfaces) {
+        if (!supported(command_value(gpio.name, interface.name), interface, gpio.name)) {
+          return false;
+        }
+      }
     }
     for (size_t i = 0; i < core_.spec().joint_count; ++i) {
       const JointSpec & joint = core_.spec().joints[i];
@@ -366,6 +401,9 @@ private:
       return name == "position" ? &joints.pos[s] : name == "velocity" ? &joints.vel[s] :
              name == "effort" ? &joints.tau[s] : nullptr;
     }
+    if (prefix == health_gpio_) {
+      return health_state_value(core_.health(), name);
+    }
     if (!core_.has_imu() || prefix != core_.spec().imu_name) {
       return nullptr;
     }
@@ -390,7 +428,8 @@ private:
   {
     const int slot = core_.slots().slot_of(prefix);
     if (slot < 0) {
-      return nullptr;
+      return prefix == health_gpio_ && name == kEstopCommandInterface ?
+             &core_.health().estop_command : nullptr;
     }
     if (core_.slots().mode_of(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
       (name == "position" || name == "stiffness"))
@@ -411,6 +450,7 @@ private:
   std::unique_ptr<DriverTransport<N, T>> transport_;
   std::string calibration_file_;  // the `calibration_file` hardware parameter, "" for none
   std::string hardware_name_;     // the <ros2_control name>, for the operator's command line
+  std::string health_gpio_;       // the <gpio> name of the health interfaces and the e-stop
   bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
   std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
 };

@@ -65,6 +65,20 @@ inline const std::vector<std::string> & imu_state_interfaces()
   return interfaces;
 }
 
+// The driver's health GPIO, <gpio name="<hardware name>_health"> of the generated description.
+inline const std::vector<std::string> & health_state_interfaces()
+{
+  static const std::vector<std::string> interfaces = {
+    "state_age_ms", "invalid_states", "stale_holds", "rejected_commands", "writer_overruns",
+    "fault", "estop"};
+  return interfaces;
+}
+
+inline std::string health_gpio(const RobotUnderTest & robot)
+{
+  return robot.hardware_name + "_health";
+}
+
 inline std::string ros2_control_xml(const RobotUnderTest & robot)
 {
   std::string xml = "  <ros2_control name=\"" + robot.hardware_name + "\" type=\"system\">\n";
@@ -95,6 +109,12 @@ inline std::string ros2_control_xml(const RobotUnderTest & robot)
     xml += "      <param name=\"frame_id\">" + robot.imu_frame_xml + "</param>\n";
     xml += "    </sensor>\n";
   }
+  xml += "    <gpio name=\"" + health_gpio(robot) + "\">\n";
+  xml += "      <command_interface name=\"estop\"/>\n";
+  for (const std::string & interface : health_state_interfaces()) {
+    xml += "      <state_interface name=\"" + interface + "\"/>\n";
+  }
+  xml += "    </gpio>\n";
   xml += "  </ros2_control>\n";
   return xml;
 }
@@ -183,6 +203,11 @@ TEST_P(HardwareInterfaceTest, exports_every_state_interface)
     }
   }
   EXPECT_EQ(expected.size(), robot.state_interface_count);
+  for (const std::string & interface : health_state_interfaces()) {
+    const std::string key = health_gpio(robot) + "/" + interface;
+    EXPECT_TRUE(rm_->state_interface_exists(key)) << "missing health state interface " << key;
+    expected.push_back(key);
+  }
   EXPECT_THAT(rm_->state_interface_keys(), ::testing::UnorderedElementsAreArray(expected));
 }
 
@@ -200,6 +225,9 @@ TEST_P(HardwareInterfaceTest, exports_every_command_interface)
     }
   }
   EXPECT_EQ(expected.size(), robot.command_interface_count);
+  const std::string estop = health_gpio(robot) + "/estop";
+  EXPECT_TRUE(rm_->command_interface_exists(estop)) << "missing the e-stop " << estop;
+  expected.push_back(estop);
   EXPECT_THAT(rm_->command_interface_keys(), ::testing::UnorderedElementsAreArray(expected));
 }
 

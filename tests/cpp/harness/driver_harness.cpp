@@ -9,7 +9,7 @@
 // with a clock, logger and executor + the framework's export order and shared handles).
 //
 // Sections (see tests/cpp/harness/README.md): interfaces, safety, joint_map, imu, commands,
-// command_safety, crc, parameters, decimation, faults, allocations, threads.
+// command_safety, crc, parameters, decimation, faults, health, allocations, threads.
 // Output: "section <name>: P passed, F failed" per section and "rhi-check: P passed, F failed".
 #include <algorithm>
 #include <atomic>
@@ -327,10 +327,20 @@ void test_interfaces() {
                "IMU interface %s/%s exported exactly once", kImuName, iface);
     }
   }
+  if (kHasHealthGpio) {
+    for (const char* iface : kHealthStates) {
+      CHECK_EQ(count_of(state_count, std::string(kHealthGpio) + "/" + iface), 1,
+               "health GPIO state interface %s/%s exported exactly once", kHealthGpio, iface);
+    }
+    CHECK_EQ(count_of(command_count, std::string(kHealthGpio) + "/estop"), 1,
+             "health GPIO command interface %s/estop exported exactly once", kHealthGpio);
+  }
   // Nothing else: the totals equal the expected sets.
-  CHECK_EQ(states.size(), 3 * kJointCount + (kImuEnabled ? kImuInterfaces.size() : 0U),
-           "number of state interfaces (3 per mapped joint + IMU)");
-  CHECK_EQ(commands.size(), expected_commands, "number of command interfaces (per joint mode)");
+  CHECK_EQ(states.size(), 3 * kJointCount + (kImuEnabled ? kImuInterfaces.size() : 0U) +
+           (kHasHealthGpio ? kHealthStates.size() : 0U),
+           "number of state interfaces (3 per mapped joint + IMU + health GPIO)");
+  CHECK_EQ(commands.size(), expected_commands + (kHasHealthGpio ? 1U : 0U),
+           "number of command interfaces (per joint mode + the e-stop)");
   CHECK_EQ(state_count.size(), states.size(), "state interface names are unique");
   CHECK_EQ(command_count.size(), commands.size(), "command interface names are unique");
   bool readable = true;
@@ -1246,6 +1256,11 @@ void test_faults() {
   const int64_t error_ms = cycle_until_error(rig, t0, cmd, &stale_ok, &allocations);
   CHECK(stale_ok, "read() returned OK while the writer already held the joints damping-only (between "
         "state_timeout_ms and fault_timeout_ms)");
+  if (kHasHealthGpio) {
+    CHECK_EQ(rig.ifs.health[kFault]->get(), 1.0, "the health GPIO's fault after read() said ERROR");
+    CHECK(rig.ifs.health[kStateAge]->get() > kFaultTimeoutMs, "state_age_ms of a dead link: %g",
+          rig.ifs.health[kStateAge]->get());
+  }
   hardware_interface::return_type again = hardware_interface::return_type::ERROR;
   for (int i = 0; i < 200; ++i) {  // read() runs at the control rate: ERROR each time, said once
     allocations += rhi_alloc::count_in([&] { again = rig.hw->read(kTime, kPeriod); });
@@ -1301,6 +1316,240 @@ void test_faults() {
     } else {
       check_hold(c, back, "first write() after recovery (layer 3)");
     }
+  }
+  teardown(rig);
+}
+
+// ================================================================ health
+// The health GPIO: counters and the link age as the transport and the writer see them, and the
+// e-stop: a latched damping-only hold that outlives its release until the next activation.
+double health(const Rig& rig, HealthState which) {
+  const auto* ref = rig.ifs.health[which];
+  return ref ? ref->get() : std::numeric_limits<double>::quiet_NaN();
+}
+
+// One controller cycle with a new state: state callback, read(), `cmd` written, write(), a send.
+void cycle(Rig& rig, uint32_t code, const ControllerCommand& cmd) {
+  rig.t.deliver_state(coded_state(code));
+  rig.hw->read(kTime, kPeriod);
+  apply_command(rig.ifs, cmd);
+  rig.hw->write(kTime, kPeriod);
+  rig.t.tick_writer();
+}
+
+bool commands_reach_robot(Rig& rig, const char* what) {
+  CommandFrame c;
+  if (!last_command(rig.t, c, what)) {
+    return false;
+  }
+  bool gains = !c.has_gains;
+  bool moving = false;
+  for (const Joint& j : kJoints) {
+    gains = gains || c.kp[j.slot] != 0.0;
+    moving = moving || c.tau[j.slot] != 0.0;
+  }
+  return gains && moving;
+}
+
+void check_health_description_refusals() {
+  // A GPIO interface the driver does not have, or a second GPIO: ERROR naming it, never a throw.
+  const hardware_interface::HardwareInfo info = make_hardware_info();
+  Rig rig;
+  bool threw = false;
+  hardware_interface::HardwareInfo unknown = info;
+  hardware_interface::InterfaceInfo bogus{};
+  bogus.name = "rhi_test_bogus";
+  bogus.size = 1;
+  unknown.gpios.front().state_interfaces.push_back(bogus);
+  rig.hw = create_driver();
+  if (rig.hw) {
+    rhi_fake::logs::clear();
+    const CallbackReturn r = init_driver(rig.fw, *rig.hw, unknown, &threw);
+    CHECK(!threw && r == CallbackReturn::ERROR, "on_init with an unknown health GPIO state interface = ERROR");
+    CHECK(rhi_fake::logs::contains("rhi_test_bogus", Severity::Error), "the error line names the interface");
+  }
+  hardware_interface::HardwareInfo two = info;
+  two.gpios.push_back(info.gpios.front());
+  two.gpios.back().name = "rhi_test_second_gpio";
+  rig.hw = create_driver();
+  if (rig.hw) {
+    rhi_fake::logs::clear();
+    const CallbackReturn r = init_driver(rig.fw, *rig.hw, two, &threw);
+    CHECK(!threw && r == CallbackReturn::ERROR, "on_init with a second <gpio> = ERROR");
+    CHECK(rhi_fake::logs::contains("rhi_test_second_gpio", Severity::Error), "the error line names the GPIO");
+  }
+  // Without the GPIO the driver runs as before (a hand-written description may leave it out).
+  hardware_interface::HardwareInfo without = info;
+  without.gpios.clear();
+  rig.hw = create_driver();
+  if (rig.hw) {
+    const CallbackReturn r = init_driver(rig.fw, *rig.hw, without, &threw);
+    CHECK(!threw && r == CallbackReturn::SUCCESS, "on_init without the health GPIO = SUCCESS");
+  }
+  rig.hw.reset();
+}
+
+void test_health() {
+  rhi_check::Section section("health");
+  CHECK(kHasHealthGpio, "the generated description has the health GPIO");
+  if (!kHasHealthGpio) {
+    return;
+  }
+  fresh_process();
+  check_health_description_refusals();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  constexpr int kStateTimeoutMs = 20;
+  info.hardware_parameters["state_timeout_ms"] = std::to_string(kStateTimeoutMs);
+  info.hardware_parameters["fault_timeout_ms"] = "60000";
+  info.hardware_parameters["state_decimation"] = "1";  // every frame parsed: every invalid one counted
+  if (!setup(rig, info)) {
+    teardown(rig);
+    return;
+  }
+  Transport& t = rig.t;
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK, "read() before any state");
+  CHECK_EQ(health(rig, kStateAge), -1.0, "state_age_ms before any state and activation");
+  CHECK_EQ(health(rig, kFault), 0.0, "fault of an inactive component");
+  if (!activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  const ControllerCommand cmd = distinct_command(9);
+  for (uint32_t k = 0; k < 3; ++k) {
+    cycle(rig, k, cmd);
+  }
+  CHECK(commands_reach_robot(rig, "healthy robot"), "the controller's command reaches the robot");
+  const auto before_read = std::chrono::steady_clock::now();
+  t.deliver_state(coded_state(3));
+  rig.hw->read(kTime, kPeriod);
+  const double bound_ms = static_cast<double>(ms_since(before_read)) + 1.0;
+  CHECK(health(rig, kStateAge) >= 0.0 && health(rig, kStateAge) <= bound_ms,
+        "state_age_ms right after a state: %g (<= %g)", health(rig, kStateAge), bound_ms);
+  for (const HealthState h : {kInvalidStates, kStaleHolds, kRejectedCommands, kFault, kEstopState}) {
+    CHECK_EQ(health(rig, h), 0.0, "%s of a healthy robot", kHealthStates[h]);
+  }
+
+  // An invalid state frame (bad CRC, wrong size or names, non-finite value): counted once.
+  t.deliver_corrupt_state(distinct_state(4));
+  rig.hw->read(kTime, kPeriod);
+  CHECK_EQ(health(rig, kInvalidStates), 1.0, "invalid_states after one invalid frame");
+  cycle(rig, 5, cmd);
+
+  // A non-finite command: one rejected writer cycle per send.
+  ControllerCommand bad = cmd;
+  const Joint& j0 = kJoints[0];
+  (j0.mode == 0 ? bad.q : bad.dq)[j0.slot] = std::numeric_limits<double>::quiet_NaN();
+  cycle(rig, 6, bad);
+  rig.hw->read(kTime, kPeriod);
+  CHECK_EQ(health(rig, kRejectedCommands), 1.0, "rejected_commands after one send of a NaN command");
+  cycle(rig, 7, cmd);
+  rig.hw->read(kTime, kPeriod);
+  CHECK_EQ(health(rig, kRejectedCommands), 1.0, "a valid command is not counted");
+
+  // The state goes stale twice: two stale holds, however many sends each lasts.
+  for (uint32_t episode = 1; episode <= 2; ++episode) {
+    const auto silent_since = std::chrono::steady_clock::now();
+    std::this_thread::sleep_for(std::chrono::milliseconds(3 * kStateTimeoutMs));
+    for (int i = 0; i < 3; ++i) {
+      rig.hw->write(kTime, kPeriod);
+      t.tick_writer();
+    }
+    const int64_t lower_ms = ms_since(silent_since);
+    rig.hw->read(kTime, kPeriod);
+    CHECK_EQ(health(rig, kStaleHolds), static_cast<double>(episode), "stale_holds after %u stale episode(s)",
+             episode);
+    CHECK(health(rig, kStateAge) >= static_cast<double>(lower_ms) - 1.0,
+          "state_age_ms of a silent link: %g (>= %" PRId64 ")", health(rig, kStateAge), lower_ms);
+    CHECK_EQ(health(rig, kFault), 0.0, "a stale hold is no fault (before fault_timeout_ms)");
+    cycle(rig, 10 + episode, cmd);
+    cycle(rig, 20 + episode, cmd);
+  }
+
+  // A send later than the period allows: a writer overrun.
+  rig.hw->read(kTime, kPeriod);
+  const double overruns = health(rig, kWriterOverruns);
+  t.tick_writer();
+  std::this_thread::sleep_for(std::chrono::microseconds(kDescriptionPeriodUs + 500 + 10000));
+  t.tick_writer();
+  rig.hw->read(kTime, kPeriod);
+  CHECK(health(rig, kWriterOverruns) >= overruns + 1.0, "writer_overruns after a late send: %g (before %g)",
+        health(rig, kWriterOverruns), overruns);
+
+  // A framework handle nobody wrote holds NaN: no e-stop.
+  rig.ifs.estop->set(std::numeric_limits<double>::quiet_NaN());
+  cycle(rig, 30, cmd);
+  cycle(rig, 31, cmd);
+  CHECK(commands_reach_robot(rig, "estop NaN"), "estop = NaN does not stop the robot");
+
+  // The e-stop: damping-only at the next send, said once, latched after its release.
+  rhi_fake::logs::clear();
+  rig.ifs.estop->set(1.0);
+  uint64_t allocations = 0;
+  CommandFrame c;
+  for (uint32_t k = 0; k < 200; ++k) {
+    t.deliver_state(coded_state(40 + k));
+    hardware_interface::return_type r = hardware_interface::return_type::ERROR;
+    const uint64_t in_read = rhi_alloc::count_in([&] { r = rig.hw->read(kTime, kPeriod); });
+    CHECK(r == hardware_interface::return_type::OK, "read() with the e-stop pressed returns OK");
+    apply_command(rig.ifs, cmd);
+    const uint64_t in_write = rhi_alloc::count_in([&] { rig.hw->write(kTime, kPeriod); });
+    allocations += in_read + (k == 0 ? 0 : in_write);  // the first write() says it, once
+    t.tick_writer();
+    if (k == 0 && last_command(t, c, "e-stop")) {
+      check_damping_only(c, "first send after the e-stop");
+    }
+  }
+  CHECK_EQ(allocations, 0U, "heap allocations in read()/write() with the e-stop pressed");
+  CHECK_EQ(rhi_fake::logs::count_containing("e-stop", Severity::Error), 1U, "one error line for the e-stop");
+  CHECK_EQ(health(rig, kEstopState), 1.0, "estop state while pressed");
+  CHECK_EQ(health(rig, kFault), 1.0, "fault while the e-stop holds the robot");
+  rig.ifs.estop->set(0.0);
+  cycle(rig, 300, cmd);
+  cycle(rig, 301, cmd);
+  if (last_command(t, c, "e-stop released")) {
+    check_damping_only(c, "e-stop released, not re-activated: still damping only");
+  }
+  CHECK_EQ(health(rig, kEstopState), 1.0, "estop state stays latched after the release");
+
+  // Re-activation: the full safe start, then the controller's commands again.
+  deactivate(rig);
+  if (!activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  const uint64_t sent_at_activation = t.sent_messages();
+  t.tick_writer();
+  CHECK_EQ(t.sent_messages(), sent_at_activation, "after the e-stop, layer 1: nothing before the first state");
+  const StateFrame back = coded_state(400);
+  t.deliver_state(back);
+  rig.hw->read(kTime, kPeriod);
+  CHECK_EQ(health(rig, kEstopState), 0.0, "estop state after re-activation");
+  CHECK_EQ(health(rig, kFault), 0.0, "fault after re-activation");
+  t.tick_writer();
+  if (last_command(t, c, "after the e-stop, layer 2")) {
+    check_hold(c, back, "first command after the e-stop (layer 2)");
+  }
+  for (uint32_t k = 0; k < 3; ++k) {
+    cycle(rig, 401 + k, cmd);
+  }
+  CHECK(commands_reach_robot(rig, "after the e-stop"), "the controller's command reaches the robot again");
+
+  // Activated with the e-stop still pressed: warned at activation, held from the first write().
+  rig.ifs.estop->set(1.0);
+  cycle(rig, 500, cmd);
+  deactivate(rig);
+  rhi_fake::logs::clear();
+  if (!activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  CHECK(rhi_fake::logs::contains("still pressed", Severity::Warn), "activation warns of a pressed e-stop");
+  for (uint32_t k = 0; k < 3; ++k) {
+    cycle(rig, 600 + k, cmd);
+  }
+  if (last_command(t, c, "activated with the e-stop pressed")) {
+    check_damping_only(c, "activated with the e-stop pressed");
   }
   teardown(rig);
 }
@@ -1705,7 +1954,7 @@ void test_unfilled_refuses_activation() {
 
 }  // namespace
 
-// --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,crc,threads) runs just
+// --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,health,crc,threads) runs just
 // those scenarios, e.g. to repeat the threaded one many times.
 static bool selected(const std::string& only, const char* name) {
   if (only.empty()) {
@@ -1734,8 +1983,8 @@ int main(int argc, char** argv) {
 #endif
     if (kHasTransmission && only.empty()) {
       // The main scenario, decimation and parameters compare exact motor values with joint values.
-      std::printf("motors that are not joints: sections interfaces, transmission, faults, threads\n");
-      only = "interfaces,transmission,faults,threads";
+      std::printf("motors that are not joints: sections interfaces, transmission, faults, health, threads\n");
+      only = "interfaces,transmission,faults,health,threads";
     }
     if (selected(only, "interfaces")) test_interfaces();
     if (selected(only, "transmission")) test_transmission();
@@ -1743,6 +1992,7 @@ int main(int argc, char** argv) {
     if (selected(only, "parameters")) test_parameters();
     if (selected(only, "decimation")) test_decimation_keeps_state_fresh();
     if (selected(only, "faults")) test_faults();
+    if (selected(only, "health")) test_health();
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
     if (selected(only, "crc")) test_crc_functions();
 #endif

@@ -159,6 +159,12 @@ inline hardware_interface::HardwareInfo make_hardware_info() {
         component->name = r.a;
         component->type = "sensor";
         break;
+      case 'G':  // <gpio>
+        info.gpios.emplace_back();
+        component = &info.gpios.back();
+        component->name = r.a;
+        component->type = "gpio";
+        break;
       case 'C': {  // <command_interface> (+ min/max params)
         hardware_interface::InterfaceInfo i{};
         i.name = r.a;
@@ -206,12 +212,21 @@ inline std::vector<std::string> joint_commands(size_t k) {
   return out;
 }
 
+// The driver's health GPIO (README "See the driver's health"): its state interfaces and its e-stop.
+constexpr std::array<const char*, 7> kHealthStates = {"state_age_ms", "invalid_states", "stale_holds",
+                                                      "rejected_commands", "writer_overruns", "fault", "estop"};
+enum HealthState : size_t { kStateAge, kInvalidStates, kStaleHolds, kRejectedCommands, kWriterOverruns, kFault,
+                            kEstopState };
+constexpr bool kHasHealthGpio = kHealthGpio[0] != '\0';
+
 struct Interfaces {
   rhi_fake::hw::Exported exported;  // what the driver exported, in its order
   // per kJoints entry (nullptr when missing)
   std::vector<const rhi_fake::hw::StateRef*> pos, vel, eff;
   std::vector<const rhi_fake::hw::CommandRef*> cpos, cvel, ckp, ckd, cff;
   std::array<const rhi_fake::hw::StateRef*, 10> imu{};
+  std::array<const rhi_fake::hw::StateRef*, kHealthStates.size()> health{};
+  const rhi_fake::hw::CommandRef* estop{nullptr};
 
   void index() {
     pos.assign(kJointCount, nullptr);
@@ -223,6 +238,8 @@ struct Interfaces {
     ckd.assign(kJointCount, nullptr);
     cff.assign(kJointCount, nullptr);
     imu.fill(nullptr);
+    health.fill(nullptr);
+    estop = nullptr;
     for (const auto& s : exported.states()) {
       for (size_t k = 0; k < kJointCount; ++k) {
         if (s.prefix() != kJoints[k].name) {
@@ -238,8 +255,16 @@ struct Interfaces {
           if (s.interface() == kImuInterfaces[i]) imu[i] = &s;
         }
       }
+      if (kHasHealthGpio && s.prefix() == kHealthGpio) {
+        for (size_t i = 0; i < kHealthStates.size(); ++i) {
+          if (s.interface() == kHealthStates[i]) health[i] = &s;
+        }
+      }
     }
     for (const auto& c : exported.commands()) {
+      if (kHasHealthGpio && c.prefix() == kHealthGpio && c.interface() == "estop") {
+        estop = &c;
+      }
       for (size_t k = 0; k < kJointCount; ++k) {
         if (c.prefix() != kJoints[k].name) {
           continue;
@@ -272,6 +297,12 @@ struct Interfaces {
       for (const auto* i : imu) {
         if (!i) return false;
       }
+    }
+    if (kHasHealthGpio) {
+      for (const auto* h : health) {
+        if (!h) return false;
+      }
+      if (!estop) return false;
     }
     return true;
   }

@@ -76,6 +76,15 @@ public:
     return rhi_fake::ros::deliver<StateMsg>(kGroups[0].state_topic, bad);
   }
 
+  // One frame the driver must reject and count (health GPIO invalid_states): a non-finite position
+  // in the first group.
+  size_t deliver_corrupt_state(const StateFrame& f) {
+    prepare_state(f);
+    StateMsg bad = state_msgs_[0];
+    bad.joints[0].position = std::numeric_limits<double>::quiet_NaN();
+    return rhi_fake::ros::deliver<StateMsg>(kGroups[0].state_topic, bad);
+  }
+
   // Every group with its entries rotated by `rotate` (entry p carries the joint of position
   // (p + rotate) % size, its name and its values): a publisher that changed its joint order.
   size_t deliver_rotated(const StateFrame& f, size_t rotate) {

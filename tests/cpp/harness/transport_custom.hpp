@@ -58,6 +58,9 @@ public:
     return toy_bus::Bus::instance().deliverState(bad);
   }
 
+  // One frame the driver must reject and count (health GPIO invalid_states): a non-finite position.
+  size_t deliver_corrupt_state(const StateFrame& f) { return deliver_invalid_state(f); }
+
   uint64_t sent_messages() const { return toy_bus::Bus::instance().sentCount(); }
   static constexpr size_t command_messages_per_cycle() { return 1; }
   bool command_names_ok() const { return true; }  // slots are positions: nothing to name

@@ -67,6 +67,9 @@ public:
     return rhi_fake::ros::deliver<StateMsg>(kStateTopic, bad);
   }
 
+  // One frame the driver must reject and count (health GPIO invalid_states): arrays one motor short.
+  size_t deliver_corrupt_state(const StateFrame& f) { return deliver_invalid_state(f); }
+
   uint64_t sent_messages() const { return rhi_fake::ros::publish_count(kCommandTopic); }
   static constexpr size_t command_messages_per_cycle() { return 1; }
   bool command_names_ok() const { return true; }  // slots are positions: nothing to name

@@ -69,6 +69,14 @@ public:
     return rhi_fake::ros::deliver<StateMsg>(kStateTopic, bad);
   }
 
+  // One frame the driver must reject and count (health GPIO invalid_states): a non-finite position.
+  size_t deliver_corrupt_state(const StateFrame& f) {
+    prepare_state(f);
+    StateMsg bad = state_msg_;
+    bad.position[0] = std::numeric_limits<double>::quiet_NaN();
+    return rhi_fake::ros::deliver<StateMsg>(kStateTopic, bad);
+  }
+
   uint64_t sent_messages() const { return rhi_fake::ros::publish_count(kCommandTopic); }
   static constexpr size_t command_messages_per_cycle() { return 1; }
 

@@ -135,6 +135,9 @@ public:
     return deliver_prepared();
   }
 
+  // One frame the driver must reject and count (health GPIO invalid_states): a bad CRC.
+  size_t deliver_corrupt_state(const StateFrame& f) { return deliver_invalid_state(f); }
+
   size_t tick_writer() { return rhi_fake::unitree::tick_all_threads(); }
   uint64_t sent_messages() const { return rhi_fake::unitree::write_count(kCommandTopic); }
   static constexpr size_t command_messages_per_cycle() { return 1; }

@@ -38,10 +38,12 @@ def test_xacro_view_gives_initial_values():
 def test_start_controllers_activates_the_position_controller_or_else_the_velocity_one():
     wheeled = _robot("unitree_dds")
     assert start_controllers(wheeled) == (
-        ("joint_state_broadcaster", "imu_sensor_broadcaster", "forward_position_controller"),
+        ("joint_state_broadcaster", "imu_sensor_broadcaster", "health_controller",
+         "forward_position_controller"),
         ("forward_velocity_controller", "forward_stiffness_controller", "forward_damping_controller"))
     wheels_only = replace(wheeled, joints=wheeled.joints[1:], imu=ImuConfig(enabled=False))
-    assert start_controllers(wheels_only) == (("joint_state_broadcaster", "forward_velocity_controller"),
+    assert start_controllers(wheels_only) == (("joint_state_broadcaster", "health_controller",
+                                               "forward_velocity_controller"),
                                               ("forward_damping_controller",))
     assert start_controllers(_robot("generic_topics"))[1] == ("forward_velocity_controller",)  # no gains
 

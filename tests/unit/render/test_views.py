@@ -1,6 +1,7 @@
 """The view-models of render/views.py, tested directly (the templates only place what they hold)."""
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 import pytest
@@ -8,6 +9,8 @@ import pytest
 from rhi_gen.pipeline.load import load_robots
 from rhi_gen.project import find_project
 from rhi_gen.render.views import (
+    ESTOP_INTERFACE,
+    HEALTH_STATE_INTERFACES,
     controllers_view,
     package_view,
     update_rate_hz,
@@ -97,3 +100,14 @@ def test_views_of_the_reference_robots():
     assert [d.name for d in view.plain_deps] == ["unitree_sdk2"]
     x2 = next(m for m in models if m.robot == "x2")
     assert xacro_view(x2).joints[0].comment.startswith("SDK slot 0, group leg[0]")
+
+
+def test_health_interfaces_are_the_ones_the_driver_provides():
+    """The xacro and the controllers YAML name the health GPIO's interfaces from views.py; the driver
+    looks them up in cpp/common/driver_health.hpp: the two lists must not drift apart."""
+
+    header = (REPO / "rhi_gen/cpp/common/driver_health.hpp").read_text()
+    table = header[header.index("kHealthStateInterfaces[]"):]
+    table = table[:table.index("};")]
+    assert tuple(re.findall(r'\{"([a-z_]+)", &DriverHealthData::\1\}', table)) == HEALTH_STATE_INTERFACES
+    assert f'kEstopCommandInterface = "{ESTOP_INTERFACE}"' in header

@@ -16,6 +16,7 @@
 
 #include <rclcpp/logging.hpp>
 
+#include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/driver_monitor.hpp"
 #include "robot_hardware_interface/common/hardware_parameters.hpp"
 #include "robot_hardware_interface/common/motor_types.hpp"
@@ -54,25 +55,48 @@ public:
   {
     safe_cmd_ = Command{};
     holding_ = false;
-    latched_.store(false, std::memory_order_release);
+    latched_.store(HoldReason::kNone, std::memory_order_release);
   }
 
-  // on_error (any thread): hold every joint damping-only until the next reset(), even once the
-  // state is back: the controllers that wrote the last command are no longer running.
-  void latch_hold() {latched_.store(true, std::memory_order_release);}
+  // Why every joint is held damping-only until the next activation.
+  enum class HoldReason : uint8_t
+  {
+    kNone,
+    kError,  // on_error: the controllers that wrote the last command are no longer running
+    kEstop,  // the health GPIO's estop command
+  };
+
+  // Any thread: hold every joint damping-only until the next reset(), even once the state is back
+  // or the e-stop is released. The first reason stays.
+  void latch_hold(HoldReason reason)
+  {
+    HoldReason none = HoldReason::kNone;
+    latched_.compare_exchange_strong(none, reason, std::memory_order_acq_rel);
+  }
+  HoldReason latched() const {return latched_.load(std::memory_order_acquire);}
+
+  // Writer cycles that held a joint for a non-finite command or a negative gain, and the times the
+  // writer started holding because the state went stale (health GPIO).
+  uint64_t rejected_commands() const {return rejected_commands_.get();}
+  uint64_t stale_holds() const {return stale_holds_.get();}
 
   // The frame to send for `cmd`; `stale`: no valid state for state_timeout_ms.
   const Command * guard(const Command & cmd, bool stale)
   {
-    if (latched_.load(std::memory_order_acquire)) {
+    const HoldReason latched = latched_.load(std::memory_order_acquire);
+    if (latched != HoldReason::kNone) {
       RCLCPP_WARN_THROTTLE(
         monitor_.logger(), monitor_.throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
-        "the driver is in error (no valid state for fault_timeout_ms): every joint held with kp = "
-        "0 until it is configured and activated again");
+        "%s: every joint held with kp = 0 until the component is activated again",
+        latched == HoldReason::kEstop ? "e-stop" :
+        "the driver is in error (no valid state for fault_timeout_ms, or a failed transition)");
       holding_ = true;
       return hold();
     }
     if (stale) {
+      if (!holding_) {
+        stale_holds_.add();
+      }
       RCLCPP_WARN_THROTTLE(
         monitor_.logger(), monitor_.throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "no valid state for more than %" PRIu64 " ms: holding the last safe command with kp = 0",
@@ -122,11 +146,11 @@ public:
       safe_cmd_.tau_ff[i] = cmd.tau_ff[i];
     }
     if (rejected) {
-      ++invalid_command_count_;
+      const uint64_t cycles = rejected_commands_.add();
       RCLCPP_WARN_THROTTLE(
         monitor_.logger(), monitor_.throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "non-finite command or negative gain: joint(s) held with damping only (%" PRIu64
-        " cycles so far)", invalid_command_count_);
+        " cycles so far)", cycles);
     }
     return &safe_cmd_;
   }
@@ -152,9 +176,10 @@ private:
   DriverMonitor & monitor_;
   const DriverParameters & parameters_;
   Command safe_cmd_;                   // the frame actually sent
-  bool holding_{false};                // holding because the state is stale
-  std::atomic<bool> latched_{false};   // on_error: hold until the next activation
-  uint64_t invalid_command_count_{0};  // cycles with a rejected joint command
+  bool holding_{false};                // holding because the state is stale (or latched)
+  std::atomic<HoldReason> latched_{HoldReason::kNone};  // hold until the next activation
+  HealthCounter rejected_commands_;    // writer: cycles with a rejected joint command
+  HealthCounter stale_holds_;          // writer: times the state went stale
 };
 
 }  // namespace robot_hardware_interface

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 
+#include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/monitor.hpp"
 
 namespace robot_hardware_interface
@@ -57,8 +58,11 @@ public:
   uint64_t reject()
   {
     frames_valid_ = false;
-    return ++invalid_state_count_;
+    return invalid_states_.add();
   }
+
+  // Any thread: rejected state frames since on_init (the health GPIO's invalid_states).
+  uint64_t invalid_states() const {return invalid_states_.get();}
 
   // IMU callback: a rejected sample; returns the count.
   uint64_t reject_imu() {return ++invalid_imu_count_;}
@@ -77,14 +81,20 @@ public:
     return age_ns > static_cast<int64_t>(timeout_ms) * 1000000;
   }
 
-  // Controller thread, at steady time `now_ns`: no valid state for more than `timeout_ms`,
-  // counted from the newest valid state or, before the first one, from the activation (a robot
-  // that never answers is as dead as one that stopped answering).
-  bool silent(uint64_t timeout_ms, int64_t now_ns) const
+  // Controller thread, at steady time `now_ns`: nanoseconds without a valid state, counted from
+  // the newest valid state or, before the first one, from the activation (a robot that never
+  // answers is as dead as one that stopped answering); -1 before any state or activation.
+  int64_t silence_ns(int64_t now_ns) const
   {
     const int64_t last_ns = last_state_time_ns_.load(std::memory_order_acquire);
     const int64_t since_ns = last_ns > activated_ns_ ? last_ns : activated_ns_;
-    return now_ns - since_ns > static_cast<int64_t>(timeout_ms) * 1000000;
+    return since_ns == 0 ? -1 : now_ns - since_ns;
+  }
+
+  // Controller thread: no valid state for more than `timeout_ms` (see silence_ns()).
+  bool silent(uint64_t timeout_ms, int64_t now_ns) const
+  {
+    return silence_ns(now_ns) > static_cast<int64_t>(timeout_ms) * 1000000;
   }
 
 private:
@@ -92,7 +102,7 @@ private:
   std::atomic<uint32_t> frame_counter_{0};      // decimation frame counter
   int64_t activated_ns_{0};                     // steady time of the last reset()
   bool frames_valid_{false};                    // state thread: the last parsed frame was valid
-  uint64_t invalid_state_count_{0};             // state thread: rejected frames
+  HealthCounter invalid_states_;                // state thread: rejected frames
   uint64_t invalid_imu_count_{0};               // IMU callback: rejected samples
 };
 

@@ -137,6 +137,7 @@ private:
     // Every frame: integrity and the safety-critical fields (lightweight).
     if (options_.verify_state_crc && low_state.crc() != Family::state_crc(low_state)) {
       ++crc_error_count_;
+      core_->reject_state();  // the health GPIO's invalid_states
       RCLCPP_WARN_THROTTLE(
         core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
         "dropped LowState_ with a bad CRC (%" PRIu64 " so far; if every frame is dropped, the "

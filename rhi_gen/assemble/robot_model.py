@@ -111,6 +111,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,
                                  group=group, group_position=position, command_mode=mode,
                                  command_interfaces=transport.command_interfaces(mode),
+                                 state_interfaces=("position", "velocity", "effort",
+                                                   *transport.motor_health(config.transport_options)),
                                  default_stiffness=stiffness if mode == "position" else 0.0,
                                  default_damping=damping,
                                  initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),

@@ -52,6 +52,7 @@ class MotorJoint:
     group_position: int | None = None  # position inside the group
     command_mode: str = "position"     # position | velocity (wheels: continuous joints by default)
     command_interfaces: tuple[str, ...] = ("position", "velocity", "stiffness", "damping", "effort")
+    state_interfaces: tuple[str, ...] = ("position", "velocity", "effort")  # + the transport's motor health
     default_stiffness: float = 0.0     # applied while no controller claims stiffness
     default_damping: float = 0.0       # applied while no controller claims damping
     initial_position: float = 0.0      # the description's initial_value (YAML initial_positions, or safe_pose)

@@ -193,6 +193,7 @@ class XacroJoint:
     comment: str                                # "SDK slot 3, group leg[3], velocity-commanded"
     command_interfaces: tuple[CommandInterface, ...]
     initial_position: str = "0.0"               # the position state interface's initial_value
+    health_interfaces: tuple[str, ...] = ()     # motor health state interfaces after effort
 
 
 @dataclass(frozen=True)
@@ -266,8 +267,8 @@ def xacro_view(robot: RobotModel) -> XacroView:
         macro_name=f"{robot.robot}_ros2_control",
         defaults={key: xacro_default(value) for key, value in defaults},
         plugin=xacro_text(robot.plugin_name),
-        joints=tuple(XacroJoint(xacro_text(j.name), _comment(j), _interfaces(j), repr(j.initial_position))
-                     for j in robot.joints),
+        joints=tuple(XacroJoint(xacro_text(j.name), _comment(j), _interfaces(j), repr(j.initial_position),
+                                j.state_interfaces[3:]) for j in robot.joints),
         joint_count=len(robot.joints),
         imu_name=xacro_text(robot.imu.name),
         imu_frame_id=xacro_text(robot.imu.frame_id),

@@ -23,6 +23,11 @@ from ..typed_yaml.validator import Validator
 # Packages every driver needs, whatever its transport.
 COMMON_DEPENDENCIES = ("hardware_interface", "pluginlib", "rclcpp", "rclcpp_lifecycle")
 
+# Motor health a state message may carry, per joint, in the order the description lists them (the C++
+# names in cpp/common/driver_health.hpp): winding temperature [deg C], supply voltage [V], the motor's
+# error code (a vendor bit field, 0 = no error).
+MOTOR_HEALTH_INTERFACES = ("temperature", "voltage", "error_code")
+
 # Where a dependency comes from decides how package.xml and CMakeLists.txt declare it.
 ROSDISTRO = "rosdistro"          # a released ROS package: <depend>, rosdep key, ament variables
 VENDOR_SOURCE = "vendor_source"  # a ROS package built from the vendor's sources: no rosdep key
@@ -105,6 +110,11 @@ class Transport(ABC):
                         motor_count: int) -> TransportOptions:
         """Options that depend on which robot this is (a known robot's defaults); unchanged by default."""
         return options
+
+    def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
+        """The per-joint health state interfaces the robot's state message carries (after position,
+        velocity and effort), in MOTOR_HEALTH_INTERFACES order: none unless the transport says."""
+        return ()
 
     def command_interfaces(self, mode: str) -> tuple[str, ...]:
         """A joint's command interfaces: a position-commanded joint takes the full PD command, a

@@ -181,6 +181,12 @@ MUTATIONS = (
     Mutation("stale_holds_per_send", "every send of a stale hold counts as a new stale episode",
              TokenEdit(COMMAND_GUARD, "if (!holding_) { stale_holds_.add(); }", "stale_holds_.add();"),
              ("health",), robots=("unitree/g1",)),
+    Mutation("motor_health_not_published", "read() takes a new motor health frame but never writes its handles "
+             "(framework-owned handles)", TokenEdit(SYSTEM_DRIVER, "publish_slow_state_values();", ""), ("health",),
+             robots=("unitree/g1",), distro="jazzy"),
+    Mutation("hg_second_temperature", "the hg transport reports MotorState_.temperature[1] as the temperature",
+             TokenEdit(UNITREE_HG, "motor.temperature()[0]", "motor.temperature()[1]"), ("health",),
+             robots=("unitree/g1",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

@@ -24,6 +24,19 @@ HEALTH_STATES = ["state_age_ms", "invalid_states", "stale_holds", "rejected_comm
                  "estop"]
 
 
+def motor_health(model: RobotModel) -> list[str]:
+    """The motor health each robot's state message carries, from SDK_FACTS.md (written out here, not taken
+    from rhi_gen): hg MotorState_ temperature / vol / motorstate, go MotorState_ temperature, AimDK hal
+    JointState v1.0.0 error_code; the other transports none."""
+    if model.transport == "unitree_dds":
+        from rhi_gen.transports.unitree_dds import UnitreeDdsOptions
+
+        assert isinstance(model.transport_options, UnitreeDdsOptions)
+        family = model.transport_options.family
+        return ["temperature", "voltage", "error_code"] if family == "hg" else ["temperature"]
+    return ["error_code"] if model.transport == "agibot_topics" else []
+
+
 def params(element: etree._Element) -> dict[str, str]:
     return {attribute(p, "name"): (p.text or "").strip() for p in element.findall("param")}
 
@@ -72,11 +85,12 @@ def check_ros2_control(d: Description, model: RobotModel, yaml_path: Path, packa
         expected = (["position", "velocity", *gains, "effort"] if joint.command_mode == "position"
                     else ["velocity", *gains[1:], "effort"])  # a velocity joint: no position, no stiffness
         assert [c for c, _ in j["command_interfaces"]] == expected, j["name"]
-        assert j["state_interfaces"] == ["position", "velocity", "effort"], j["name"]
+        assert j["state_interfaces"] == ["position", "velocity", "effort", *motor_health(model)], j["name"]
         if "initial_values" not in j:  # tests/support/cpp_build.py expand_description reads only the names
             continue
         initial = {k: float(v) for k, v in j["initial_values"].items()}
-        assert initial == {"position": joint.initial_position, "velocity": 0.0, "effort": 0.0}, j["name"]
+        assert initial == {"position": joint.initial_position, "velocity": 0.0, "effort": 0.0,
+                           **dict.fromkeys(motor_health(model), 0.0)}, j["name"]
         lim = joint.limits
         if joint.type in ("revolute", "prismatic") and lim is not None:
             assert (lim.lower is None or lim.lower <= initial["position"]) and \

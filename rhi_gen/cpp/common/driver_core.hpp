@@ -120,6 +120,19 @@ public:
   JointStorage<N> & joints() {return frames_.joints;}
   ImuData & imu_data() {return imu_data_;}
   DriverHealthData & health() {return health_;}
+  MotorHealthFrame<N> & motor_health() {return motor_health_;}
+
+  // read() of a robot whose state carries motor health: the newest health frame into the exported
+  // storage, true when a new one came (only then do its values change).
+  bool read_motor_health()
+  {
+    const MotorHealthFrame<N> * frame = motor_health_buffer_.get_data();
+    if (frame == nullptr || frame->sequence == motor_health_.sequence) {
+      return false;
+    }
+    motor_health_ = *frame;
+    return true;
+  }
 
   // on_activate: re-arm the safe start. After a deactivation the robot may have moved, so nothing
   // from the previous activation may be sent. Called while no transport thread runs.
@@ -194,6 +207,21 @@ public:
     RCLCPP_INFO(
       logger(), "first state received: command initialized to the measured position with zero "
       "gains");
+  }
+
+  // Motor health (transports whose state carries it): at steady time `now_ns`, whether a new health
+  // frame is due; if so, fill motor_health_frame() for the mapped slots and publish it.
+  bool motor_health_due(int64_t now_ns) const
+  {
+    return motor_health_cache_.sequence == 0 ||
+           now_ns - motor_health_time_ns_ >= kMotorHealthPeriodNs;
+  }
+  MotorHealthFrame<N> & motor_health_frame() {return motor_health_cache_;}
+  void publish_motor_health(int64_t now_ns)
+  {
+    ++motor_health_cache_.sequence;
+    motor_health_time_ns_ = now_ns;
+    motor_health_buffer_.set_data(motor_health_cache_);
   }
 
   // The frame being parsed is invalid: count it and return the count.
@@ -340,16 +368,20 @@ private:
   DataBuffer<State, Producers::kOne> motor_state_buffer_;  // state thread -> read()
   DataBuffer<Command> motor_command_buffer_;  // write() / layer 2 -> command writer
   DataBuffer<Imu, Producers::kOne> imu_state_buffer_;      // IMU callback -> read()
+  DataBuffer<MotorHealthFrame<N>, Producers::kOne> motor_health_buffer_;  // state thread -> read()
 
   // ros2_control storage, the per-slot command bounds and write()'s frame: controller thread only
   ControllerFrames<N, T> frames_{};
   ImuData imu_data_{};
   DriverHealthData health_{};
+  MotorHealthFrame<N> motor_health_{};  // exported: controller thread
 
   // Pre-allocated frames (no heap allocation in hot paths)
   State motor_state_cache_;    // state thread: parsing buffer
   Imu imu_state_cache_;        // IMU callback: parsing buffer
   Command initial_cmd_cache_;  // state thread: layer-2 initial command
+  MotorHealthFrame<N> motor_health_cache_{};  // state thread: the health frame being filled
+  int64_t motor_health_time_ns_{0};           // state thread: when the last one was published
 };
 
 }  // namespace robot_hardware_interface

@@ -51,6 +51,8 @@ public:
   virtual void shutdown() noexcept = 0;
   // Whether stiffness and damping reach the robot (otherwise no gain interfaces are exported).
   virtual bool carries_gains() const {return true;}
+  // The MotorHealthField bits the robot's state carries (DriverCore::publish_motor_health()).
+  virtual uint8_t motor_health() const {return 0U;}
 };
 
 // The ros2_control face of every driver: SystemInterface lifecycle and read()/write() around a
@@ -174,6 +176,9 @@ public:
     const bool link_dead = active_.load(std::memory_order_relaxed) && core_.link_dead(now_ns);
     core_.read_health(now_ns, link_dead);
     publish_state_values();
+    if (motor_health_ != 0U && core_.read_motor_health()) {
+      publish_slow_state_values();
+    }
     if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(link_dead)) {
       return report_dead_link();
     }
@@ -269,6 +274,7 @@ private:
     core_.monitor().set_logger(logger);
     const rclcpp::Logger & log = core_.logger();
     hardware_name_ = info.name;
+    motor_health_ = transport_->motor_health();
     health_gpio_ = info.gpios.empty() ? info.name + "_health" : info.gpios.front().name;
     if (!read_driver_parameters(log, info.hardware_parameters, core_.parameters()) ||
       !description_is_driven(info))
@@ -398,8 +404,9 @@ private:
     if (slot >= 0) {
       JointStorage<N> & joints = core_.joints();
       const auto s = static_cast<size_t>(slot);
-      return name == "position" ? &joints.pos[s] : name == "velocity" ? &joints.vel[s] :
-             name == "effort" ? &joints.tau[s] : nullptr;
+      double * value = name == "position" ? &joints.pos[s] : name == "velocity" ? &joints.vel[s] :
+        name == "effort" ? &joints.tau[s] : nullptr;
+      return value != nullptr ? value : core_.motor_health().value(s, name, motor_health_);
     }
     if (prefix == health_gpio_) {
       return health_state_value(core_.health(), name);
@@ -423,6 +430,8 @@ private:
     }
     return nullptr;
   }
+
+  bool slow_state_value(const double * value) override {return core_.motor_health().holds(value);}
 
   double * command_value(const std::string & prefix, const std::string & name) override
   {
@@ -451,6 +460,7 @@ private:
   std::string calibration_file_;  // the `calibration_file` hardware parameter, "" for none
   std::string hardware_name_;     // the <ros2_control name>, for the operator's command line
   std::string health_gpio_;       // the <gpio> name of the health interfaces and the e-stop
+  uint8_t motor_health_{0};       // the transport's MotorHealthField bits
   bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
   std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
 };

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ...errors import ConfigError
-from ...model import MAX_MOTORS
+from ...model import MAX_MOTORS, TransportOptions
 from ...typed_yaml.validator import Validator
 from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
 from ..ros_topics import QosConfig, TopicOptions, qos_line, read_qos
@@ -76,6 +76,10 @@ class AgibotTopics(Transport):
         KnownRobot("agibot", "x2", NAME, X2_ORDER, "X2 motor order = AimDK joint groups leg, waist, arm, head",
                    groups=X2_GROUPS),
     )
+
+    def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
+        """hal/msg/JointState v1.0.0 (the aimdk_msgs this driver is built with): uint16 error_code."""
+        return ("error_code",)
 
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> AgibotTopicsOptions:
         p = "transport_options"

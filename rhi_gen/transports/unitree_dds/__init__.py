@@ -150,6 +150,11 @@ class UnitreeDds(Transport):
     motor_slots = FAMILIES["hg"]
     slots_holder = "a unitree hg LowCmd_"
 
+    def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
+        """hg MotorState_: temperature[0], vol and motorstate; go MotorState_: one temperature (SDK_FACTS.md)."""
+        assert isinstance(options, UnitreeDdsOptions)
+        return ("temperature", "voltage", "error_code") if options.family == "hg" else ("temperature",)
+
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> UnitreeDdsOptions:
         p = "transport_options"
         family = v.optional(options, p, "family", lambda x, q: v.choice(x, q, tuple(FAMILIES)), "")

@@ -64,6 +64,7 @@ public:
   }
 
   const char * name() const override {return "unitree_dds";}
+  uint8_t motor_health() const override {return Family::kMotorHealth;}
 
   bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & /*node*/) override
   {
@@ -167,7 +168,15 @@ private:
     if (core_->has_imu()) {
       publish_imu(low_state.imu_state());
     }
-    core_->publish_state(steady_ns(start));
+    const int64_t now_ns = steady_ns(start);
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_->motor_health_due(now_ns))) {
+      auto & health = core_->motor_health_frame();
+      for (const size_t slot : core_->slots().mapped_slots()) {
+        Family::read_motor_health(motors[slot], health, slot);
+      }
+      core_->publish_motor_health(now_ns);
+    }
+    core_->publish_state(now_ns);
     core_->monitor().check_state_latency(start);
   }
 

@@ -17,6 +17,7 @@
 #include <unitree/idl/go2/LowCmd_.hpp>
 #include <unitree/idl/go2/LowState_.hpp>
 
+#include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/transport/unitree_crc.hpp"
 
 namespace robot_hardware_interface
@@ -121,6 +122,14 @@ struct Family
 
   static uint32_t command_crc(const LowCmd & cmd) {return low_cmd_crc(cmd);}
   static uint32_t state_crc(const LowState & state) {return low_state_crc(state);}
+
+  // Motor health of MotorState_ (SDK_FACTS.md): one temperature (no voltage, no error code).
+  static constexpr uint8_t kMotorHealth = kMotorTemperature;
+  template<typename Motor, typename Frame>
+  static void read_motor_health(const Motor & motor, Frame & frame, size_t slot)
+  {
+    frame.temperature[slot] = static_cast<double>(motor.temperature());
+  }
 };
 
 }  // namespace unitree_go

@@ -307,6 +307,11 @@ void test_interfaces() {
       CHECK_EQ(count_of(state_count, std::string(j.name) + "/" + iface), 1,
                "state interface %s/%s exported exactly once", j.name, iface);
     }
+    for (size_t h = 0; h < kMotorHealthNames.size(); ++h) {
+      CHECK_EQ(count_of(state_count, std::string(j.name) + "/" + kMotorHealthNames[h]), kMotorHealth[h] ? 1 : 0,
+               "motor health state interface %s/%s exported %s", j.name, kMotorHealthNames[h],
+               kMotorHealth[h] ? "exactly once" : "never (the message does not carry it)");
+    }
   }
   size_t expected_commands = 0;
   for (size_t k = 0; k < kJointCount; ++k) {
@@ -336,9 +341,9 @@ void test_interfaces() {
              "health GPIO command interface %s/estop exported exactly once", kHealthGpio);
   }
   // Nothing else: the totals equal the expected sets.
-  CHECK_EQ(states.size(), 3 * kJointCount + (kImuEnabled ? kImuInterfaces.size() : 0U) +
+  CHECK_EQ(states.size(), (3 + kMotorHealthCount) * kJointCount + (kImuEnabled ? kImuInterfaces.size() : 0U) +
            (kHasHealthGpio ? kHealthStates.size() : 0U),
-           "number of state interfaces (3 per mapped joint + IMU + health GPIO)");
+           "number of state interfaces (3 + motor health per mapped joint + IMU + health GPIO)");
   CHECK_EQ(commands.size(), expected_commands + (kHasHealthGpio ? 1U : 0U),
            "number of command interfaces (per joint mode + the e-stop)");
   CHECK_EQ(state_count.size(), states.size(), "state interface names are unique");
@@ -1351,6 +1356,43 @@ bool commands_reach_robot(Rig& rig, const char* what) {
   return gains && moving;
 }
 
+// Every joint's motor health interfaces show `f`'s values at its SDK slot.
+void check_motor_health(const Rig& rig, const StateFrame& f, const char* what) {
+  for (size_t k = 0; k < kJointCount; ++k) {
+    const Joint& j = kJoints[k];
+    const std::array<double, 3> expected = {f.temperature[j.slot], f.voltage[j.slot], f.error_code[j.slot]};
+    for (size_t h = 0; h < kMotorHealthNames.size(); ++h) {
+      if (kMotorHealth[h] && rig.ifs.motor_health[k][h] != nullptr) {
+        CHECK_EQ(rig.ifs.motor_health[k][h]->get(), expected[h], "%s: %s/%s = SDK slot %zu", what, j.name,
+                 kMotorHealthNames[h], j.slot);
+      }
+    }
+  }
+}
+
+// Motor health from the robot's messages, at most every 10 ms (a health frame is due only then).
+void check_motor_health_updates(Rig& rig) {
+  using Clock = std::chrono::steady_clock;
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));  // the next health frame is due
+  const StateFrame first = distinct_state(50);
+  rig.t.deliver_state(first);
+  const auto delivered = Clock::now();
+  rig.hw->read(kTime, kPeriod);
+  check_motor_health(rig, first, "a state 10 ms after the last health frame");
+  const StateFrame soon = distinct_state(51);
+  const bool within_period = Clock::now() - delivered < std::chrono::milliseconds(8);
+  rig.t.deliver_state(soon);
+  rig.hw->read(kTime, kPeriod);
+  if (within_period) {  // on a loaded machine the second one may be due too: then nothing to say
+    check_motor_health(rig, first, "a state within 10 ms of the last health frame (health at 100 Hz)");
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));
+  const StateFrame later = distinct_state(52);
+  rig.t.deliver_state(later);
+  rig.hw->read(kTime, kPeriod);
+  check_motor_health(rig, later, "the next health frame");
+}
+
 void check_health_description_refusals() {
   // A GPIO interface the driver does not have, or a second GPIO: ERROR naming it, never a throw.
   const hardware_interface::HardwareInfo info = make_hardware_info();
@@ -1428,6 +1470,10 @@ void test_health() {
         "state_age_ms right after a state: %g (<= %g)", health(rig, kStateAge), bound_ms);
   for (const HealthState h : {kInvalidStates, kStaleHolds, kRejectedCommands, kFault, kEstopState}) {
     CHECK_EQ(health(rig, h), 0.0, "%s of a healthy robot", kHealthStates[h]);
+  }
+
+  if (kMotorHealthCount > 0) {
+    check_motor_health_updates(rig);
   }
 
   // An invalid state frame (bad CRC, wrong size or names, non-finite value): counted once.

@@ -42,6 +42,10 @@ struct StateFrame {
   std::array<double, 3> acc{};
   uint8_t mode_machine{5};
   uint32_t sequence{0};
+  // Motor health, where the message carries it (integers and quarter volts: exact in every type).
+  std::array<double, N> temperature{};
+  std::array<double, N> voltage{};
+  std::array<double, N> error_code{};
 };
 
 // What the fake robot received, per SDK slot.
@@ -101,6 +105,11 @@ inline StateFrame distinct_state(uint32_t frame) {
   s.gyro = {1.5, -2.5, 3.25 + frame};
   s.acc = {0.375, 9.8125, -4.5 - frame};
   s.sequence = frame;
+  for (size_t i = 0; i < N; ++i) {
+    s.temperature[i] = static_cast<double>(30 + (i + frame) % 60);
+    s.voltage[i] = 24.0 + 0.25 * static_cast<double>((i + 3 * frame) % 32);
+    s.error_code[i] = static_cast<double>((7 * i + 13 * frame) % 4096);
+  }
   return s;
 }
 
@@ -212,6 +221,22 @@ inline std::vector<std::string> joint_commands(size_t k) {
   return out;
 }
 
+// Motor health per joint, after position, velocity and effort: what each robot's state message carries
+// (SDK_FACTS.md: hg MotorState_ temperature[0], vol, motorstate; go MotorState_ temperature; AimDK
+// hal JointState v1.0.0 error_code; the others nothing).
+constexpr std::array<const char*, 3> kMotorHealthNames = {"temperature", "voltage", "error_code"};
+#if defined(RHI_TRANSPORT_UNITREE_DDS) && defined(RHI_UNITREE_FAMILY_GO)
+constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
+#elif defined(RHI_TRANSPORT_UNITREE_DDS)
+constexpr std::array<bool, 3> kMotorHealth = {true, true, true};
+#elif defined(RHI_TRANSPORT_AGIBOT_TOPICS)
+constexpr std::array<bool, 3> kMotorHealth = {false, false, true};
+#else
+constexpr std::array<bool, 3> kMotorHealth = {false, false, false};
+#endif
+constexpr size_t kMotorHealthCount = (kMotorHealth[0] ? 1U : 0U) + (kMotorHealth[1] ? 1U : 0U) +
+                                     (kMotorHealth[2] ? 1U : 0U);
+
 // The driver's health GPIO (README "See the driver's health"): its state interfaces and its e-stop.
 constexpr std::array<const char*, 7> kHealthStates = {"state_age_ms", "invalid_states", "stale_holds",
                                                       "rejected_commands", "writer_overruns", "fault", "estop"};
@@ -223,6 +248,7 @@ struct Interfaces {
   rhi_fake::hw::Exported exported;  // what the driver exported, in its order
   // per kJoints entry (nullptr when missing)
   std::vector<const rhi_fake::hw::StateRef*> pos, vel, eff;
+  std::vector<std::array<const rhi_fake::hw::StateRef*, 3>> motor_health;  // per joint, kMotorHealthNames
   std::vector<const rhi_fake::hw::CommandRef*> cpos, cvel, ckp, ckd, cff;
   std::array<const rhi_fake::hw::StateRef*, 10> imu{};
   std::array<const rhi_fake::hw::StateRef*, kHealthStates.size()> health{};
@@ -232,6 +258,7 @@ struct Interfaces {
     pos.assign(kJointCount, nullptr);
     vel.assign(kJointCount, nullptr);
     eff.assign(kJointCount, nullptr);
+    motor_health.assign(kJointCount, {nullptr, nullptr, nullptr});
     cpos.assign(kJointCount, nullptr);
     cvel.assign(kJointCount, nullptr);
     ckp.assign(kJointCount, nullptr);
@@ -249,6 +276,9 @@ struct Interfaces {
         if (n == "position") pos[k] = &s;
         if (n == "velocity") vel[k] = &s;
         if (n == "effort") eff[k] = &s;
+        for (size_t h = 0; h < kMotorHealthNames.size(); ++h) {
+          if (n == kMotorHealthNames[h]) motor_health[k][h] = &s;
+        }
       }
       if (kImuEnabled && s.prefix() == kImuName) {
         for (size_t i = 0; i < kImuInterfaces.size(); ++i) {
@@ -287,6 +317,11 @@ struct Interfaces {
       const bool position_mode = kJoints[k].mode == 0;
       if (!pos[k] || !vel[k] || !eff[k] || !cvel[k] || !cff[k]) {
         return false;
+      }
+      for (size_t h = 0; h < kMotorHealthNames.size(); ++h) {
+        if ((motor_health[k][h] != nullptr) != kMotorHealth[h]) {
+          return false;
+        }
       }
       if ((cpos[k] != nullptr) != position_mode || (ckp[k] != nullptr) != (position_mode && kHasGains) ||
           (ckd[k] != nullptr) != kHasGains) {

@@ -39,6 +39,7 @@ public:
         m.joints[p].position = f.q[slot];
         m.joints[p].velocity = f.dq[slot];
         m.joints[p].effort = f.tau[slot];
+        m.joints[p].error_code = static_cast<uint16_t>(f.error_code[slot]);
       }
     }
     prepare_ros_imu(f);

@@ -72,12 +72,13 @@ public:
         ms.tau_est() = 555.0F;
       }
       ms.ddq() = 0.5F + static_cast<float>(i);
-      ms.temperature()[0] = static_cast<int16_t>(30 + i);
+      // motor health: the frame's for the robot's slots, garbage beyond
+      ms.temperature()[0] = static_cast<int16_t>(i < N ? f.temperature[i] : 300.0 + static_cast<double>(i));
       ms.temperature()[1] = static_cast<int16_t>(-5 - static_cast<int>(i));
-      ms.vol() = 24.5F;
+      ms.vol() = i < N ? static_cast<float>(f.voltage[i]) : 99.5F;
       ms.sensor()[0] = 0x11U + static_cast<uint32_t>(i);
       ms.sensor()[1] = 0x2200U + static_cast<uint32_t>(i);
-      ms.motorstate() = 0x40000000U | static_cast<uint32_t>(i);
+      ms.motorstate() = i < N ? static_cast<uint32_t>(f.error_code[i]) : 0x40000000U | static_cast<uint32_t>(i);
       for (size_t r = 0; r < 4; ++r) {
         ms.reserve()[r] = 0x9000U + static_cast<uint32_t>(i * 4 + r);
       }

@@ -81,7 +81,7 @@ public:
       ms.q_raw() = 1.25F + static_cast<float>(i);
       ms.dq_raw() = -1.5F - static_cast<float>(i);
       ms.ddq_raw() = 2.75F;
-      ms.temperature() = static_cast<uint8_t>(30 + i);
+      ms.temperature() = static_cast<uint8_t>(i < N ? f.temperature[i] : 200.0 + static_cast<double>(i));
       ms.lost() = 0x40000000U | static_cast<uint32_t>(i);
       ms.reserve()[0] = 0x9000U + static_cast<uint32_t>(i);
       ms.reserve()[1] = 0x9100U + static_cast<uint32_t>(i);

@@ -7,9 +7,12 @@
 #ifndef ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_HEALTH_HPP_
 #define ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_HEALTH_HPP_
 
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <initializer_list>
 #include <string>
 
 namespace robot_hardware_interface
@@ -79,6 +82,64 @@ inline double * health_state_value(DriverHealthData & health, const std::string 
   }
   return nullptr;
 }
+
+// Motor health a robot's state message may carry per motor slot: the transport says which
+// (DriverTransport::motor_health()), the description lists them after position, velocity and
+// effort, and a robot without a field simply lacks that interface.
+enum MotorHealthField : uint8_t
+{
+  kMotorTemperature = 1U << 0,  // "temperature": winding temperature [deg C]
+  kMotorVoltage = 1U << 1,      // "voltage": supply voltage [V]
+  kMotorErrorCode = 1U << 2,    // "error_code": the motor's error bits (vendor), 0: none
+};
+
+struct MotorHealthInterface
+{
+  const char * name;
+  MotorHealthField field;
+};
+
+inline constexpr MotorHealthInterface kMotorHealthInterfaces[] = {
+  {"temperature", kMotorTemperature}, {"voltage", kMotorVoltage}, {"error_code", kMotorErrorCode}};
+
+// Motor health by SDK motor slot, as the state message said it. The state thread publishes one at
+// most every kMotorHealthPeriodNs (temperatures change slowly; read() copies a frame only when a
+// new one came, and the framework handles are written only then).
+template<size_t N>
+struct MotorHealthFrame
+{
+  std::array<double, N> temperature{};
+  std::array<double, N> voltage{};
+  std::array<double, N> error_code{};
+  uint64_t sequence{0};  // 0: never published
+
+  // The double of field `name` of `slot`, nullptr for an unknown name or a field not in `fields`.
+  double * value(size_t slot, const std::string & name, uint8_t fields)
+  {
+    for (const MotorHealthInterface & interface : kMotorHealthInterfaces) {
+      if (name == interface.name && (fields & interface.field) != 0U) {
+        return interface.field == kMotorTemperature ? &temperature[slot] :
+               interface.field == kMotorVoltage ? &voltage[slot] : &error_code[slot];
+      }
+    }
+    return nullptr;
+  }
+
+  // Whether `value` is one of this frame's doubles (std::less: a total order on any pointers).
+  bool holds(const double * value) const
+  {
+    for (const std::array<double, N> * values : {&temperature, &voltage, &error_code}) {
+      if (!std::less<const double *>()(value, values->data()) &&
+        std::less<const double *>()(value, values->data() + N))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
+inline constexpr int64_t kMotorHealthPeriodNs = 10000000;  // 100 Hz
 
 // An e-stop command value presses the e-stop: NaN (a framework handle nobody wrote) never does.
 inline bool estop_pressed(double command) {return command >= 0.5;}

@@ -75,11 +75,13 @@ public:
   {
     auto exported = hardware_interface::SystemInterface::on_export_state_interfaces();
     state_links_.clear();
+    slow_state_links_.clear();
     for (const auto * handles : {&joint_states_, &sensor_states_, &gpio_states_}) {
       for (const auto & handle : *handles) {
         const double * value = state_value(handle->get_prefix_name(), handle->get_interface_name());
         if (value != nullptr) {
-          state_links_.push_back(StateLink{handle.get(), value});
+          (slow_state_value(value) ? slow_state_links_ : state_links_).push_back(
+            StateLink{handle.get(), value});
         }
       }
     }
@@ -165,6 +167,9 @@ protected:
   // The driver-owned double behind an interface, nullptr for one the driver does not provide.
   virtual double * state_value(const std::string & prefix, const std::string & name) = 0;
   virtual double * command_value(const std::string & prefix, const std::string & name) = 0;
+  // Whether the state double `value` changes only now and then (motor health): published by
+  // publish_slow_state_values() when it changed, not by every read().
+  virtual bool slow_state_value(const double * /*value*/) {return false;}
 
   // Controller thread, end of read(): state values out to the exported interfaces.
   void publish_state_values()
@@ -172,6 +177,16 @@ protected:
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
     for (const StateLink & link : state_links_) {
       // A handle a reader holds right now keeps its previous value for one cycle.
+      static_cast<void>(link.handle->set_value(*link.value));
+    }
+#endif
+  }
+
+  // Controller thread, in read() when the slow state values changed.
+  void publish_slow_state_values()
+  {
+#if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+    for (const StateLink & link : slow_state_links_) {
       static_cast<void>(link.handle->set_value(*link.value));
     }
 #endif
@@ -237,6 +252,7 @@ private:
     double * value;
   };
   std::vector<StateLink> state_links_;
+  std::vector<StateLink> slow_state_links_;  // published when they change (motor health)
   std::vector<CommandLink> command_links_;
   std::vector<CommandLink> claimed_links_;  // the command_links_ controllers claim
   std::vector<CommandLink> gpio_command_links_;  // fetched every cycle (the e-stop)

@@ -70,6 +70,7 @@ public:
   }
 
   const char * name() const override {return "agibot_topics";}
+  uint8_t motor_health() const override {return kMotorErrorCode;}
 
   bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) override
   {
@@ -149,6 +150,7 @@ private:
     bool frames_valid{false};   // the group's last parsed frame was accepted
     std::vector<size_t> entry_slots;  // slot of each entry of the last state message (sized once)
     bool distinct_slots{false};  // no two entry_slots name the same slot (checked when they change)
+    bool health_stored{false};   // stored its error codes since the last motor health frame
   };
 
   // The motor slot of entry `position` of a group's state message. A named entry is first tried
@@ -288,10 +290,12 @@ private:
       return;
     }
     auto & state = core_->state_frame();
-    const auto store = [&state](size_t slot, const auto & joint) {
+    auto & health = core_->motor_health_frame();  // JointState.error_code (v1.0.0)
+    const auto store = [&state, &health](size_t slot, const auto & joint) {
         state.q[slot] = static_cast<T>(joint.position);
         state.dq[slot] = static_cast<T>(joint.velocity);
         state.tau[slot] = static_cast<T>(joint.effort);
+        health.error_code[slot] = static_cast<double>(joint.error_code);
       };
     for (size_t i = 0; i < remembered; ++i) {
       if (entry_slots[i] != kNoSlot) {
@@ -310,11 +314,33 @@ private:
       group.reported = true;
       ++groups_reported_;
     }
+    // A motor health frame holds one round of every group's error codes: once one is due, each
+    // group stores into it once, and the last one publishes it.
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_->motor_health_due(group.state_time_ns))) {
+      collect_motor_health(group);
+    }
     // First-state rule: only once every group has reported is the state complete.
     if (groups_reported_ == groups_.size()) {
       core_->publish_state(oldest_group_time());
     }
     core_->monitor().check_state_latency(start);
+  }
+
+  void collect_motor_health(Group & group)
+  {
+    if (groups_health_stored_ == 0) {
+      for (Group & other : groups_) {
+        other.health_stored = false;
+      }
+    }
+    if (!group.health_stored) {
+      group.health_stored = true;
+      ++groups_health_stored_;
+    }
+    if (groups_health_stored_ == groups_.size()) {
+      core_->publish_motor_health(group.state_time_ns);
+      groups_health_stored_ = 0;
+    }
   }
 
   void reject(Group & group, const char * reason)
@@ -365,6 +391,7 @@ private:
   uint32_t message_stamp_{0};
   JointNames<N> names_;  // each slot's joint name, matched against the entries of a message
   size_t groups_reported_{0};  // executor thread
+  size_t groups_health_stored_{0};  // executor thread: groups with health_stored
   uint32_t command_sequence_{0};
   typename rclcpp::Subscription<Imu>::SharedPtr imu_subscription_;
   TopicExecutor executor_;

@@ -17,6 +17,7 @@
 #include <unitree/idl/hg/LowCmd_.hpp>
 #include <unitree/idl/hg/LowState_.hpp>
 
+#include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/transport/unitree_crc.hpp"
 
 namespace robot_hardware_interface
@@ -101,6 +102,16 @@ struct Family
 
   static uint32_t command_crc(const LowCmd & cmd) {return low_cmd_crc(cmd);}
   static uint32_t state_crc(const LowState & state) {return low_state_crc(state);}
+
+  // Motor health of MotorState_ (SDK_FACTS.md): temperature[0], vol and motorstate.
+  static constexpr uint8_t kMotorHealth = kMotorTemperature | kMotorVoltage | kMotorErrorCode;
+  template<typename Motor, typename Frame>
+  static void read_motor_health(const Motor & motor, Frame & frame, size_t slot)
+  {
+    frame.temperature[slot] = static_cast<double>(motor.temperature()[0]);
+    frame.voltage[slot] = static_cast<double>(motor.vol());
+    frame.error_code[slot] = static_cast<double>(motor.motorstate());
+  }
 };
 
 }  // namespace unitree_hg

@@ -21,9 +21,10 @@
 //   shmutex_*   the seed template's DataBuffer: the writer takes a std::shared_mutex unique lock
 //               and copies, the reader takes a shared lock and copies (uncontended)
 //   locks_pos / locks_all  with framework-owned handles (4.x+), the handles' own locks alone: a
-//               set_value() on every exported state handle and a get_optional() on every claimed
-//               command handle, the least read() + write() can do through upstream's API (empty on
-//               Humble, whose interfaces are the driver's own doubles)
+//               set_value() on every exported state handle but the motor health ones (written
+//               only when a health frame comes, every 10 ms at most) and a get_optional() on every
+//               claimed command handle and the e-stop, the least read() + write() can do through
+//               upstream's API (empty on Humble, whose interfaces are the driver's own doubles)
 //
 // Usage: bench_hot_paths time <iterations> [path...] latency of every path, or of those (ns per call)
 //        bench_hot_paths count <path> <iterations>  runs only <path>; under
@@ -120,10 +121,17 @@ void claim(Rig& rig, Claim claim_kind) {
   }
 #if RHI_FAKE_HI_MAJOR >= 4
   for (const auto& s : rig.ifs.exported.states()) {
+    // Motor health changes every 10 ms at most: a driver writes those handles only then.
+    const bool motor_health = std::find(kMotorHealthNames.begin(), kMotorHealthNames.end(), s.interface()) !=
+                              kMotorHealthNames.end();
+    if (motor_health) continue;
     // the framework's handle: const for readers, the driver writes it (set_value)
     rig.lock_states.push_back(const_cast<hardware_interface::StateInterface*>(s.handle().get()));  // NOLINT
   }
   for (const auto& c : rig.ifs.exported.commands()) {
+    if (kHasHealthGpio && c.prefix() == kHealthGpio) {
+      rig.lock_commands.push_back(c.handle().get());  // the e-stop: read every cycle
+    }
     for (size_t k = 0; k < kJointCount; ++k) {
       if (c.prefix() == kJoints[k].name && claimed(k, c.interface(), claim_kind)) {
         rig.lock_commands.push_back(c.handle().get());

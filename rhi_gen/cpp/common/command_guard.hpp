@@ -76,8 +76,8 @@ public:
 
   // Writer cycles that held a joint for a non-finite command or a negative gain, and the times the
   // writer started holding because the state went stale (health GPIO).
-  uint64_t rejected_commands() const {return rejected_commands_.get();}
-  uint64_t stale_holds() const {return stale_holds_.get();}
+  const HealthCounter & rejected_commands() const {return rejected_commands_;}
+  const HealthCounter & stale_holds() const {return stale_holds_;}
 
   // The frame to send for `cmd`; `stale`: no valid state for state_timeout_ms.
   const Command * guard(const Command & cmd, bool stale)

@@ -6,6 +6,7 @@
 #ifndef ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_CORE_HPP_
 #define ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_CORE_HPP_
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -126,6 +127,10 @@ public:
   // storage, true when a new one came (only then do its values change).
   bool read_motor_health()
   {
+    // The usual cycle: no new frame, one relaxed load (a stale answer only delays by a cycle).
+    if (motor_health_published_.load(std::memory_order_relaxed) == motor_health_.sequence) {
+      return false;
+    }
     const MotorHealthFrame<N> * frame = motor_health_buffer_.get_data();
     if (frame == nullptr || frame->sequence == motor_health_.sequence) {
       return false;
@@ -170,10 +175,10 @@ public:
   {
     const int64_t silence_ns = freshness_.silence_ns(now_ns);
     health_.state_age_ms = silence_ns < 0 ? -1.0 : static_cast<double>(silence_ns) * 1e-6;
-    health_.invalid_states = static_cast<double>(freshness_.invalid_states());
-    health_.stale_holds = static_cast<double>(guard_.stale_holds());
-    health_.rejected_commands = static_cast<double>(guard_.rejected_commands());
-    health_.writer_overruns = static_cast<double>(monitor_.writer_overruns());
+    health_.invalid_states = freshness_.invalid_states().value();
+    health_.stale_holds = guard_.stale_holds().value();
+    health_.rejected_commands = guard_.rejected_commands().value();
+    health_.writer_overruns = monitor_.writer_overruns().value();
     const auto latched = guard_.latched();
     health_.fault = link_dead || latched != CommandGuard<N, T>::HoldReason::kNone ? 1.0 : 0.0;
     health_.estop = latched == CommandGuard<N, T>::HoldReason::kEstop ? 1.0 : 0.0;
@@ -222,6 +227,7 @@ public:
     ++motor_health_cache_.sequence;
     motor_health_time_ns_ = now_ns;
     motor_health_buffer_.set_data(motor_health_cache_);
+    motor_health_published_.store(motor_health_cache_.sequence, std::memory_order_relaxed);
   }
 
   // The frame being parsed is invalid: count it and return the count.
@@ -382,6 +388,7 @@ private:
   Command initial_cmd_cache_;  // state thread: layer-2 initial command
   MotorHealthFrame<N> motor_health_cache_{};  // state thread: the health frame being filled
   int64_t motor_health_time_ns_{0};           // state thread: when the last one was published
+  std::atomic<uint64_t> motor_health_published_{0};  // sequence of the newest published frame
 };
 
 }  // namespace robot_hardware_interface

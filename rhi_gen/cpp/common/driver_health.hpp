@@ -31,6 +31,8 @@ public:
     return next;
   }
   uint64_t get() const {return value_.load(std::memory_order_relaxed);}
+  // As an interface value, through int64_t: one conversion instruction (a count stays < 2^63).
+  double value() const {return static_cast<double>(static_cast<int64_t>(get()));}
 
 private:
   std::atomic<uint64_t> value_{0};

@@ -79,7 +79,7 @@ public:
   }
 
   // Any thread: sends later than the period allows since on_init (health GPIO).
-  uint64_t writer_overruns() const {return writer_overruns_.get();}
+  const HealthCounter & writer_overruns() const {return writer_overruns_;}
 
 private:
   // One monitored path: its threshold and its own warning throttle, touched only by the path's

@@ -62,7 +62,7 @@ public:
   }
 
   // Any thread: rejected state frames since on_init (the health GPIO's invalid_states).
-  uint64_t invalid_states() const {return invalid_states_.get();}
+  const HealthCounter & invalid_states() const {return invalid_states_;}
 
   // IMU callback: a rejected sample; returns the count.
   uint64_t reject_imu() {return ++invalid_imu_count_;}

@@ -107,6 +107,9 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         "  state_decimation: 1",
         "  state_timeout_ms: 100",
         "  fault_timeout_ms: 1000",
+        "  diagnostics_period_ms: 1000",
+        "  motor_temperature_warn_c: 70",
+        "  motor_temperature_error_c: 85",
     ]
     lines += ["transport_options:", *_with_given(chosen.suggest_options(order, known, given), given)]
     group_of = chosen.joint_labels(order, known)

@@ -25,7 +25,8 @@ TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type",
             "coupled_joints", "urdf_transmissions")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
-                  "state_decimation", "state_timeout_ms", "fault_timeout_ms")
+                  "state_decimation", "state_timeout_ms", "fault_timeout_ms", "diagnostics_period_ms",
+                  "motor_temperature_warn_c", "motor_temperature_error_c")
 IMU_KEYS = ("enabled", "name", "frame_id")
 GAIN_KEYS = ("stiffness", "damping")
 COMMAND_MODES = ("position", "velocity")
@@ -34,6 +35,18 @@ MAX_GAIN = 1e6  # N*m/rad: far above any real motor; a typo of a few zeros still
 FRAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_/.\-]*$")
 NETIF_RE = re.compile(r"^[A-Za-z0-9_.:\-]{1,64}$")
 SENSOR_NAME_RE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]{0,63}$")
+
+
+def _check_temperatures(v: Validator, params: Parameters, *, given: bool) -> None:
+    """A motor is WARN at motor_temperature_warn_c and ERROR at motor_temperature_error_c: in that order."""
+    warn, error = params.motor_temperature_warn_c, params.motor_temperature_error_c
+    if error > warn:
+        return
+    if given:
+        raise v.error("parameters.motor_temperature_error_c", f"{error} must be greater than "
+                      f"motor_temperature_warn_c ({warn})", fix=f"set motor_temperature_error_c above {warn}")
+    raise v.error("parameters.motor_temperature_warn_c", f"{warn} must be less than motor_temperature_error_c "
+                  f"({error}, the default)", fix=f"set parameters.motor_temperature_error_c above {warn}")
 
 
 def _check_fault_timeout(v: Validator, params: Parameters, *, given: bool) -> None:
@@ -123,8 +136,18 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
             if "state_timeout_ms" in m else params.state_timeout_ms,
             fault_timeout_ms=v.integer(m["fault_timeout_ms"], "parameters.fault_timeout_ms", 2, 3_600_000)
             if "fault_timeout_ms" in m else params.fault_timeout_ms,
+            diagnostics_period_ms=v.integer(m["diagnostics_period_ms"], "parameters.diagnostics_period_ms", 0,
+                                            60_000)
+            if "diagnostics_period_ms" in m else params.diagnostics_period_ms,
+            motor_temperature_warn_c=v.integer(m["motor_temperature_warn_c"], "parameters.motor_temperature_warn_c",
+                                               1, 200)
+            if "motor_temperature_warn_c" in m else params.motor_temperature_warn_c,
+            motor_temperature_error_c=v.integer(m["motor_temperature_error_c"],
+                                                "parameters.motor_temperature_error_c", 1, 200)
+            if "motor_temperature_error_c" in m else params.motor_temperature_error_c,
         )
         _check_fault_timeout(v, params, given="fault_timeout_ms" in m)
+        _check_temperatures(v, params, given="motor_temperature_error_c" in m)
 
     raw_options = data.get("transport_options")
     options = transport.read_options(

@@ -34,6 +34,9 @@ class Parameters:
     state_decimation: int = 1
     state_timeout_ms: int = 100
     fault_timeout_ms: int = 1000
+    diagnostics_period_ms: int = 1000     # /diagnostics every this long, 0: none
+    motor_temperature_warn_c: int = 70    # /diagnostics: a motor this hot is WARN ...
+    motor_temperature_error_c: int = 85   # ... and this hot ERROR (rhi-gen's defaults, not a vendor's)
 
 
 @dataclass(frozen=True)

@@ -31,9 +31,9 @@ COMMON_FILES = tuple(
     (f"cpp/common/{name}", f"include/robot_hardware_interface/common/{name}")
     for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
                  "hardware_parameters.hpp", "ros2_control_compat.hpp", "slot_kernels.hpp", "slot_table.hpp",
-                 "safe_start.hpp", "driver_health.hpp", "state_freshness.hpp", "driver_monitor.hpp",
-                 "command_claims.hpp", "command_guard.hpp", "joint_transmissions.hpp", "calibration_file.hpp",
-                 "driver_core.hpp", "system_driver.hpp"))
+                 "safe_start.hpp", "driver_health.hpp", "driver_diagnostics.hpp", "state_freshness.hpp",
+                 "driver_monitor.hpp", "command_claims.hpp", "command_guard.hpp", "joint_transmissions.hpp",
+                 "calibration_file.hpp", "driver_core.hpp", "system_driver.hpp"))
 TEST_FILES = (("cpp/test/hardware_interface_test.hpp", "test/hardware_interface_test.hpp"),)
 # Templates: what depends on the robots.
 PACKAGE_FILES = (

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from .. import transports
 from ..model import MotorJoint, RobotModel
 from ..project import PACKAGE_NAME
-from ..transports import COMMON_DEPENDENCIES, PLAIN_CMAKE, VENDOR_SOURCE, Dependency
+from ..transports import COMMON_DEPENDENCIES, COMMON_MESSAGE_DEPENDENCIES, PLAIN_CMAKE, VENDOR_SOURCE, Dependency
 
 # ---------------------------------------------------------------- package files
 
@@ -60,6 +60,7 @@ class RobotTarget:
 class PackageView:
     robots: tuple[RobotTarget, ...]
     common_deps: tuple[str, ...]         # every driver's packages
+    common_msg_deps: tuple[str, ...]     # every driver's message packages (${pkg_TARGETS})
     ros_deps: tuple[str, ...]            # ROS packages of the transports in use, sorted
     vendor_msgs: str                     # of those, the ones not in rosdistro (vendor sources): "a, b"
     plain_deps: tuple[Dependency, ...]   # plain CMake packages of the transports in use, first use first
@@ -100,6 +101,7 @@ def package_view(robots: Sequence[RobotModel]) -> PackageView:
     return PackageView(
         robots=tuple(targets),
         common_deps=COMMON_DEPENDENCIES,
+        common_msg_deps=COMMON_MESSAGE_DEPENDENCIES,
         ros_deps=tuple(ros),
         vendor_msgs=", ".join(sorted(d.name for d in used if d.source == VENDOR_SOURCE)),
         plain_deps=plain,

@@ -22,6 +22,8 @@ from ..typed_yaml.validator import Validator
 
 # Packages every driver needs, whatever its transport.
 COMMON_DEPENDENCIES = ("hardware_interface", "pluginlib", "rclcpp", "rclcpp_lifecycle")
+# Message packages every driver needs (linked through ${<pkg>_TARGETS}): /diagnostics.
+COMMON_MESSAGE_DEPENDENCIES = ("diagnostic_msgs",)
 
 # Motor health a state message may carry, per joint, in the order the description lists them (the C++
 # names in cpp/common/driver_health.hpp): winding temperature [deg C], supply voltage [V], the motor's

@@ -57,6 +57,7 @@ PARAMETERS = COMMON + "hardware_parameters.hpp"
 SYSTEM_DRIVER = COMMON + "system_driver.hpp"
 DATA_BUFFER = COMMON + "data_buffer.hpp"
 COMPAT = COMMON + "ros2_control_compat.hpp"
+DRIVER_DIAGNOSTICS = COMMON + "driver_diagnostics.hpp"
 TRANSPORT = "include/robot_hardware_interface/transport/"
 UNITREE_CRC = TRANSPORT + "unitree_crc.hpp"
 UNITREE_HG = TRANSPORT + "unitree_hg.hpp"
@@ -143,8 +144,8 @@ MUTATIONS = (
                        "const bool link_dead = false;"), ("faults",)),
     Mutation("dead_link_never_answered", "a robot that never answers after on_activate never faults: the "
              "wait for the first state is not counted",
-             TokenEdit(STATE_FRESHNESS, "last_ns > activated_ns_ ? last_ns : activated_ns_",
-                       "last_ns > activated_ns_ ? last_ns : now_ns"),
+             TokenEdit(STATE_FRESHNESS, "last_ns > activated_ns ? last_ns : activated_ns",
+                       "last_ns > activated_ns ? last_ns : now_ns"),
              ("faults",)),
     Mutation("error_hold_released", "on_error does not latch the hold: once the state is back the last "
              "controller command is sent again",
@@ -186,6 +187,9 @@ MUTATIONS = (
     Mutation("hg_second_temperature", "the hg transport reports MotorState_.temperature[1] as the temperature",
              TokenEdit(UNITREE_HG, "motor.temperature()[0]", "motor.temperature()[1]"), ("health",),
              robots=("unitree/g1",)),
+    Mutation("estop_not_diagnosed", "/diagnostics reports the safety of a robot held by the e-stop as fine",
+             TokenEdit(DRIVER_DIAGNOSTICS, "if (facts.estop) {", "if (false) {"), ("diagnostics",),
+             robots=("engineai/pm01",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

@@ -24,6 +24,7 @@ HEADER_WHEELS = {
     "ros-std-msgs": "std_msgs",
     "ros-geometry-msgs": "geometry_msgs",
     "ros-sensor-msgs": "sensor_msgs",
+    "ros-diagnostic-msgs": "diagnostic_msgs",
     "ros-lifecycle-msgs": "lifecycle_msgs",
     "ros-rosidl-runtime-cpp": "rosidl_runtime_cpp",
     "ros-rosidl-runtime-c": "rosidl_runtime_c",

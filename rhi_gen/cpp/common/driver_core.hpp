@@ -19,6 +19,7 @@
 #include "robot_hardware_interface/common/command_claims.hpp"
 #include "robot_hardware_interface/common/command_guard.hpp"
 #include "robot_hardware_interface/common/data_buffer.hpp"
+#include "robot_hardware_interface/common/driver_diagnostics.hpp"
 #include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/driver_monitor.hpp"
 #include "robot_hardware_interface/common/hardware_parameters.hpp"
@@ -170,6 +171,28 @@ public:
     return true;
   }
 
+  // Any thread (/diagnostics), at steady time `now_ns`: the health from atomics only.
+  HealthFacts health_facts(int64_t now_ns, bool active) const
+  {
+    HealthFacts facts;
+    facts.active = active;
+    facts.silence_ns = freshness_.silence_ns(now_ns);
+    facts.invalid_states = freshness_.invalid_states().get();
+    facts.stale_holds = guard_.stale_holds().get();
+    facts.rejected_commands = guard_.rejected_commands().get();
+    facts.writer_overruns = monitor_.writer_overruns().get();
+    const auto latched = guard_.latched();
+    facts.error_hold = latched == CommandGuard<N, T>::HoldReason::kError;
+    facts.estop = latched == CommandGuard<N, T>::HoldReason::kEstop;
+    return facts;
+  }
+
+  // The /diagnostics thread (its one consumer): the newest motor health frame, nullptr before one.
+  const MotorHealthFrame<N> * diagnostics_motor_health()
+  {
+    return motor_health_diagnostics_buffer_.get_data();
+  }
+
   // read(), at steady time `now_ns`: the health GPIO's states (`link_dead`: read() returns ERROR).
   void read_health(int64_t now_ns, bool link_dead)
   {
@@ -227,6 +250,7 @@ public:
     ++motor_health_cache_.sequence;
     motor_health_time_ns_ = now_ns;
     motor_health_buffer_.set_data(motor_health_cache_);
+    motor_health_diagnostics_buffer_.set_data(motor_health_cache_);
     motor_health_published_.store(motor_health_cache_.sequence, std::memory_order_relaxed);
   }
 
@@ -375,6 +399,8 @@ private:
   DataBuffer<Command> motor_command_buffer_;  // write() / layer 2 -> command writer
   DataBuffer<Imu, Producers::kOne> imu_state_buffer_;      // IMU callback -> read()
   DataBuffer<MotorHealthFrame<N>, Producers::kOne> motor_health_buffer_;  // state thread -> read()
+  // state thread -> the /diagnostics thread
+  DataBuffer<MotorHealthFrame<N>, Producers::kOne> motor_health_diagnostics_buffer_;
 
   // ros2_control storage, the per-slot command bounds and write()'s frame: controller thread only
   ControllerFrames<N, T> frames_{};

@@ -28,6 +28,9 @@ struct DriverParameters
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
   uint64_t fault_timeout_ms;  // no state for this long after activation: read() returns ERROR
+  uint64_t diagnostics_period_ms;  // /diagnostics period, 0: none
+  uint64_t motor_temperature_warn_c;  // /diagnostics: a motor this hot is WARN, ...
+  uint64_t motor_temperature_error_c;  // ... this hot ERROR
 
   explicit DriverParameters(const ParameterDefaults & defaults)
   : network_interface(defaults.network_interface),
@@ -35,7 +38,10 @@ struct DriverParameters
     command_writer_period_us(defaults.command_writer_period_us),
     state_decimation(defaults.state_decimation),
     state_timeout_ms(defaults.state_timeout_ms),
-    fault_timeout_ms(defaults.fault_timeout_ms)
+    fault_timeout_ms(defaults.fault_timeout_ms),
+    diagnostics_period_ms(defaults.diagnostics_period_ms),
+    motor_temperature_warn_c(defaults.motor_temperature_warn_c),
+    motor_temperature_error_c(defaults.motor_temperature_error_c)
   {
   }
 };
@@ -137,8 +143,21 @@ bool read_driver_parameters(
     !read_unsigned_parameter(
       logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms) ||
     !read_unsigned_parameter(
-      logger, parameters, "fault_timeout_ms", 2, 3600000, out.fault_timeout_ms))
+      logger, parameters, "fault_timeout_ms", 2, 3600000, out.fault_timeout_ms) ||
+    !read_unsigned_parameter(
+      logger, parameters, "diagnostics_period_ms", 0, 60000, out.diagnostics_period_ms) ||
+    !read_unsigned_parameter(
+      logger, parameters, "motor_temperature_warn_c", 1, 200, out.motor_temperature_warn_c) ||
+    !read_unsigned_parameter(
+      logger, parameters, "motor_temperature_error_c", 1, 200, out.motor_temperature_error_c))
   {
+    return false;
+  }
+  if (out.motor_temperature_error_c <= out.motor_temperature_warn_c) {
+    RCLCPP_ERROR(
+      logger, "hardware parameter 'motor_temperature_error_c' is %" PRIu64 ": expected more than "
+      "motor_temperature_warn_c (%" PRIu64 ")", out.motor_temperature_error_c,
+      out.motor_temperature_warn_c);
     return false;
   }
   // The driver holds the joints after state_timeout_ms, then faults after fault_timeout_ms.

@@ -3,8 +3,8 @@
 //
 //   const uint64_t n = rhi_alloc::count_in([&] { hw->read(t, dt); });   // heap allocations made
 //
-// Counting is process-wide (every thread) while armed, so an allocation a hot path hands to another
-// thread is caught too. The replacements are noinline: once GCC inlines a replacement operator
+// Counting is process-wide (every thread but the driver's /diagnostics thread) while armed, so an
+// allocation a hot path hands to another thread is caught too. The replacements are noinline: once GCC inlines a replacement operator
 // delete that calls free(), it reports a false -Wmismatched-new-delete at -O1 and above.
 #pragma once
 
@@ -12,7 +12,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <new>
+
+#include <pthread.h>
 
 namespace rhi_alloc {
 
@@ -28,8 +31,22 @@ uint64_t count_in(F&& f) {
   return allocations.load(std::memory_order_relaxed) - before;
 }
 
+// The driver's /diagnostics thread ("rhi_diagnostics", common/driver_diagnostics.hpp) builds and
+// publishes its messages off the hot paths and may allocate: its allocations are not counted.
+inline bool counted_thread() {
+  thread_local int counted = -1;  // -1: not asked yet
+  if (counted < 0) {
+    char name[16] = {};
+    counted = pthread_getname_np(pthread_self(), name, sizeof(name)) == 0 &&
+                      std::strcmp(name, "rhi_diagnostics") == 0
+                  ? 0
+                  : 1;
+  }
+  return counted == 1;
+}
+
 inline void note() {
-  if (armed.load(std::memory_order_relaxed)) {
+  if (armed.load(std::memory_order_relaxed) && counted_thread()) {
     allocations.fetch_add(1, std::memory_order_relaxed);
   }
 }

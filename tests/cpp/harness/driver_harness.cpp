@@ -9,7 +9,7 @@
 // with a clock, logger and executor + the framework's export order and shared handles).
 //
 // Sections (see tests/cpp/harness/README.md): interfaces, safety, joint_map, imu, commands,
-// command_safety, crc, parameters, decimation, faults, health, allocations, threads.
+// command_safety, crc, parameters, decimation, faults, health, diagnostics, allocations, threads.
 // Output: "section <name>: P passed, F failed" per section and "rhi-check: P passed, F failed".
 #include <algorithm>
 #include <atomic>
@@ -35,6 +35,7 @@
 #include <rclcpp/rclcpp.hpp>
 #include <lifecycle_msgs/msg/state.hpp>
 #include <rclcpp_lifecycle/state.hpp>
+#include <diagnostic_msgs/msg/diagnostic_array.hpp>
 
 #include "alloc_counter.hpp"
 #include "check.hpp"
@@ -1043,6 +1044,10 @@ void test_parameters() {
         {"fault_timeout_ms", "1"},           {"fault_timeout_ms", "later"},
         // not more than the description's state_timeout_ms: the driver would fault before it holds
         {"fault_timeout_ms", description_timeout.c_str()},
+        {"diagnostics_period_ms", "60001"},  {"diagnostics_period_ms", "often"},
+        {"motor_temperature_warn_c", "0"},   {"motor_temperature_error_c", "201"},
+        // not above the default motor_temperature_warn_c (70)
+        {"motor_temperature_error_c", "70"},
     };
     fresh_process();
     rhi_fake::hw::Framework fw;
@@ -1600,6 +1605,191 @@ void test_health() {
   teardown(rig);
 }
 
+// ================================================================ diagnostics
+// /diagnostics (diagnostic_msgs/DiagnosticArray, the real message): the driver's own thread publishes
+// "<hardware>: link", "<hardware>: safety" and, where the state carries motor health, "<hardware>:
+// motors" every diagnostics_period_ms. Waits poll with generous timeouts; a change counts once two
+// more messages came (the one being built may predate it).
+using DiagnosticArray = diagnostic_msgs::msg::DiagnosticArray;
+using DiagnosticStatus = diagnostic_msgs::msg::DiagnosticStatus;
+constexpr char kDiagnosticsTopic[] = "/diagnostics";
+
+bool next_diagnostics(DiagnosticArray& out, const char* what) {
+  const uint64_t before = rhi_fake::ros::publish_count(kDiagnosticsTopic);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (rhi_fake::ros::publish_count(kDiagnosticsTopic) < before + 2) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      CHECK(false, "%s: no /diagnostics message within 5 s", what);
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  const bool got = rhi_fake::ros::last_published<DiagnosticArray>(kDiagnosticsTopic, out);
+  CHECK(got, "%s: a /diagnostics message", what);
+  return got;
+}
+
+const DiagnosticStatus* status_named(const DiagnosticArray& a, const std::string& name) {
+  for (const DiagnosticStatus& s : a.status) {
+    if (s.name == name) return &s;
+  }
+  return nullptr;
+}
+
+std::string value_of(const DiagnosticStatus& s, const std::string& key) {
+  for (const auto& kv : s.values) {
+    if (kv.key == key) return kv.value;
+  }
+  return "<missing>";
+}
+
+// The status `part` of the latest message has `level` and a message containing `words`.
+void check_status(const DiagnosticArray& a, const std::string& hardware, const char* part, uint8_t level,
+                  const char* words, const char* what) {
+  const DiagnosticStatus* s = status_named(a, hardware + ": " + part);
+  CHECK(s != nullptr, "%s: status '%s: %s' in /diagnostics", what, hardware.c_str(), part);
+  if (s == nullptr) return;
+  CHECK_EQ(static_cast<int>(s->level), static_cast<int>(level), "%s: level of '%s' (message '%s')", what, part,
+           s->message.c_str());
+  CHECK(s->message.find(words) != std::string::npos, "%s: '%s' says '%s' (got '%s')", what, part, words,
+        s->message.c_str());
+  CHECK(s->hardware_id == hardware, "%s: hardware_id of '%s' is '%s'", what, part, s->hardware_id.c_str());
+}
+
+// A state whose motors are all at `celsius` with no error code, but `hot` (a joint index) at `hot_c`.
+StateFrame health_state(uint32_t code, double celsius, size_t hot, double hot_c, double error_code) {
+  StateFrame f = coded_state(code);
+  f.temperature.fill(celsius);
+  f.error_code.fill(0.0);
+  f.temperature[kJoints[hot].slot] = hot_c;
+  f.error_code[kJoints[hot].slot] = error_code;
+  return f;
+}
+
+void deliver_health(Rig& rig, const StateFrame& f) {
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));  // a motor health frame is due
+  rig.t.deliver_state(f);
+  rig.hw->read(kTime, kPeriod);
+}
+
+void test_diagnostics() {
+  rhi_check::Section section("diagnostics");
+  fresh_process();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["diagnostics_period_ms"] = "20";
+  info.hardware_parameters["motor_temperature_warn_c"] = "60";
+  info.hardware_parameters["motor_temperature_error_c"] = "80";
+  info.hardware_parameters["state_timeout_ms"] = "50";
+  info.hardware_parameters["fault_timeout_ms"] = "400";
+  info.hardware_parameters["state_decimation"] = "1";
+  if (!setup(rig, info)) {
+    teardown(rig);
+    return;
+  }
+  const std::string hw = info.name;
+  const bool motors = kMotorHealthCount > 0;
+  DiagnosticArray a;
+  if (!next_diagnostics(a, "after on_init")) {
+    teardown(rig);
+    return;
+  }
+  CHECK_EQ(a.status.size(), motors ? 3U : 2U, "statuses: link, safety%s", motors ? ", motors" : "");
+  check_status(a, hw, "link", DiagnosticStatus::WARN, "no state", "before any state");
+  check_status(a, hw, "safety", DiagnosticStatus::OK, "", "before any state");
+  if (!activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  const ControllerCommand cmd = distinct_command(4);
+  const size_t hot = kJointCount - 1;
+  deliver_health(rig, health_state(1, 40.0, hot, 41.0, 0.0));
+  apply_command(rig.ifs, cmd);
+  rig.hw->write(kTime, kPeriod);
+  rig.t.tick_writer();
+  if (next_diagnostics(a, "healthy robot")) {
+    check_status(a, hw, "link", DiagnosticStatus::OK, "state fresh", "healthy robot");
+    check_status(a, hw, "safety", DiagnosticStatus::OK, "commands forwarded", "healthy robot");
+    if (motors) {
+      check_status(a, hw, "motors", DiagnosticStatus::OK, "", "healthy robot");
+      const DiagnosticStatus* m = status_named(a, hw + ": motors");
+      if (m != nullptr && kMotorHealth[0]) {
+        const std::string shown = value_of(*m, std::string(kJoints[hot].name) + " temperature [C]");
+        CHECK(shown == "41.0", "the motors status lists every joint's temperature (got '%s')", shown.c_str());
+      }
+    }
+  }
+  if (motors && kMotorHealth[0]) {
+    deliver_health(rig, health_state(2, 40.0, hot, 65.0, 0.0));
+    if (next_diagnostics(a, "a hot motor")) {
+      check_status(a, hw, "motors", DiagnosticStatus::WARN, kJoints[hot].name, "65 C (warn 60)");
+    }
+    deliver_health(rig, health_state(3, 40.0, hot, 85.0, 0.0));
+    if (next_diagnostics(a, "a motor too hot")) {
+      check_status(a, hw, "motors", DiagnosticStatus::ERROR, "too hot", "85 C (error 80)");
+    }
+  }
+  if (motors && kMotorHealth[2]) {
+    deliver_health(rig, health_state(4, 40.0, hot, 40.0, 6.0));
+    if (next_diagnostics(a, "a motor error code")) {
+      check_status(a, hw, "motors", DiagnosticStatus::WARN, (std::string(kJoints[hot].name) + " (0x6)").c_str(),
+                   "error code 6");
+    }
+  }
+  deliver_health(rig, health_state(5, 40.0, hot, 40.0, 0.0));
+  rig.t.deliver_corrupt_state(distinct_state(6));
+  if (next_diagnostics(a, "one invalid frame")) {
+    const DiagnosticStatus* l = status_named(a, hw + ": link");
+    CHECK(l != nullptr && value_of(*l, "invalid state frames") == "1", "the link status counts the invalid frame");
+  }
+  // The e-stop.
+  rig.ifs.estop->set(1.0);
+  deliver_health(rig, health_state(7, 40.0, hot, 40.0, 0.0));
+  apply_command(rig.ifs, cmd);
+  rig.hw->write(kTime, kPeriod);
+  if (next_diagnostics(a, "e-stop")) {
+    check_status(a, hw, "safety", DiagnosticStatus::ERROR, "e-stop", "e-stop pressed");
+  }
+  rig.ifs.estop->set(0.0);
+  // The link goes stale, then dies.
+  std::this_thread::sleep_for(std::chrono::milliseconds(120));
+  if (next_diagnostics(a, "stale state")) {
+    const DiagnosticStatus* l = status_named(a, hw + ": link");
+    CHECK(l != nullptr && l->level >= DiagnosticStatus::WARN, "a silent link is WARN or worse: '%s'",
+          l != nullptr ? l->message.c_str() : "");
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(450));
+  if (next_diagnostics(a, "dead link")) {
+    check_status(a, hw, "link", DiagnosticStatus::ERROR, "link lost", "no state for fault_timeout_ms");
+  }
+  // Zero allocations in the hot paths while /diagnostics runs (its own thread may allocate).
+  uint64_t allocations = 0;
+  deactivate(rig);
+  activate(rig);
+  for (uint32_t k = 0; k < 200; ++k) {
+    rig.t.prepare_state(coded_state(10 + k));
+    allocations += rhi_alloc::count_in([&] { rig.t.deliver_prepared(); });
+    allocations += rhi_alloc::count_in([&] { rig.hw->read(kTime, kPeriod); });
+    apply_command(rig.ifs, cmd);
+    allocations += rhi_alloc::count_in([&] { rig.hw->write(kTime, kPeriod); });
+    allocations += rhi_alloc::count_in([&] { rig.t.tick_writer(); });
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  CHECK_EQ(allocations, 0U, "heap allocations in the state callback, read(), write() and the writer over 200 "
+           "cycles while /diagnostics publishes");
+  teardown(rig);
+  // diagnostics_period_ms 0: no /diagnostics at all.
+  fresh_process();
+  Rig quiet;
+  hardware_interface::HardwareInfo off = make_hardware_info();
+  off.hardware_parameters["diagnostics_period_ms"] = "0";
+  if (setup(quiet, off)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    CHECK_EQ(rhi_fake::ros::publish_count(kDiagnosticsTopic), 0U, "diagnostics_period_ms 0 publishes nothing");
+  }
+  teardown(quiet);
+}
+
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
 // ================================================================ CRC (reference and generated)
 void test_crc_functions() {
@@ -2000,8 +2190,8 @@ void test_unfilled_refuses_activation() {
 
 }  // namespace
 
-// --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,health,crc,threads) runs just
-// those scenarios, e.g. to repeat the threaded one many times.
+// --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,health,diagnostics,crc,threads)
+// runs just those scenarios, e.g. to repeat the threaded one many times.
 static bool selected(const std::string& only, const char* name) {
   if (only.empty()) {
     return true;
@@ -2029,8 +2219,9 @@ int main(int argc, char** argv) {
 #endif
     if (kHasTransmission && only.empty()) {
       // The main scenario, decimation and parameters compare exact motor values with joint values.
-      std::printf("motors that are not joints: sections interfaces, transmission, faults, health, threads\n");
-      only = "interfaces,transmission,faults,health,threads";
+      std::printf("motors that are not joints: sections interfaces, transmission, faults, health, diagnostics, "
+                  "threads\n");
+      only = "interfaces,transmission,faults,health,diagnostics,threads";
     }
     if (selected(only, "interfaces")) test_interfaces();
     if (selected(only, "transmission")) test_transmission();
@@ -2039,6 +2230,7 @@ int main(int argc, char** argv) {
     if (selected(only, "decimation")) test_decimation_keeps_state_fresh();
     if (selected(only, "faults")) test_faults();
     if (selected(only, "health")) test_health();
+    if (selected(only, "diagnostics")) test_diagnostics();
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
     if (selected(only, "crc")) test_crc_functions();
 #endif

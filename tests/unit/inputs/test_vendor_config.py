@@ -88,6 +88,12 @@ def test_agibot_groups_get_offsets():
     (BASE + "parameters:\n  state_timeout_ms: 1500\n", 11, "parameters.state_timeout_ms",
      "must be less than fault_timeout_ms (1000, the default) -> set parameters.fault_timeout_ms above 1500"),
     (BASE + "parameters:\n  enable_monitor: maybe\n", 11, "parameters.enable_monitor", "true or false"),
+    (BASE + "parameters:\n  diagnostics_period_ms: 60001\n", 11, "parameters.diagnostics_period_ms", "out of range"),
+    (BASE + "parameters:\n  motor_temperature_warn_c: 90\n", 11, "parameters.motor_temperature_warn_c",
+     ("must be less than motor_temperature_error_c (85, the default) -> set parameters.motor_temperature_error_c "
+      "above 90")),
+    (BASE + "parameters:\n  motor_temperature_warn_c: 60\n  motor_temperature_error_c: 60\n", 12,
+     "parameters.motor_temperature_error_c", "must be greater than motor_temperature_warn_c (60)"),
     (BASE + "parameters:\n  network_iface: eth0\n", 11, "parameters.network_iface", "did you mean 'network_interface'"),
     (BASE + "transport_options:\n  lowcmd_topic: rt/lowcmd\n", 11, "transport_options.lowcmd_topic", "unknown key"),
     (BASE + "transport_options:\n  state_topic: 'bad topic'\n", 11, "transport_options.state_topic",
@@ -104,6 +110,15 @@ def test_bad_values_name_line_key_and_fix(tmp_path, text, line, key, words):
     assert err.line == line, str(err)
     assert err.key == key, str(err)
     assert words in str(err)
+
+
+def test_diagnostics_parameters_are_read_with_their_defaults(tmp_path):
+    defaults = load_config(write(tmp_path, BASE)).parameters
+    assert (defaults.diagnostics_period_ms, defaults.motor_temperature_warn_c,
+            defaults.motor_temperature_error_c) == (1000, 70, 85)
+    given = load_config(write(tmp_path, BASE + "parameters:\n  diagnostics_period_ms: 0\n"
+                              "  motor_temperature_warn_c: 50\n  motor_temperature_error_c: 65\n")).parameters
+    assert (given.diagnostics_period_ms, given.motor_temperature_warn_c, given.motor_temperature_error_c) == (0, 50, 65)
 
 
 def test_fault_timeout_is_read_and_follows_the_state_timeout(tmp_path):

@@ -71,10 +71,10 @@ static_assert(robot_hardware_interface::slots_are_valid(kJoints, X2_NUM_MOTOR), 
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
-// fault_timeout_ms
+// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c
 constexpr RobotSpec kRobot{"robot_hardware_interface/agibot/X2HardwareInterface",
   "x2_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"lo", true, 2000, 1, 100, 1000}};
+  {"lo", true, 2000, 1, 100, 1000, 1000, 70, 85}};
 
 // AimDK joint groups: {name, first motor slot, size, command topic, state topic}
 constexpr std::array<robot_hardware_interface::AimdkJointGroup, 4> kGroups = {{

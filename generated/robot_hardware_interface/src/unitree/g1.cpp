@@ -66,10 +66,10 @@ static_assert(robot_hardware_interface::slots_are_valid(kJoints, G1_NUM_MOTOR), 
 
 // Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
-// fault_timeout_ms
+// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c
 constexpr RobotSpec kRobot{"robot_hardware_interface/unitree/G1HardwareInterface",
   "g1_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"eth0", true, 2000, 1, 100, 1000}};
+  {"eth0", true, 2000, 1, 100, 1000, 1000, 70, 85}};
 
 // transport_options: domain_id, lowcmd_topic, lowstate_topic, mode_pr (hg: 0 PR, 1 AB),
 // motor modes (go), release_motion_control, verify_state_crc

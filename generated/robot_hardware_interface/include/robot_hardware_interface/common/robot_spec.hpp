@@ -53,6 +53,9 @@ struct ParameterDefaults
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
   uint64_t fault_timeout_ms;
+  uint64_t diagnostics_period_ms;      // 0: no /diagnostics
+  uint64_t motor_temperature_warn_c;   // /diagnostics levels of the motors
+  uint64_t motor_temperature_error_c;
 };
 
 // Everything the driver core needs to know about one robot; each robot's source file defines one.

@@ -25,7 +25,7 @@ public:
   // for its first state starts now.
   void reset()
   {
-    activated_ns_ = steady_now_ns();
+    activated_ns_.store(steady_now_ns(), std::memory_order_relaxed);
     last_state_time_ns_.store(0);
     frame_counter_.store(0);
     frames_valid_ = false;
@@ -81,13 +81,14 @@ public:
     return age_ns > static_cast<int64_t>(timeout_ms) * 1000000;
   }
 
-  // Controller thread, at steady time `now_ns`: nanoseconds without a valid state, counted from
+  // Any thread, at steady time `now_ns`: nanoseconds without a valid state, counted from
   // the newest valid state or, before the first one, from the activation (a robot that never
   // answers is as dead as one that stopped answering); -1 before any state or activation.
   int64_t silence_ns(int64_t now_ns) const
   {
     const int64_t last_ns = last_state_time_ns_.load(std::memory_order_acquire);
-    const int64_t since_ns = last_ns > activated_ns_ ? last_ns : activated_ns_;
+    const int64_t activated_ns = activated_ns_.load(std::memory_order_relaxed);
+    const int64_t since_ns = last_ns > activated_ns ? last_ns : activated_ns;
     return since_ns == 0 ? -1 : now_ns - since_ns;
   }
 
@@ -100,7 +101,7 @@ public:
 private:
   std::atomic<int64_t> last_state_time_ns_{0};  // steady time of the newest valid state
   std::atomic<uint32_t> frame_counter_{0};      // decimation frame counter
-  int64_t activated_ns_{0};                     // steady time of the last reset()
+  std::atomic<int64_t> activated_ns_{0};        // steady time of the last reset() (any reader)
   bool frames_valid_{false};                    // state thread: the last parsed frame was valid
   HealthCounter invalid_states_;                // state thread: rejected frames
   uint64_t invalid_imu_count_{0};               // IMU callback: rejected samples

@@ -21,6 +21,8 @@
 #include <rclcpp/logging.hpp>
 #include <rclcpp/macros.hpp>
 #include <rclcpp/node.hpp>
+#include <rclcpp/publisher.hpp>
+#include <rclcpp/qos.hpp>
 #include <rclcpp/time.hpp>
 #include <rclcpp_lifecycle/state.hpp>
 
@@ -69,6 +71,7 @@ public:
   ~SystemDriver() override
   {
     // The transport's threads would otherwise keep calling into a destroyed object.
+    diagnostics_thread_.stop();
     transport_->shutdown();
   }
 
@@ -253,6 +256,68 @@ private:
     }
   }
 
+  // /diagnostics (diagnostic_msgs/DiagnosticArray) every diagnostics_period_ms from its own
+  // thread: "<hardware>: link", "<hardware>: safety" and, where the state carries motor health,
+  // "<hardware>: motors". Reads only atomics and its own buffer (HealthFacts): the hot paths never
+  // wait for it, and it may allocate.
+  bool start_diagnostics()
+  {
+    const DriverParameters & p = core_.parameters();
+    if (p.diagnostics_period_ms == 0) {
+      return true;
+    }
+    try {
+      diagnostics_publisher_ = node_->create_publisher<diagnostic_msgs::msg::DiagnosticArray>(
+        "/diagnostics", rclcpp::QoS(10));
+    } catch (const std::exception & e) {
+      RCLCPP_ERROR(core_.logger(), "creating the /diagnostics publisher failed: %s", e.what());
+      return false;
+    }
+    const std::string prefix = hardware_name_ + ": ";
+    diagnostics_message_.status.resize(motor_health_ != 0U ? 3 : 2);
+    const char * names[] = {"link", "safety", "motors"};
+    for (size_t i = 0; i < diagnostics_message_.status.size(); ++i) {
+      diagnostics_message_.status[i].name = prefix + names[i];
+      diagnostics_message_.status[i].hardware_id = hardware_name_;
+    }
+    diagnostics_joints_.assign(N, nullptr);
+    for (size_t i = 0; i < core_.spec().joint_count; ++i) {
+      diagnostics_joints_[core_.spec().joints[i].slot] = core_.spec().joints[i].name;
+    }
+    diagnostics_limits_ = DiagnosticsLimits{
+      p.state_timeout_ms, p.fault_timeout_ms, static_cast<double>(p.motor_temperature_warn_c),
+      static_cast<double>(p.motor_temperature_error_c)};
+    diagnostics_thread_.start(
+      std::chrono::milliseconds(p.diagnostics_period_ms), [this]() {publish_diagnostics();});
+    return true;
+  }
+
+  void publish_diagnostics()
+  {
+    const HealthFacts facts = core_.health_facts(
+      steady_now_ns(), active_.load(std::memory_order_relaxed));
+    for (auto & status : diagnostics_message_.status) {
+      status.values.clear();
+    }
+    DriverDiagnostics::describe_link(diagnostics_message_.status[0], facts, diagnostics_limits_);
+    DriverDiagnostics::describe_safety(diagnostics_message_.status[1], facts, previous_facts_);
+    previous_facts_ = facts;
+    if (motor_health_ != 0U) {
+      const MotorHealthFrame<N> * frame = core_.diagnostics_motor_health();
+      if (frame != nullptr) {
+        DriverDiagnostics::describe_motors(
+          diagnostics_message_.status[2], *frame, diagnostics_joints_, motor_health_,
+          diagnostics_limits_);
+      } else {
+        DriverDiagnostics::set(
+          diagnostics_message_.status[2], diagnostic_msgs::msg::DiagnosticStatus::WARN,
+          "no motor health from the robot yet");
+      }
+    }
+    diagnostics_message_.header.stamp = node_->now();
+    diagnostics_publisher_->publish(diagnostics_message_);
+  }
+
   // read() of a dead link: ERROR, said once per activation (read() runs at the control rate).
   ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_dead_link()
   {
@@ -302,6 +367,9 @@ private:
       }
     } catch (const std::exception & e) {
       RCLCPP_ERROR(log, "setting up the %s transport failed: %s", transport_->name(), e.what());
+      return CallbackReturn::ERROR;
+    }
+    if (!start_diagnostics()) {
       return CallbackReturn::ERROR;
     }
     const DriverParameters & p = core_.parameters();
@@ -462,6 +530,14 @@ private:
   std::string hardware_name_;     // the <ros2_control name>, for the operator's command line
   std::string health_gpio_;       // the <gpio> name of the health interfaces and the e-stop
   uint8_t motor_health_{0};       // the transport's MotorHealthField bits
+  // /diagnostics: its thread only (but start and stop)
+  typename rclcpp::Publisher<diagnostic_msgs::msg::DiagnosticArray>::SharedPtr
+    diagnostics_publisher_;
+  diagnostic_msgs::msg::DiagnosticArray diagnostics_message_;
+  std::vector<const char *> diagnostics_joints_;  // joint name per SDK slot, nullptr for none
+  DiagnosticsLimits diagnostics_limits_{};
+  HealthFacts previous_facts_;
+  PeriodicThread diagnostics_thread_;  // last: stopped first when destroyed
   bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
   std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
 };

@@ -1,0 +1,249 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_DIAGNOSTICS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_DIAGNOSTICS_HPP_
+
+#include <pthread.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <diagnostic_msgs/msg/diagnostic_array.hpp>
+#include <diagnostic_msgs/msg/diagnostic_status.hpp>
+#include <diagnostic_msgs/msg/key_value.hpp>
+
+#include "robot_hardware_interface/common/driver_health.hpp"
+
+namespace robot_hardware_interface
+{
+
+// What /diagnostics says about a driver, taken from values any thread may read (atomics and the
+// diagnostics' own motor health buffer), never from the controller thread's storage.
+struct HealthFacts
+{
+  bool active{false};           // between on_activate and on_deactivate / on_error
+  int64_t silence_ns{-1};       // without a valid state (since the newest, or the activation)
+  uint64_t invalid_states{0};
+  uint64_t stale_holds{0};
+  uint64_t rejected_commands{0};
+  uint64_t writer_overruns{0};
+  bool error_hold{false};       // on_error latched the damping-only hold
+  bool estop{false};            // the e-stop latched it
+};
+
+// The thresholds the levels come from (the driver's parameters).
+struct DiagnosticsLimits
+{
+  uint64_t state_timeout_ms;
+  uint64_t fault_timeout_ms;
+  double temperature_warn_c;
+  double temperature_error_c;
+};
+
+// The statuses of /diagnostics, as text (static members: no free function a vendor namespace
+// robot_hardware_interface::<vendor> could clash with). The /diagnostics thread only: it allocates.
+class DriverDiagnostics
+{
+public:
+  using Status = diagnostic_msgs::msg::DiagnosticStatus;
+
+  // "<hardware>: link": OK while the state is fresh, WARN while the driver holds a stale one (or
+  // an inactive robot is silent), ERROR once it is dead (fault_timeout_ms, active only).
+  static void describe_link(
+    Status & status, const HealthFacts & facts, const DiagnosticsLimits & limits)
+  {
+    const double age_ms =
+      facts.silence_ns < 0 ? -1.0 : static_cast<double>(facts.silence_ns) * 1e-6;
+    const std::string silence = "no valid state for " + number(age_ms, "%.0f") + " ms";
+    if (facts.silence_ns < 0) {
+      set(status, Status::WARN, "no state from the robot yet");
+    } else if (facts.active && age_ms > static_cast<double>(limits.fault_timeout_ms)) {
+      set(
+        status, Status::ERROR, "link lost: " + silence + " (fault_timeout_ms " +
+        std::to_string(limits.fault_timeout_ms) + ")");
+    } else if (age_ms > static_cast<double>(limits.state_timeout_ms)) {
+      set(
+        status, Status::WARN, std::string(
+          facts.active ? "state stale: joints held damping-only, " :
+          "robot silent (component inactive), ") + silence);
+    } else {
+      set(status, Status::OK, facts.active ? "state fresh" : "state fresh (inactive)");
+    }
+    add(status, "state age [ms]", number(age_ms));
+    add(status, "invalid state frames", std::to_string(facts.invalid_states));
+    add(status, "stale holds", std::to_string(facts.stale_holds));
+    add(status, "active", facts.active ? "true" : "false");
+  }
+
+  // "<hardware>: safety": ERROR while the driver holds every joint for good (e-stop, error), WARN
+  // when commands were rejected or sends came late since `previous`, OK otherwise.
+  static void describe_safety(
+    Status & status, const HealthFacts & facts, const HealthFacts & previous)
+  {
+    if (facts.estop) {
+      set(status, Status::ERROR, "e-stop: every joint held damping-only until re-activation");
+    } else if (facts.error_hold) {
+      set(status, Status::ERROR, "in error: every joint held damping-only until re-activation");
+    } else if (facts.rejected_commands > previous.rejected_commands) {
+      set(
+        status, Status::WARN,
+        std::to_string(facts.rejected_commands - previous.rejected_commands) +
+        " command cycle(s) held a joint: non-finite command or negative gain");
+    } else if (facts.writer_overruns > previous.writer_overruns) {
+      set(
+        status, Status::WARN,
+        std::to_string(facts.writer_overruns - previous.writer_overruns) + " late command send(s)");
+    } else {
+      set(status, Status::OK, "commands forwarded");
+    }
+    add(status, "e-stop", facts.estop ? "pressed" : "released");
+    add(status, "error hold", facts.error_hold ? "true" : "false");
+    add(status, "rejected command cycles", std::to_string(facts.rejected_commands));
+    add(status, "writer overruns", std::to_string(facts.writer_overruns));
+  }
+
+  // "<hardware>: motors": one entry per joint and field the state carries; ERROR when a motor is
+  // at or above temperature_error_c, WARN with an error code or at or above temperature_warn_c.
+  // `joints[slot]` names the joint of each SDK slot (nullptr: none); `fields`: MotorHealthField
+  // bits.
+  template<typename Frame>
+  static void describe_motors(
+    Status & status, const Frame & frame, const std::vector<const char *> & joints,
+    uint8_t fields, const DiagnosticsLimits & limits)
+  {
+    const char * hottest = nullptr;
+    double hottest_c = 0.0;
+    std::string in_error;
+    for (size_t slot = 0; slot < joints.size(); ++slot) {
+      if (joints[slot] == nullptr) {
+        continue;
+      }
+      const std::string name(joints[slot]);
+      if ((fields & kMotorTemperature) != 0U) {
+        add(status, name + " temperature [C]", number(frame.temperature[slot]));
+        if (hottest == nullptr || frame.temperature[slot] > hottest_c) {
+          hottest = joints[slot];
+          hottest_c = frame.temperature[slot];
+        }
+      }
+      if ((fields & kMotorVoltage) != 0U) {
+        add(status, name + " voltage [V]", number(frame.voltage[slot], "%.2f"));
+      }
+      if ((fields & kMotorErrorCode) != 0U) {
+        const std::string code = hex(frame.error_code[slot]);
+        add(status, name + " error code", code);
+        if (frame.error_code[slot] != 0.0) {
+          in_error += (in_error.empty() ? "" : ", ") + name + " (" + code + ")";
+        }
+      }
+    }
+    const std::string hot =
+      hottest == nullptr ? std::string() : std::string(hottest) + " at " + number(hottest_c) + " C";
+    if (hottest != nullptr && hottest_c >= limits.temperature_error_c) {
+      set(
+        status, Status::ERROR, "motor too hot: " + hot + " (motor_temperature_error_c " +
+        number(limits.temperature_error_c, "%.0f") + ")");
+    } else if (!in_error.empty()) {
+      set(status, Status::WARN, "motor error code: " + in_error);
+    } else if (hottest != nullptr && hottest_c >= limits.temperature_warn_c) {
+      set(
+        status, Status::WARN, "motor hot: " + hot + " (motor_temperature_warn_c " +
+        number(limits.temperature_warn_c, "%.0f") + ")");
+    } else {
+      set(status, Status::OK, hot.empty() ? "no motor error" : "hottest: " + hot);
+    }
+  }
+
+  static void set(Status & status, uint8_t level, const std::string & message)
+  {
+    status.level = level;
+    status.message = message;
+  }
+
+private:
+  static void add(Status & status, const std::string & key, const std::string & value)
+  {
+    diagnostic_msgs::msg::KeyValue pair;
+    pair.key = key;
+    pair.value = value;
+    status.values.push_back(std::move(pair));
+  }
+
+  static std::string number(double value, const char * format = "%.1f")
+  {
+    char text[64];
+    std::snprintf(text, sizeof(text), format, value);
+    return text;
+  }
+
+  static std::string hex(double code)
+  {
+    char text[32];
+    std::snprintf(text, sizeof(text), "0x%llx", static_cast<unsigned long long>(code));  // NOLINT
+    return text;
+  }
+};
+
+// A thread that calls `tick` every `period`, and at once when stopped no more. Its own thread, not
+// an executor's: the driver's node is spun only by topic transports, and publishing needs none.
+class PeriodicThread
+{
+public:
+  static constexpr const char * kThreadName = "rhi_diagnostics";  // at most 15 characters
+
+  PeriodicThread() = default;
+  PeriodicThread(const PeriodicThread &) = delete;
+  PeriodicThread & operator=(const PeriodicThread &) = delete;
+  ~PeriodicThread() {stop();}
+
+  void start(std::chrono::milliseconds period, std::function<void()> tick)
+  {
+    stop();
+    stopping_ = false;
+    thread_ = std::thread(
+      [this, period, tick = std::move(tick)]() {
+        pthread_setname_np(pthread_self(), kThreadName);  // tools (top -H, gdb) see what it is
+        std::unique_lock<std::mutex> lock(mutex_);
+        while (!stopping_) {
+          lock.unlock();
+          tick();
+          lock.lock();
+          wake_.wait_for(lock, period, [this]() {return stopping_;});
+        }
+      });
+  }
+
+  void stop() noexcept
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) {
+      thread_.join();
+    }
+  }
+
+private:
+  std::mutex mutex_;  // only this thread and stop(): never the controller or state threads
+  std::condition_variable wake_;
+  bool stopping_{false};
+  std::thread thread_;
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__DRIVER_DIAGNOSTICS_HPP_

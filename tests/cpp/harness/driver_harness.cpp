@@ -1327,6 +1327,11 @@ void test_faults() {
       check_hold(c, back, "first write() after recovery (layer 3)");
     }
   }
+  // Deactivated, the robot may go silent for good (powered down for the night): no fault either.
+  deactivate(rig);
+  std::this_thread::sleep_for(std::chrono::milliseconds(kFaultTimeoutMs + 50));
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK,
+        "read() of a deactivated component, silent for longer than fault_timeout_ms, returns OK");
   teardown(rig);
 }
 

@@ -94,6 +94,8 @@ public:
     transport_->stop();
     core_.reset_for_activation();
     link_dead_reported_ = false;
+    hot_motor_reported_ = false;
+    hot_slot_ = -1;  // the next motor health frame says again
     const CallbackReturn user = on_activate_hook();
     if (user != CallbackReturn::SUCCESS) {
       return user;
@@ -174,16 +176,22 @@ public:
     const auto start = std::chrono::steady_clock::now();
     const int64_t now_ns = steady_ns(start);
     core_.read_state();
-    // Only an active component faults: ros2_control also reads an inactive one, and a robot that
-    // is configured but not yet started may well be silent.
-    const bool link_dead = active_.load(std::memory_order_relaxed) && core_.link_dead(now_ns);
-    core_.read_health(now_ns, link_dead);
-    publish_state_values();
     if (motor_health_ != 0U && core_.read_motor_health()) {
+      hot_slot_ = slot_too_hot();
       publish_slow_state_values();
     }
+    // Only an active component faults: ros2_control also reads an inactive one, and a robot that
+    // is configured but not yet started may well be silent (or cooling down).
+    const bool active = active_.load(std::memory_order_relaxed);
+    const bool link_dead = active && core_.link_dead(now_ns);
+    const bool motor_too_hot = active && hot_slot_ >= 0;
+    core_.read_health(now_ns, link_dead || motor_too_hot);
+    publish_state_values();
     if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(link_dead)) {
       return report_dead_link();
+    }
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(motor_too_hot)) {
+      return report_hot_motor();
     }
     core_.monitor().check_read_latency(start);
     return return_type::OK;
@@ -315,6 +323,45 @@ private:
     }
     diagnostics_message_.header.stamp = node_->now();
     diagnostics_publisher_->publish(diagnostics_message_);
+  }
+
+  // read(), on a new motor health frame: the first driven slot at or above
+  // motor_temperature_error_c (where the state carries temperatures), -1 for none.
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE int slot_too_hot()
+  {
+    if ((motor_health_ & kMotorTemperature) == 0U) {
+      return -1;
+    }
+    const auto limit = static_cast<double>(core_.parameters().motor_temperature_error_c);
+    const MotorHealthFrame<N> & health = core_.motor_health();
+    for (const size_t slot : core_.slots().mapped_slots()) {
+      if (health.temperature[slot] >= limit) {
+        return static_cast<int>(slot);
+      }
+    }
+    return -1;
+  }
+
+  // read() of an active robot with a motor too hot: ERROR (ros2_control stops the controllers and
+  // on_error holds every joint damping-only), said once per activation.
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_hot_motor()
+  {
+    if (!hot_motor_reported_) {
+      hot_motor_reported_ = true;
+      const auto slot = static_cast<size_t>(hot_slot_);
+      const char * joint = "?";
+      for (size_t i = 0; i < core_.spec().joint_count; ++i) {
+        joint = core_.spec().joints[i].slot == slot ? core_.spec().joints[i].name : joint;
+      }
+      RCLCPP_ERROR(
+        core_.logger(), "motor too hot: %s (SDK slot %zu) at %.1f C, motor_temperature_error_c is "
+        "%" PRIu64 ": read() returns ERROR, ros2_control stops the controllers and the joints are "
+        "held damping-only. Let the motor cool, then set the component active again (ros2 control "
+        "set_hardware_component_state %s active)", joint, slot,
+        core_.motor_health().temperature[slot], core_.parameters().motor_temperature_error_c,
+        hardware_name_.c_str());
+    }
+    return return_type::ERROR;
   }
 
   // read() of a dead link: ERROR, said once per activation (read() runs at the control rate).
@@ -538,6 +585,8 @@ private:
   HealthFacts previous_facts_;
   PeriodicThread diagnostics_thread_;  // last: stopped first when destroyed
   bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
+  bool hot_motor_reported_{false};  // controller thread: read() said a motor is too hot
+  int hot_slot_{-1};                // controller thread: a motor at motor_temperature_error_c
   std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
 };
 

@@ -1403,6 +1403,44 @@ void check_motor_health_updates(Rig& rig) {
   check_motor_health(rig, later, "the next health frame");
 }
 
+// A motor at motor_temperature_error_c (80 here) faults an active robot like a dead link: read()
+// ERROR with one line naming the joint, on_error holds damping-only, and once the motor cooled,
+// configure + activate bring it back.
+void check_hot_motor_faults(Rig& rig) {
+  const auto hot_state = [](uint32_t code, double hot_c) {
+    StateFrame f = coded_state(code);
+    f.temperature.fill(40.0);
+    f.temperature[kJoints[0].slot] = hot_c;
+    return f;
+  };
+  const ControllerCommand cmd = distinct_command(2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));  // a motor health frame is due
+  cycle(rig, 700, cmd);
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK, "read() with every motor at 40 C");
+  rhi_fake::logs::clear();
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));
+  rig.t.deliver_state(hot_state(701, 80.0));
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::ERROR,
+        "read() with %s at motor_temperature_error_c (80 C) returns ERROR", kJoints[0].name);
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::ERROR, "and keeps returning ERROR");
+  CHECK_EQ(rig.ifs.health[kFault]->get(), 1.0, "the health GPIO's fault while a motor is too hot");
+  CHECK_EQ(rhi_fake::logs::count_containing("too hot", Severity::Error), 1U, "one error line for the hot motor");
+  CHECK(rhi_fake::logs::contains(kJoints[0].name, Severity::Error), "the error line names the joint");
+  enter_error(rig);
+  rig.t.tick_writer();
+  CommandFrame c;
+  if (last_command(rig.t, c, "hot motor, after on_error")) {
+    check_damping_only(c, "hot motor, after on_error");
+  }
+  if (!recover(rig)) {
+    return;
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));
+  rig.t.deliver_state(hot_state(702, 79.0));  // cooled below the limit
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK,
+        "after the motor cooled, configure + activate: read() returns OK");
+}
+
 void check_health_description_refusals() {
   // A GPIO interface the driver does not have, or a second GPIO: ERROR naming it, never a throw.
   const hardware_interface::HardwareInfo info = make_hardware_info();
@@ -1455,6 +1493,8 @@ void test_health() {
   info.hardware_parameters["state_timeout_ms"] = std::to_string(kStateTimeoutMs);
   info.hardware_parameters["fault_timeout_ms"] = "60000";
   info.hardware_parameters["state_decimation"] = "1";  // every frame parsed: every invalid one counted
+  info.hardware_parameters["motor_temperature_warn_c"] = "60";
+  info.hardware_parameters["motor_temperature_error_c"] = "80";
   if (!setup(rig, info)) {
     teardown(rig);
     return;
@@ -1606,6 +1646,13 @@ void test_health() {
   }
   if (last_command(t, c, "activated with the e-stop pressed")) {
     check_damping_only(c, "activated with the e-stop pressed");
+  }
+  if (kMotorHealth[0]) {
+    rig.ifs.estop->set(0.0);
+    deactivate(rig);
+    if (activate(rig)) {
+      check_hot_motor_faults(rig);
+    }
   }
   teardown(rig);
 }

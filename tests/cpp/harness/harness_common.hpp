@@ -106,7 +106,7 @@ inline StateFrame distinct_state(uint32_t frame) {
   s.acc = {0.375, 9.8125, -4.5 - frame};
   s.sequence = frame;
   for (size_t i = 0; i < N; ++i) {
-    s.temperature[i] = static_cast<double>(30 + (i + frame) % 60);
+    s.temperature[i] = static_cast<double>(30 + (i + frame) % 25);  // below every warn threshold
     s.voltage[i] = 24.0 + 0.25 * static_cast<double>((i + 3 * frame) % 32);
     s.error_code[i] = static_cast<double>((7 * i + 13 * frame) % 4096);
   }

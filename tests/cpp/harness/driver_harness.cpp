@@ -1724,6 +1724,70 @@ void deliver_health(Rig& rig, const StateFrame& f) {
   rig.hw->read(kTime, kPeriod);
 }
 
+#if RHI_FAKE_HI_MAJOR >= 5
+// ros2_control 5.10+ publishes control_msgs/HardwareStatus on ~/hardware_status when the
+// description sets status_publish_rate; the driver fills it with its health.
+bool next_hardware_status(control_msgs::msg::HardwareStatus& out, const char* what) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  std::string topic;
+  uint64_t before = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    rhi_fake::ros::fire_timers();  // the controller manager's executor runs the status timer
+    for (const auto& t : rhi_fake::ros::topics()) {
+      const std::string suffix = "/hardware_status";
+      if (t.name.size() > suffix.size() && t.name.compare(t.name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+        if (topic.empty()) {
+          topic = t.name;
+          before = t.publish_count;
+        } else if (t.name == topic && t.publish_count >= before + 2) {
+          return rhi_fake::ros::last_published<control_msgs::msg::HardwareStatus>(topic, out);
+        }
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  CHECK(false, "%s: no ~/hardware_status message within 5 s", what);
+  return false;
+}
+
+void check_hardware_status() {
+  using State = control_msgs::msg::GenericHardwareState;
+  fresh_process();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["status_publish_rate"] = "50";
+  if (!setup(rig, info) || !activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  const ControllerCommand cmd = distinct_command(3);
+  cycle(rig, 1, cmd);
+  control_msgs::msg::HardwareStatus status;
+  if (next_hardware_status(status, "healthy robot")) {
+    CHECK(status.hardware_id == info.name, "hardware_status.hardware_id is the component ('%s')",
+          status.hardware_id.c_str());
+    CHECK_EQ(status.hardware_device_states.size(), 1U, "one device: the robot");
+    if (status.hardware_device_states.size() == 1 && status.hardware_device_states[0].hardware_status.size() == 1) {
+      const State& state = status.hardware_device_states[0].hardware_status[0];
+      CHECK_EQ(static_cast<int>(state.health_status), static_cast<int>(State::HEALTH_OK), "health of a fresh robot");
+      CHECK(!state.state_details.empty() && state.state_details[0].key == "state_age_ms",
+            "the details start with state_age_ms");
+    }
+  }
+  rig.ifs.estop->set(1.0);
+  cycle(rig, 2, cmd);
+  if (next_hardware_status(status, "e-stop") && status.hardware_device_states.size() == 1 &&
+      status.hardware_device_states[0].hardware_status.size() == 1) {
+    const State& state = status.hardware_device_states[0].hardware_status[0];
+    CHECK_EQ(static_cast<int>(state.health_status), static_cast<int>(State::HEALTH_ERROR), "health with the e-stop");
+    CHECK(std::find(state.error_domain.begin(), state.error_domain.end(), State::EMERGENCY_STOP_SW) !=
+              state.error_domain.end(),
+          "error_domain names the software e-stop");
+  }
+  teardown(rig);
+}
+#endif
+
 void test_diagnostics() {
   rhi_check::Section section("diagnostics");
   fresh_process();
@@ -1840,6 +1904,9 @@ void test_diagnostics() {
     CHECK_EQ(rhi_fake::ros::publish_count(kDiagnosticsTopic), 0U, "diagnostics_period_ms 0 publishes nothing");
   }
   teardown(quiet);
+#if RHI_FAKE_HI_MAJOR >= 5
+  check_hardware_status();
+#endif
 }
 
 #if defined(RHI_TRANSPORT_UNITREE_DDS)

@@ -14,6 +14,8 @@
 //     HardwareComponentInterfaceParams &); the framework creates the handles from the description
 //     (on_export_*_interfaces()) and owns their values; the component gets its logger from it.
 //     The old on_init and the raw-pointer handles are deprecated (4.x, 5.x) or gone (6.x).
+//   - 5.10+ (Kilted, Lyrical, Rolling): the HardwareStatus hooks, which the driver fills through
+//     init_status() / update_status().
 // Drivers derive from SystemInterfaceAdapter, keep their values in plain doubles, and call
 // publish_state_values() / fetch_command_values() / publish_command_values() where the values
 // change hands: no-ops with raw pointers, a try-lock copy per interface with framework handles
@@ -45,6 +47,17 @@
 #endif
 #ifndef ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
 #define ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES 0
+#endif
+
+// From 5.10 on (Kilted, Lyrical, Rolling) the framework publishes control_msgs/HardwareStatus on
+// ~/hardware_status at the <hardware> parameter status_publish_rate, filled by the component.
+#if defined(HARDWARE_INTERFACE_VERSION_GTE)
+#if HARDWARE_INTERFACE_VERSION_GTE(5, 10, 0)
+#define ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS 1
+#endif
+#endif
+#ifndef ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
+#define ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS 0
 #endif
 
 // From 3.x on the ResourceManager takes the controller manager's clock and logger.
@@ -154,7 +167,26 @@ public:
   }
 #endif
 
+#if ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
+  // Called by init() before on_init (info_ is parsed), and by the framework's status timer.
+  CallbackReturn init_hardware_status_message(control_msgs::msg::HardwareStatus & msg) override
+  {
+    return init_status(info_.name, msg);
+  }
+
+  return_type update_hardware_status_message(control_msgs::msg::HardwareStatus & msg) override
+  {
+    return update_status(msg);
+  }
+#endif
+
 protected:
+#if ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
+  virtual CallbackReturn init_status(
+    const std::string & hardware_name, control_msgs::msg::HardwareStatus & msg) = 0;
+  virtual return_type update_status(control_msgs::msg::HardwareStatus & msg) = 0;
+#endif
+
   // `logger` is the logger ros2_control gives the component (its own one on Humble).
   explicit SystemInterfaceAdapter(const rclcpp::Logger & logger)
   : logger_(logger)

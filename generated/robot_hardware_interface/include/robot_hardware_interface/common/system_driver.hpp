@@ -7,9 +7,11 @@
 #ifndef ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
 #define ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <string>
@@ -263,6 +265,71 @@ private:
         health_gpio_.c_str(), kEstopCommandInterface, hardware_name_.c_str());
     }
   }
+
+#if ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
+  // ros2_control's ~/hardware_status (5.10+, when status_publish_rate is set): one device, the
+  // robot, whose one state is the driver's health. Filled from HealthFacts (atomics) into strings
+  // reserved here, so the update allocates nothing, whichever thread the framework calls it from.
+  CallbackReturn init_status(
+    const std::string & hardware_name, control_msgs::msg::HardwareStatus & msg) override
+  {
+    msg.hardware_id = hardware_name;
+    msg.hardware_device_states.resize(1);
+    control_msgs::msg::HardwareDeviceStatus & device = msg.hardware_device_states.front();
+    device.device_id = hardware_name;
+    device.hardware_status.resize(1);
+    control_msgs::msg::GenericHardwareState & state = device.hardware_status.front();
+    state.error_domain.reserve(2);
+    state.state_details.resize(kStatusDetails.size());
+    for (size_t i = 0; i < kStatusDetails.size(); ++i) {
+      state.state_details[i].key = kStatusDetails[i];
+      state.state_details[i].value.reserve(32);
+    }
+    return CallbackReturn::SUCCESS;
+  }
+
+  return_type update_status(control_msgs::msg::HardwareStatus & msg) override
+  {
+    using State = control_msgs::msg::GenericHardwareState;
+    if (msg.hardware_device_states.size() != 1 ||
+      msg.hardware_device_states.front().hardware_status.size() != 1)
+    {
+      return return_type::ERROR;
+    }
+    State & state = msg.hardware_device_states.front().hardware_status.front();
+    const HealthFacts facts = core_.health_facts(
+      steady_now_ns(), active_.load(std::memory_order_relaxed));
+    const DriverParameters & p = core_.parameters();
+    const double age_ms =
+      facts.silence_ns < 0 ? -1.0 : static_cast<double>(facts.silence_ns) * 1e-6;
+    const bool dead = facts.active && age_ms > static_cast<double>(p.fault_timeout_ms);
+    const bool no_state = facts.silence_ns < 0;
+    const bool stale = no_state || age_ms > static_cast<double>(p.state_timeout_ms);
+    state.health_status = facts.estop || facts.error_hold || dead ? State::HEALTH_ERROR :
+      stale ? State::HEALTH_WARNING : State::HEALTH_OK;
+    state.error_domain.clear();
+    if (facts.estop) {
+      state.error_domain.push_back(State::EMERGENCY_STOP_SW);
+    }
+    if (dead) {
+      state.error_domain.push_back(State::ERROR_HW);
+    }
+    const double values[] = {
+      age_ms, static_cast<double>(facts.invalid_states), static_cast<double>(facts.stale_holds),
+      static_cast<double>(facts.rejected_commands), static_cast<double>(facts.writer_overruns),
+      facts.estop ? 1.0 : 0.0};
+    for (size_t i = 0; i < kStatusDetails.size() && i < state.state_details.size(); ++i) {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.1f", values[i]);
+      state.state_details[i].value.assign(text);
+    }
+    return return_type::OK;
+  }
+
+  static constexpr std::array<const char *, 6> kStatusDetails = {
+    "state_age_ms", "invalid_states", "stale_holds", "rejected_commands", "writer_overruns",
+    "estop"};
+#endif
 
   // /diagnostics (diagnostic_msgs/DiagnosticArray) every diagnostics_period_ms from its own
   // thread: "<hardware>: link", "<hardware>: safety" and, where the state carries motor health,

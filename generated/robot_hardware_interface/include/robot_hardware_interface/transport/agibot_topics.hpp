@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <aimdk_msgs/msg/joint_command_array.hpp>
@@ -295,7 +297,7 @@ private:
         state.q[slot] = static_cast<T>(joint.position);
         state.dq[slot] = static_cast<T>(joint.velocity);
         state.tau[slot] = static_cast<T>(joint.effort);
-        health.error_code[slot] = static_cast<double>(joint.error_code);
+        store_error_code(health, slot, joint);
       };
     for (size_t i = 0; i < remembered; ++i) {
       if (entry_slots[i] != kNoSlot) {
@@ -324,6 +326,26 @@ private:
       core_->publish_state(oldest_group_time());
     }
     core_->monitor().check_state_latency(start);
+  }
+
+  // hal/msg/JointState v1.0.0 ends with `uint16 error_code`; AimDK's later documented JointState
+  // has motor temperatures instead (SDK_FACTS.md): without the field the interface stays 0.
+  template<typename Joint, typename = void>
+  struct HasErrorCode : std::false_type {};
+  template<typename Joint>
+  struct HasErrorCode<Joint, std::void_t<decltype(std::declval<const Joint &>().error_code)>>
+    : std::true_type {};
+
+  template<typename Health, typename Joint>
+  static void store_error_code(Health & health, size_t slot, const Joint & joint)
+  {
+    if constexpr (HasErrorCode<Joint>::value) {
+      health.error_code[slot] = static_cast<double>(joint.error_code);
+    } else {
+      static_cast<void>(health);
+      static_cast<void>(slot);
+      static_cast<void>(joint);
+    }
   }
 
   void collect_motor_health(Group & group)

@@ -150,11 +150,14 @@ public:
     guard_.reset();
   }
 
-  // read(), at steady time `now_ns`: the link is dead, no valid state for more than
-  // fault_timeout_ms since the newest one or, before the first, since the activation.
-  bool link_dead(int64_t now_ns) const
+  // Any thread, at steady time `now_ns`: nanoseconds without a valid state since the newest one
+  // or, before the first, since the activation (-1 before either).
+  int64_t silence_ns(int64_t now_ns) const {return freshness_.silence_ns(now_ns);}
+
+  // read(): after `silence_ns` the link is dead (no valid state for more than fault_timeout_ms).
+  bool link_dead(int64_t silence_ns) const
   {
-    return freshness_.silent(parameters_.fault_timeout_ms, now_ns);
+    return HealthFacts::silent_for(silence_ns, parameters_.fault_timeout_ms);
   }
 
   // on_error: the command writer holds every joint damping-only until the next activation.
@@ -193,17 +196,17 @@ public:
     return motor_health_diagnostics_buffer_.get_data();
   }
 
-  // read(), at steady time `now_ns`: the health GPIO's states (`link_dead`: read() returns ERROR).
-  void read_health(int64_t now_ns, bool link_dead)
+  // read(): the health GPIO's states, `silence_ns` after the newest state (`fault`: read()
+  // returns ERROR, the link is dead or a motor too hot).
+  void read_health(int64_t silence_ns, bool fault)
   {
-    const int64_t silence_ns = freshness_.silence_ns(now_ns);
-    health_.state_age_ms = silence_ns < 0 ? -1.0 : static_cast<double>(silence_ns) * 1e-6;
+    health_.state_age_ms = HealthFacts::age_ms_of(silence_ns);
     health_.invalid_states = freshness_.invalid_states().value();
     health_.stale_holds = guard_.stale_holds().value();
     health_.rejected_commands = guard_.rejected_commands().value();
     health_.writer_overruns = monitor_.writer_overruns().value();
     const auto latched = guard_.latched();
-    health_.fault = link_dead || latched != CommandGuard<N, T>::HoldReason::kNone ? 1.0 : 0.0;
+    health_.fault = fault || latched != CommandGuard<N, T>::HoldReason::kNone ? 1.0 : 0.0;
     health_.estop = latched == CommandGuard<N, T>::HoldReason::kEstop ? 1.0 : 0.0;
   }
 

@@ -184,10 +184,11 @@ public:
     }
     // Only an active component faults: ros2_control also reads an inactive one, and a robot that
     // is configured but not yet started may well be silent (or cooling down).
+    const int64_t silence_ns = core_.silence_ns(now_ns);  // once: the fault and the GPIO
     const bool active = active_.load(std::memory_order_relaxed);
-    const bool link_dead = active && core_.link_dead(now_ns);
+    const bool link_dead = active && core_.link_dead(silence_ns);
     const bool motor_too_hot = active && hot_slot_ >= 0;
-    core_.read_health(now_ns, link_dead || motor_too_hot);
+    core_.read_health(silence_ns, link_dead || motor_too_hot);
     publish_state_values();
     if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(link_dead)) {
       return report_dead_link();
@@ -299,11 +300,8 @@ private:
     const HealthFacts facts = core_.health_facts(
       steady_now_ns(), active_.load(std::memory_order_relaxed));
     const DriverParameters & p = core_.parameters();
-    const double age_ms =
-      facts.silence_ns < 0 ? -1.0 : static_cast<double>(facts.silence_ns) * 1e-6;
-    const bool dead = facts.active && age_ms > static_cast<double>(p.fault_timeout_ms);
-    const bool no_state = facts.silence_ns < 0;
-    const bool stale = no_state || age_ms > static_cast<double>(p.state_timeout_ms);
+    const bool dead = facts.link_dead(p.fault_timeout_ms);
+    const bool stale = facts.no_state() || facts.stale(p.state_timeout_ms);
     state.health_status = facts.estop || facts.error_hold || dead ? State::HEALTH_ERROR :
       stale ? State::HEALTH_WARNING : State::HEALTH_OK;
     state.error_domain.clear();
@@ -314,9 +312,9 @@ private:
       state.error_domain.push_back(State::ERROR_HW);
     }
     const double values[] = {
-      age_ms, static_cast<double>(facts.invalid_states), static_cast<double>(facts.stale_holds),
-      static_cast<double>(facts.rejected_commands), static_cast<double>(facts.writer_overruns),
-      facts.estop ? 1.0 : 0.0};
+      facts.age_ms(), static_cast<double>(facts.invalid_states),
+      static_cast<double>(facts.stale_holds), static_cast<double>(facts.rejected_commands),
+      static_cast<double>(facts.writer_overruns), facts.estop ? 1.0 : 0.0};
     for (size_t i = 0; i < kStatusDetails.size() && i < state.state_details.size(); ++i) {
       char text[32];
       std::snprintf(text, sizeof(text), "%.1f", values[i]);
@@ -354,10 +352,6 @@ private:
       diagnostics_message_.status[i].name = prefix + names[i];
       diagnostics_message_.status[i].hardware_id = hardware_name_;
     }
-    diagnostics_joints_.assign(N, nullptr);
-    for (size_t i = 0; i < core_.spec().joint_count; ++i) {
-      diagnostics_joints_[core_.spec().joints[i].slot] = core_.spec().joints[i].name;
-    }
     diagnostics_limits_ = DiagnosticsLimits{
       p.state_timeout_ms, p.fault_timeout_ms, static_cast<double>(p.motor_temperature_warn_c),
       static_cast<double>(p.motor_temperature_error_c)};
@@ -380,7 +374,7 @@ private:
       const MotorHealthFrame<N> * frame = core_.diagnostics_motor_health();
       if (frame != nullptr) {
         DriverDiagnostics::describe_motors(
-          diagnostics_message_.status[2], *frame, diagnostics_joints_, motor_health_,
+          diagnostics_message_.status[2], *frame, core_.slots().slot_joint_names(), motor_health_,
           diagnostics_limits_);
       } else {
         DriverDiagnostics::set(
@@ -416,10 +410,7 @@ private:
     if (!hot_motor_reported_) {
       hot_motor_reported_ = true;
       const auto slot = static_cast<size_t>(hot_slot_);
-      const char * joint = "?";
-      for (size_t i = 0; i < core_.spec().joint_count; ++i) {
-        joint = core_.spec().joints[i].slot == slot ? core_.spec().joints[i].name : joint;
-      }
+      const char * joint = core_.slots().slot_joint_names()[slot];
       RCLCPP_ERROR(
         core_.logger(), "motor too hot: %s (SDK slot %zu) at %.1f C, motor_temperature_error_c is "
         "%" PRIu64 ": read() returns ERROR, ros2_control stops the controllers and the joints are "
@@ -647,7 +638,6 @@ private:
   typename rclcpp::Publisher<diagnostic_msgs::msg::DiagnosticArray>::SharedPtr
     diagnostics_publisher_;
   diagnostic_msgs::msg::DiagnosticArray diagnostics_message_;
-  std::vector<const char *> diagnostics_joints_;  // joint name per SDK slot, nullptr for none
   DiagnosticsLimits diagnostics_limits_{};
   HealthFacts previous_facts_;
   PeriodicThread diagnostics_thread_;  // last: stopped first when destroyed

@@ -30,20 +30,6 @@
 namespace robot_hardware_interface
 {
 
-// What /diagnostics says about a driver, taken from values any thread may read (atomics and the
-// diagnostics' own motor health buffer), never from the controller thread's storage.
-struct HealthFacts
-{
-  bool active{false};           // between on_activate and on_deactivate / on_error
-  int64_t silence_ns{-1};       // without a valid state (since the newest, or the activation)
-  uint64_t invalid_states{0};
-  uint64_t stale_holds{0};
-  uint64_t rejected_commands{0};
-  uint64_t writer_overruns{0};
-  bool error_hold{false};       // on_error latched the damping-only hold
-  bool estop{false};            // the e-stop latched it
-};
-
 // The thresholds the levels come from (the driver's parameters).
 struct DiagnosticsLimits
 {
@@ -65,16 +51,15 @@ public:
   static void describe_link(
     Status & status, const HealthFacts & facts, const DiagnosticsLimits & limits)
   {
-    const double age_ms =
-      facts.silence_ns < 0 ? -1.0 : static_cast<double>(facts.silence_ns) * 1e-6;
+    const double age_ms = facts.age_ms();
     const std::string silence = "no valid state for " + number(age_ms, "%.0f") + " ms";
-    if (facts.silence_ns < 0) {
+    if (facts.no_state()) {
       set(status, Status::WARN, "no state from the robot yet");
-    } else if (facts.active && age_ms > static_cast<double>(limits.fault_timeout_ms)) {
+    } else if (facts.link_dead(limits.fault_timeout_ms)) {
       set(
         status, Status::ERROR, "link lost: " + silence + " (fault_timeout_ms " +
         std::to_string(limits.fault_timeout_ms) + ")");
-    } else if (age_ms > static_cast<double>(limits.state_timeout_ms)) {
+    } else if (facts.stale(limits.state_timeout_ms)) {
       set(
         status, Status::WARN, std::string(
           facts.active ? "state stale: joints held damping-only, " :
@@ -117,18 +102,18 @@ public:
 
   // "<hardware>: motors": one entry per joint and field the state carries; ERROR when a motor is
   // at or above temperature_error_c, WARN with an error code or at or above temperature_warn_c.
-  // `joints[slot]` names the joint of each SDK slot (nullptr: none); `fields`: MotorHealthField
-  // bits.
-  template<typename Frame>
+  // `joints[slot]` names the joint of each SDK slot ("": none, SlotTable::slot_joint_names());
+  // `fields`: MotorHealthField bits.
+  template<typename Frame, typename JointNames>
   static void describe_motors(
-    Status & status, const Frame & frame, const std::vector<const char *> & joints,
-    uint8_t fields, const DiagnosticsLimits & limits)
+    Status & status, const Frame & frame, const JointNames & joints, uint8_t fields,
+    const DiagnosticsLimits & limits)
   {
     const char * hottest = nullptr;
     double hottest_c = 0.0;
     std::string in_error;
     for (size_t slot = 0; slot < joints.size(); ++slot) {
-      if (joints[slot] == nullptr) {
+      if (joints[slot] == nullptr || joints[slot][0] == '\0') {
         continue;
       }
       const std::string name(joints[slot]);

@@ -39,6 +39,40 @@ private:
   std::atomic<uint64_t> value_{0};
 };
 
+// The driver's health as any thread may read it (atomics only, never the controller thread's
+// storage): what /diagnostics and ros2_control's hardware status report, and the one place that
+// says when a silence is stale or dead.
+struct HealthFacts
+{
+  bool active{false};           // between on_activate and on_deactivate / on_error
+  int64_t silence_ns{-1};       // without a valid state (since the newest, or the activation)
+  uint64_t invalid_states{0};
+  uint64_t stale_holds{0};
+  uint64_t rejected_commands{0};
+  uint64_t writer_overruns{0};
+  bool error_hold{false};       // on_error latched the damping-only hold
+  bool estop{false};            // the e-stop latched it
+
+  // Milliseconds without a valid state, -1 before any state or activation.
+  static double age_ms_of(int64_t silence_ns)
+  {
+    return silence_ns < 0 ? -1.0 : static_cast<double>(silence_ns) * 1e-6;
+  }
+  double age_ms() const {return age_ms_of(silence_ns);}
+  bool no_state() const {return silence_ns < 0;}
+  // No valid state for more than `timeout_ms`: stale after state_timeout_ms, dead after
+  // fault_timeout_ms (an active component only: an inactive one may be silent).
+  static bool silent_for(int64_t silence_ns, uint64_t timeout_ms)
+  {
+    return silence_ns > static_cast<int64_t>(timeout_ms) * 1000000;
+  }
+  bool stale(uint64_t state_timeout_ms) const {return silent_for(silence_ns, state_timeout_ms);}
+  bool link_dead(uint64_t fault_timeout_ms) const
+  {
+    return active && silent_for(silence_ns, fault_timeout_ms);
+  }
+};
+
 // The driver's health as ros2_control interfaces of the robot's health GPIO
 // (<gpio name="<hardware>_health"> of the description): what an operator or a controller needs to
 // see a dying link or a stopped robot. Controller thread only: read() fills the states, write()

@@ -92,12 +92,6 @@ public:
     return since_ns == 0 ? -1 : now_ns - since_ns;
   }
 
-  // Controller thread: no valid state for more than `timeout_ms` (see silence_ns()).
-  bool silent(uint64_t timeout_ms, int64_t now_ns) const
-  {
-    return silence_ns(now_ns) > static_cast<int64_t>(timeout_ms) * 1000000;
-  }
-
 private:
   std::atomic<int64_t> last_state_time_ns_{0};  // steady time of the newest valid state
   std::atomic<uint32_t> frame_counter_{0};      // decimation frame counter

@@ -43,6 +43,10 @@ EXPECTED_FIELDS = {
     "interface_protocol/ImuInfo": [("header", "std_msgs/Header"), ("quaternion", "geometry_msgs/Quaternion"),
                                    ("rpy", "geometry_msgs/Vector3"), ("linear_acceleration", "geometry_msgs/Vector3"),
                                    ("angular_velocity", "geometry_msgs/Vector3")],
+    # SDK_FACTS.md names MotorDebug without its fields: these are engineai_ros2_workspace's .msg (the native SDK's
+    # is float32 with more fields; the drivers read motor_temperature only)
+    "interface_protocol/MotorDebug": [("tau_cmd", "float64[]"), ("mos_temperature", "float64[]"),
+                                      ("motor_temperature", "float64[]")],
     # constants only: rosidl adds its placeholder member
     "interface_protocol/ParallelParserType": [("structure_needs_at_least_one_member", "uint8")],
 }

@@ -421,6 +421,7 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr char kStateTopic[] = {_c_string(groups[0][4])};",
         # each transport's options carry only its own fields (transports/<name>/): the others are unused
         f"inline constexpr char kImuTopic[] = {_c_string(getattr(opts, 'imu_topic', ''))};",
+        f"inline constexpr char kMotorDebugTopic[] = {_c_string(getattr(opts, 'motor_debug_topic', ''))};",
         f"inline constexpr uint8_t kModePr = {getattr(opts, 'mode_pr', 0)};",
         f"inline constexpr uint8_t kParallelParserType = {getattr(opts, 'parallel_parser_type', 0)};",
         "// unitree go: MotorCmd_.mode of every LowCmd_ slot (the YAML's motor_modes, else the known robot's)",

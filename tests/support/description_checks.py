@@ -27,14 +27,14 @@ HEALTH_STATES = ["state_age_ms", "invalid_states", "stale_holds", "rejected_comm
 def motor_health(model: RobotModel) -> list[str]:
     """The motor health each robot's state message carries, from SDK_FACTS.md (written out here, not taken
     from rhi_gen): hg MotorState_ temperature / vol / motorstate, go MotorState_ temperature, AimDK hal
-    JointState v1.0.0 error_code; the other transports none."""
+    JointState v1.0.0 error_code, EngineAI MotorDebug motor_temperature; the other transports none."""
     if model.transport == "unitree_dds":
         from rhi_gen.transports.unitree_dds import UnitreeDdsOptions
 
         assert isinstance(model.transport_options, UnitreeDdsOptions)
         family = model.transport_options.family
         return ["temperature", "voltage", "error_code"] if family == "hg" else ["temperature"]
-    return ["error_code"] if model.transport == "agibot_topics" else []
+    return {"agibot_topics": ["error_code"], "engineai_topics": ["temperature"]}.get(model.transport, [])
 
 
 def params(element: etree._Element) -> dict[str, str]:

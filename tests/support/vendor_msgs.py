@@ -78,7 +78,8 @@ PACKAGES = (
                    "hal/msg/JointStateArray.msg", "hal/msg/DomainErrorState.msg", "common/msg/MessageHeader.msg"),
                   ("builtin_interfaces",), ("agibot_topics",), in_repo=False),
     VendorPackage("interface_protocol", "interface_protocol/engineai_ros2_workspace",
-                  ("msg/JointCommand.msg", "msg/JointState.msg", "msg/ImuInfo.msg", "msg/ParallelParserType.msg"),
+                  ("msg/JointCommand.msg", "msg/JointState.msg", "msg/ImuInfo.msg", "msg/ParallelParserType.msg",
+                   "msg/MotorDebug.msg"),
                   ("builtin_interfaces", "std_msgs", "geometry_msgs"), ("engineai_topics",), in_repo=True),
 )
 

@@ -7,7 +7,8 @@
 #define ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_HPP_
 
 // EngineAI robots over ROS 2 topics (interface_protocol): JointCommand / JointState arrays indexed
-// by motor slot, ImuInfo for the IMU. The robot must be in joint_bridge mode.
+// by motor slot, ImuInfo for the IMU, MotorDebug for the motor temperatures. The robot must be in
+// joint_bridge mode.
 
 #include <chrono>
 #include <cinttypes>
@@ -17,6 +18,7 @@
 #include <interface_protocol/msg/imu_info.hpp>
 #include <interface_protocol/msg/joint_command.hpp>
 #include <interface_protocol/msg/joint_state.hpp>
+#include <interface_protocol/msg/motor_debug.hpp>
 #include <rclcpp/logging.hpp>
 #include <rclcpp/node.hpp>
 #include <rclcpp/publisher.hpp>
@@ -36,6 +38,7 @@ struct EngineaiTopicsOptions
   const char * command_topic;
   const char * state_topic;
   const char * imu_topic;
+  const char * motor_debug_topic;
   uint8_t parallel_parser_type;  // 0 CLASSIC_PARSER, 1 RL_PARSER
   TopicQos qos;
 };
@@ -46,6 +49,7 @@ class EngineaiTopicsTransport final : public DriverTransport<N, T>
   using JointCommand = interface_protocol::msg::JointCommand;
   using JointState = interface_protocol::msg::JointState;
   using ImuInfo = interface_protocol::msg::ImuInfo;
+  using MotorDebug = interface_protocol::msg::MotorDebug;
 
 public:
   explicit EngineaiTopicsTransport(const EngineaiTopicsOptions & options)
@@ -54,6 +58,7 @@ public:
   }
 
   const char * name() const override {return "engineai_topics";}
+  uint8_t motor_health() const override {return kMotorTemperature;}
 
   bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) override
   {
@@ -79,6 +84,8 @@ public:
           publish_ros_imu(*core_, msg.quaternion, msg.angular_velocity, msg.linear_acceleration);
         });
     }
+    motor_debug_subscription_ = node->create_subscription<MotorDebug>(
+      options_.motor_debug_topic, qos, [this](const MotorDebug & msg) {on_motor_debug(msg);});
     executor_.configure(node);
     return true;
   }
@@ -133,6 +140,40 @@ private:
     core_->monitor().check_state_latency(start);
   }
 
+  // Executor thread: MotorDebug (50 Hz or more), motor_temperature indexed by motor slot like
+  // JointState. Both interface_protocol versions have it (float64 in engineai_ros2_workspace,
+  // float32 in the native SDK). A message too short or with a non-finite temperature is dropped:
+  // the last good temperatures stay.
+  void on_motor_debug(const MotorDebug & msg)
+  {
+    const int64_t now_ns = steady_ns(std::chrono::steady_clock::now());
+    if (!core_->motor_health_due(now_ns)) {
+      return;
+    }
+    if (msg.motor_temperature.size() < N) {
+      reject_motor_debug("motor_temperature shorter than the motor count");
+      return;
+    }
+    for (const size_t slot : core_->slots().mapped_slots()) {
+      if (!all_finite(msg.motor_temperature[slot])) {
+        reject_motor_debug("non-finite temperature in a driven motor slot");
+        return;
+      }
+    }
+    auto & health = core_->motor_health_frame();
+    for (const size_t slot : core_->slots().mapped_slots()) {
+      health.temperature[slot] = static_cast<double>(msg.motor_temperature[slot]);
+    }
+    core_->publish_motor_health(now_ns);
+  }
+
+  void reject_motor_debug(const char * reason)
+  {
+    RCLCPP_WARN_THROTTLE(
+      core_->logger(), core_->throttle_clock(), MonitorThresholds::WARN_THROTTLE_MS,
+      "dropped MotorDebug message on %s: %s", options_.motor_debug_topic, reason);
+  }
+
   void reject(const char * reason)
   {
     const uint64_t dropped = core_->reject_state();
@@ -170,6 +211,7 @@ private:
   typename rclcpp::Publisher<JointCommand>::SharedPtr publisher_;
   typename rclcpp::Subscription<JointState>::SharedPtr state_subscription_;
   typename rclcpp::Subscription<ImuInfo>::SharedPtr imu_subscription_;
+  typename rclcpp::Subscription<MotorDebug>::SharedPtr motor_debug_subscription_;
   TopicExecutor executor_;
 };
 

@@ -1401,6 +1401,15 @@ void check_motor_health_updates(Rig& rig) {
   rig.t.deliver_state(later);
   rig.hw->read(kTime, kPeriod);
   check_motor_health(rig, later, "the next health frame");
+#if defined(RHI_TRANSPORT_ENGINEAI_TOPICS)
+  // MotorDebug is its own message: a short or non-finite one is dropped, the last temperatures stay.
+  for (const bool short_array : {true, false}) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(12));
+    CHECK(rig.t.deliver_bad_motor_debug(short_array) > 0, "the driver subscribes the motor debug topic");
+    rig.hw->read(kTime, kPeriod);
+    check_motor_health(rig, later, short_array ? "after a MotorDebug one motor short" : "after a NaN temperature");
+  }
+#endif
 }
 
 // A motor at motor_temperature_error_c (80 here) faults an active robot like a dead link: read()

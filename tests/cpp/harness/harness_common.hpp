@@ -223,7 +223,7 @@ inline std::vector<std::string> joint_commands(size_t k) {
 
 // Motor health per joint, after position, velocity and effort: what each robot's state message carries
 // (SDK_FACTS.md: hg MotorState_ temperature[0], vol, motorstate; go MotorState_ temperature; AimDK
-// hal JointState v1.0.0 error_code; the others nothing).
+// hal JointState v1.0.0 error_code; EngineAI MotorDebug motor_temperature; the others nothing).
 constexpr std::array<const char*, 3> kMotorHealthNames = {"temperature", "voltage", "error_code"};
 #if defined(RHI_TRANSPORT_UNITREE_DDS) && defined(RHI_UNITREE_FAMILY_GO)
 constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
@@ -231,6 +231,8 @@ constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
 constexpr std::array<bool, 3> kMotorHealth = {true, true, true};
 #elif defined(RHI_TRANSPORT_AGIBOT_TOPICS)
 constexpr std::array<bool, 3> kMotorHealth = {false, false, true};
+#elif defined(RHI_TRANSPORT_ENGINEAI_TOPICS)
+constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
 #else
 constexpr std::array<bool, 3> kMotorHealth = {false, false, false};
 #endif

@@ -1,10 +1,14 @@
 // Fake robot side of the engineai_topics transport (interface_protocol): JointState arrays
-// indexed by SDK slot, ImuInfo, JointCommand arrays out.
+// indexed by SDK slot, MotorDebug (motor temperatures, same index) with every state, ImuInfo,
+// JointCommand arrays out.
 #pragma once
+
+#include <limits>
 
 #include <interface_protocol/msg/imu_info.hpp>
 #include <interface_protocol/msg/joint_command.hpp>
 #include <interface_protocol/msg/joint_state.hpp>
+#include <interface_protocol/msg/motor_debug.hpp>
 
 #include "transport_ros_common.hpp"
 
@@ -15,6 +19,7 @@ public:
   using StateMsg = interface_protocol::msg::JointState;
   using CommandMsg = interface_protocol::msg::JointCommand;
   using ImuMsg = interface_protocol::msg::ImuInfo;
+  using DebugMsg = interface_protocol::msg::MotorDebug;
   static constexpr const char* kName = "engineai_topics";
   static constexpr bool kHasGains = true;
 
@@ -22,6 +27,9 @@ public:
     state_msg_.position.assign(N, 0.0);
     state_msg_.velocity.assign(N, 0.0);
     state_msg_.torque.assign(N, 0.0);
+    debug_msg_.tau_cmd.assign(N, 0.0);
+    debug_msg_.mos_temperature.assign(N, 0.0);
+    debug_msg_.motor_temperature.assign(N, 0.0);
   }
 
   void prepare_state(const StateFrame& f) {
@@ -32,6 +40,8 @@ public:
       state_msg_.position[i] = f.q[i];
       state_msg_.velocity[i] = f.dq[i];
       state_msg_.torque[i] = f.tau[i];
+      debug_msg_.motor_temperature[i] = f.temperature[i];
+      debug_msg_.mos_temperature[i] = 20.0 + static_cast<double>(i);  // not exported
     }
     // ImuInfo: geometry_msgs quaternion x, y, z, w.
     imu_info_.quaternion.w = f.quat_wxyz[0];
@@ -46,7 +56,23 @@ public:
     imu_info_.linear_acceleration.z = f.acc[2];
     imu_info_.rpy.x = 0.125;  // not exported; present as on the robot
   }
-  size_t deliver_prepared() { return rhi_fake::ros::deliver<StateMsg>(kStateTopic, state_msg_); }
+  // The state, then the motor debug message (the robot sends it at 50 Hz or more; here with every state, the
+  // driver keeps one every 10 ms).
+  size_t deliver_prepared() {
+    const size_t reached = rhi_fake::ros::deliver<StateMsg>(kStateTopic, state_msg_);
+    rhi_fake::ros::deliver<DebugMsg>(kMotorDebugTopic, debug_msg_);
+    return reached;
+  }
+  // A MotorDebug the driver must drop (the temperatures stay): one motor short, or a NaN.
+  size_t deliver_bad_motor_debug(bool short_array) {
+    DebugMsg bad = debug_msg_;
+    if (short_array) {
+      bad.motor_temperature.pop_back();
+    } else {
+      bad.motor_temperature[kJoints[0].slot] = std::numeric_limits<double>::quiet_NaN();
+    }
+    return rhi_fake::ros::deliver<DebugMsg>(kMotorDebugTopic, bad);
+  }
   size_t deliver_state(const StateFrame& f) {
     prepare_state(f);
     return deliver_prepared();
@@ -103,6 +129,7 @@ public:
 
 private:
   StateMsg state_msg_;
+  DebugMsg debug_msg_;
   ImuMsg imu_info_;
   CommandMsg cmd_msg_;
 };

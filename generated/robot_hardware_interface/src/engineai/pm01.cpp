@@ -64,10 +64,11 @@ constexpr RobotSpec kRobot{"robot_hardware_interface/engineai/PM01HardwareInterf
   "pm01_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
   {"lo", true, 2000, 1, 100, 1000, 1000, 70, 85}};
 
-// transport_options: command, state and IMU topics, parallel_parser_type (0 CLASSIC, 1 RL), qos
+// transport_options: command, state, IMU and motor debug topics, parallel_parser_type (0 CLASSIC, 1
+// RL), qos
 constexpr robot_hardware_interface::EngineaiTopicsOptions kTransport{
   "/hardware/joint_command", "/hardware/joint_state", "/hardware/imu_info",
-  0, {false, false, 3}};
+  "/hardware/motor_debug", 0, {false, false, 3}};
 
 }  // namespace
 

@@ -26,7 +26,8 @@ TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type",
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
                   "state_decimation", "state_timeout_ms", "fault_timeout_ms", "diagnostics_period_ms",
-                  "motor_temperature_warn_c", "motor_temperature_error_c")
+                  "motor_temperature_warn_c", "motor_temperature_error_c", "motor_error_fault_mask")
+MAX_ERROR_FAULT_MASK = 0xFFFF_FFFF  # motor error codes are at most 32 bits (hg motorstate)
 IMU_KEYS = ("enabled", "name", "frame_id")
 GAIN_KEYS = ("stiffness", "damping")
 COMMAND_MODES = ("position", "velocity")
@@ -145,6 +146,9 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
             motor_temperature_error_c=v.integer(m["motor_temperature_error_c"],
                                                 "parameters.motor_temperature_error_c", 1, 200)
             if "motor_temperature_error_c" in m else params.motor_temperature_error_c,
+            motor_error_fault_mask=v.integer(m["motor_error_fault_mask"], "parameters.motor_error_fault_mask", 0,
+                                             MAX_ERROR_FAULT_MASK)
+            if "motor_error_fault_mask" in m else params.motor_error_fault_mask,
         )
         _check_fault_timeout(v, params, given="fault_timeout_ms" in m)
         _check_temperatures(v, params, given="motor_temperature_error_c" in m)
@@ -154,6 +158,10 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         v, v.mapping(raw_options, "transport_options", transport.option_keys) if raw_options is not None else {},
         motor_count)
     options = transport.resolve_options(v, options, vendor=vendor, robot=robot, motor_count=motor_count)
+    if params.motor_error_fault_mask and "error_code" not in transport.motor_health(options):
+        raise v.error("parameters.motor_error_fault_mask", f"the {transport.name} state carries no motor error "
+                      "codes, so no error code can fault a motor",
+                      fix="remove motor_error_fault_mask (Unitree hg and AgiBot robots report error codes)")
 
     joint_map = _joint_map(v, data["joint_map"], motor_count)
     unmapped: tuple[str, ...] = ()

@@ -37,6 +37,7 @@ class Parameters:
     diagnostics_period_ms: int = 1000     # /diagnostics every this long, 0: none
     motor_temperature_warn_c: int = 70    # /diagnostics: a motor this hot is WARN ...
     motor_temperature_error_c: int = 85   # ... and this hot ERROR (rhi-gen's defaults, not a vendor's)
+    motor_error_fault_mask: int = 0       # motor error code bits that fault the robot (0: codes never do)
 
 
 @dataclass(frozen=True)

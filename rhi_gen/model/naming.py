@@ -56,7 +56,7 @@ PACKAGE_SCOPE_NAMES = frozenset({
     "make_joint_index_map", "make_qos", "make_resource_manager", "make_tables", "masked_crc",
     "masked_crc_clmul", "masked_crc_portable", "message_crc", "parse_bool", "parse_unsigned",
     "power_of_x_mod", "publish_ros_imu", "read_bool_parameter", "read_driver_parameters",
-    "read_unsigned_parameter", "slots_are_valid", "steady_now_ns", "steady_now_us", "steady_ns",
+    "read_unsigned_parameter", "slots_are_valid", "motor_error_bits", "steady_now_ns", "steady_now_us", "steady_ns",
     "transmit_command_block", "transmit_state_block", "trimmed",
     "word_masks",
 })

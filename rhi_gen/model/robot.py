@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .config import ImuConfig, Parameters, TransportOptions
+from .motor_groups import MotorGroup, motor_groups
 from .naming import PACKAGE_NAMESPACE
 from .urdf import JointLimits
 
@@ -112,6 +113,11 @@ class RobotModel:
         for j in self.joints:
             names[j.index] = j.name
         return tuple(names)
+
+    @property
+    def motor_groups(self) -> tuple[MotorGroup, ...]:
+        """The mapped joints by limb, one /diagnostics motors status each (model/motor_groups.py)."""
+        return motor_groups([(j.name, j.index) for j in self.joints])
 
     @property
     def has_transmission(self) -> bool:

@@ -1,4 +1,5 @@
-"""View-model of a robot's driver source: its motors that are not joints, as the tables the C++ reads.
+"""View-model of a robot's driver source: its motors that are not joints and each joint's motor group,
+as the tables the C++ reads.
 
 The templates place these values (``|cpp_double``); which joints are listed and in which order is
 decided here: every joint whose transmission is not the identity and every joint of a coupled group
@@ -34,6 +35,7 @@ class CoupledView:
 class DriverView:
     transmissions: tuple[TransmissionLine, ...]
     groups: tuple[CoupledView, ...]
+    motor_group_of: dict[int, int] | None = None  # SDK slot -> index of its motor group (RobotSpec)
 
     @property
     def has_transmission(self) -> bool:
@@ -49,4 +51,4 @@ def driver_view(robot: RobotModel) -> DriverView:
     groups = tuple(CoupledView(group.name, f"kCoupled{k}", group.joints, tuple(slot[name] for name in group.joints),
                                tuple(value for row in group.matrix for value in row))
                    for k, group in enumerate(robot.coupled_groups))
-    return DriverView(lines, groups)
+    return DriverView(lines, groups, {slot: k for k, group in enumerate(robot.motor_groups) for slot in group.slots})

@@ -355,6 +355,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         # custom carries no topics (its options are the base TransportOptions): the fake bus needs none
         groups = [("all", 0, model.motor_count, getattr(opts, "command_topic", ""), getattr(opts, "state_topic", ""))]
 
+    motor_group = {slot: group.name for group in model.motor_groups for slot in group.slots}
+
     def group_of(slot: int) -> int:
         for g, (_, offset, size, _, _) in enumerate(groups):
             if offset <= slot < offset + size:
@@ -410,6 +412,11 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     lines += [
         "};",
         f"inline constexpr size_t kJointCount = {len(joint_map)};",
+        "// the /diagnostics motors status of each joint of kJoints (rhi_gen/model/motor_groups.py)",
+        "inline constexpr const char* kJointMotorGroup[] = {",
+        *(f"    {_c_string(motor_group[slot])}," for slot in joint_map.values()),
+        "};",
+        f"inline constexpr size_t kMotorGroupCount = {len(model.motor_groups)};",
         *transmission_lines(model, list(joint_map)),
         ("struct Group { const char* name; size_t offset; size_t size; const char* command_topic;"
          " const char* state_topic; };"),

@@ -123,6 +123,7 @@ public:
   ImuData & imu_data() {return imu_data_;}
   DriverHealthData & health() {return health_;}
   MotorHealthFrame<N> & motor_health() {return motor_health_;}
+  const MotorHealthFrame<N> & motor_health() const {return motor_health_;}
 
   // read() of a robot whose state carries motor health: the newest health frame into the exported
   // storage, true when a new one came (only then do its values change).

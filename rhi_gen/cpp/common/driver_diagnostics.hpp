@@ -9,6 +9,7 @@
 #include <pthread.h>
 
 #include <chrono>
+#include <cinttypes>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +26,7 @@
 #include <diagnostic_msgs/msg/key_value.hpp>
 
 #include "robot_hardware_interface/common/driver_health.hpp"
+#include "robot_hardware_interface/common/robot_spec.hpp"
 
 namespace robot_hardware_interface
 {
@@ -36,6 +38,7 @@ struct DiagnosticsLimits
   uint64_t fault_timeout_ms;
   double temperature_warn_c;
   double temperature_error_c;
+  uint64_t error_fault_mask;  // motor error code bits that fault (ERROR), others WARN
 };
 
 // The statuses of /diagnostics, as text (static members: no free function a vendor namespace
@@ -99,27 +102,30 @@ public:
     add(status, "writer overruns", std::to_string(facts.writer_overruns));
   }
 
-  // "<hardware>: motors": one entry per joint and field the state carries; ERROR when a motor is
-  // at or above temperature_error_c, WARN with an error code or at or above temperature_warn_c.
-  // `joints[slot]` names the joint of each SDK slot ("": none, SlotTable::slot_joint_names());
-  // `fields`: MotorHealthField bits.
-  template<typename Frame, typename JointNames>
+  // "<hardware>: left leg motors": one entry per joint of motor group `group` of `robot` and
+  // field the state carries; ERROR when a motor is at or above temperature_error_c or reports an
+  // error code with a bit of error_fault_mask, WARN with another error code or at or above
+  // temperature_warn_c. `fields`: MotorHealthField bits.
+  template<typename Frame>
   static void describe_motors(
-    Status & status, const Frame & frame, const JointNames & joints, uint8_t fields,
+    Status & status, const Frame & frame, const RobotSpec & robot, size_t group, uint8_t fields,
     const DiagnosticsLimits & limits)
   {
     const char * hottest = nullptr;
     double hottest_c = 0.0;
     std::string in_error;
-    for (size_t slot = 0; slot < joints.size(); ++slot) {
-      if (joints[slot] == nullptr || joints[slot][0] == '\0') {
+    std::string faulted;
+    for (size_t j = 0; j < robot.joint_count; ++j) {
+      const JointSpec & joint = robot.joints[j];
+      if (joint.motor_group != group) {
         continue;
       }
-      const std::string name(joints[slot]);
+      const size_t slot = joint.slot;
+      const std::string name(joint.name);
       if ((fields & kMotorTemperature) != 0U) {
         add(status, name + " temperature [C]", number(frame.temperature[slot]));
         if (hottest == nullptr || frame.temperature[slot] > hottest_c) {
-          hottest = joints[slot];
+          hottest = joint.name;
           hottest_c = frame.temperature[slot];
         }
       }
@@ -127,10 +133,12 @@ public:
         add(status, name + " voltage [V]", number(frame.voltage[slot], "%.2f"));
       }
       if ((fields & kMotorErrorCode) != 0U) {
-        const std::string code = hex(frame.error_code[slot]);
+        const uint64_t bits = motor_error_bits(frame.error_code[slot]);
+        const std::string code = hex(bits);
         add(status, name + " error code", code);
-        if (frame.error_code[slot] != 0.0) {
-          in_error += (in_error.empty() ? "" : ", ") + name + " (" + code + ")";
+        std::string & list = (bits & limits.error_fault_mask) != 0U ? faulted : in_error;
+        if (bits != 0U) {
+          list += (list.empty() ? "" : ", ") + name + " (" + code + ")";
         }
       }
     }
@@ -140,6 +148,10 @@ public:
       set(
         status, Status::ERROR, "motor too hot: " + hot + " (motor_temperature_error_c " +
         number(limits.temperature_error_c, "%.0f") + ")");
+    } else if (!faulted.empty()) {
+      set(
+        status, Status::ERROR, "motor error: " + faulted + " (motor_error_fault_mask " +
+        hex(limits.error_fault_mask) + ")");
     } else if (!in_error.empty()) {
       set(status, Status::WARN, "motor error code: " + in_error);
     } else if (hottest != nullptr && hottest_c >= limits.temperature_warn_c) {
@@ -173,10 +185,10 @@ private:
     return text;
   }
 
-  static std::string hex(double code)
+  static std::string hex(uint64_t bits)
   {
     char text[32];
-    std::snprintf(text, sizeof(text), "0x%llx", static_cast<unsigned long long>(code));  // NOLINT
+    std::snprintf(text, sizeof(text), "0x%" PRIx64, bits);
     return text;
   }
 };

@@ -128,6 +128,12 @@ enum MotorHealthField : uint8_t
   kMotorErrorCode = 1U << 2,    // "error_code": the motor's error bits (vendor), 0: none
 };
 
+// The bits of an error_code value (a motor health double holds the vendor's unsigned code).
+inline uint64_t motor_error_bits(double code)
+{
+  return code > 0.0 && code < 18446744073709551616.0 ? static_cast<uint64_t>(code) : 0U;
+}
+
 struct MotorHealthInterface
 {
   const char * name;

@@ -31,6 +31,7 @@ struct DriverParameters
   uint64_t diagnostics_period_ms;  // /diagnostics period, 0: none
   uint64_t motor_temperature_warn_c;  // /diagnostics: a motor this hot is WARN, ...
   uint64_t motor_temperature_error_c;  // ... this hot ERROR
+  uint64_t motor_error_fault_mask;  // a motor error code with one of these bits faults, 0: never
 
   explicit DriverParameters(const ParameterDefaults & defaults)
   : network_interface(defaults.network_interface),
@@ -41,10 +42,14 @@ struct DriverParameters
     fault_timeout_ms(defaults.fault_timeout_ms),
     diagnostics_period_ms(defaults.diagnostics_period_ms),
     motor_temperature_warn_c(defaults.motor_temperature_warn_c),
-    motor_temperature_error_c(defaults.motor_temperature_error_c)
+    motor_temperature_error_c(defaults.motor_temperature_error_c),
+    motor_error_fault_mask(defaults.motor_error_fault_mask)
   {
   }
 };
+
+// Motor error codes are at most 32 bits wide (hg MotorState_.motorstate; AimDK's is 16).
+inline constexpr uint64_t kMaxMotorErrorFaultMask = 0xFFFFFFFFU;
 
 // ros2_control hands <param> values over as text. They are parsed by hand: std::stoul throws on
 // garbage and silently turns "-1" into a huge number.
@@ -149,7 +154,10 @@ bool read_driver_parameters(
     !read_unsigned_parameter(
       logger, parameters, "motor_temperature_warn_c", 1, 200, out.motor_temperature_warn_c) ||
     !read_unsigned_parameter(
-      logger, parameters, "motor_temperature_error_c", 1, 200, out.motor_temperature_error_c))
+      logger, parameters, "motor_temperature_error_c", 1, 200, out.motor_temperature_error_c) ||
+    !read_unsigned_parameter(
+      logger, parameters, "motor_error_fault_mask", 0, kMaxMotorErrorFaultMask,
+      out.motor_error_fault_mask))
   {
     return false;
   }

@@ -1668,8 +1668,8 @@ void test_health() {
 
 // ================================================================ diagnostics
 // /diagnostics (diagnostic_msgs/DiagnosticArray, the real message): the driver's own thread publishes
-// "<hardware>: link", "<hardware>: safety" and, where the state carries motor health, "<hardware>:
-// motors" every diagnostics_period_ms. Waits poll with generous timeouts; a change counts once two
+// "<hardware>: link", "<hardware>: safety" and, where the state carries motor health, one status per
+// motor group ("<hardware>: left leg motors", kJointMotorGroup) every diagnostics_period_ms. Waits poll with generous timeouts; a change counts once two
 // more messages came (the one being built may predate it).
 using DiagnosticArray = diagnostic_msgs::msg::DiagnosticArray;
 using DiagnosticStatus = diagnostic_msgs::msg::DiagnosticStatus;
@@ -1797,6 +1797,92 @@ void check_hardware_status() {
 }
 #endif
 
+// Every motor group has its status, OK on a healthy robot, and lists exactly its own joints (each joint in one
+// status); the joint `hot` (at 41 C) shows its temperature.
+void check_motor_groups(const DiagnosticArray& a, const std::string& hw, size_t hot) {
+  const char* field = kMotorHealth[0] ? " temperature [C]" : kMotorHealth[1] ? " voltage [V]" : " error code";
+  for (size_t k = 0; k < kJointCount; ++k) {
+    check_status(a, hw, kJointMotorGroup[k], DiagnosticStatus::OK, "", "healthy robot");
+    size_t listed = 0;
+    for (size_t s = 2; s < a.status.size(); ++s) {
+      listed += value_of(a.status[s], std::string(kJoints[k].name) + field) != "<missing>" ? 1U : 0U;
+    }
+    const DiagnosticStatus* own = status_named(a, hw + ": " + kJointMotorGroup[k]);
+    CHECK(listed == 1 && own != nullptr && value_of(*own, std::string(kJoints[k].name) + field) != "<missing>",
+          "%s is listed once, in '%s' (in %zu statuses)", kJoints[k].name, kJointMotorGroup[k], listed);
+  }
+  const DiagnosticStatus* m = status_named(a, hw + ": " + kJointMotorGroup[hot]);
+  if (m != nullptr && kMotorHealth[0]) {
+    const std::string shown = value_of(*m, std::string(kJoints[hot].name) + " temperature [C]");
+    CHECK(shown == "41.0", "the motors status lists every joint's temperature (got '%s')", shown.c_str());
+  }
+}
+
+// motor_error_fault_mask (0xc here): an error code with one of its bits faults an active robot like a hot
+// motor: read() ERROR with one line naming the joint and the code, its group's /diagnostics status ERROR,
+// damping-only after on_error. A code without those bits only shows (WARN); once the code cleared,
+// configure + activate bring the robot back.
+void check_motor_error_faults() {
+  using hardware_interface::return_type;
+  fresh_process();
+  Rig rig;
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["state_decimation"] = "1";
+  info.hardware_parameters["fault_timeout_ms"] = "60000";
+  info.hardware_parameters["diagnostics_period_ms"] = "20";
+  info.hardware_parameters["motor_error_fault_mask"] = "12";
+  if (!setup(rig, info) || !activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  const auto coded = [](uint32_t code, double error_code) {
+    StateFrame f = coded_state(code);
+    f.temperature.fill(40.0);
+    f.error_code.fill(0.0);
+    f.error_code[kJoints[0].slot] = error_code;
+    return f;
+  };
+  const ControllerCommand cmd = distinct_command(6);
+  const auto step = [&rig, &cmd](const StateFrame& f) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(12));  // a motor health frame is due
+    rig.t.deliver_state(f);
+    const return_type r = rig.hw->read(kTime, kPeriod);
+    apply_command(rig.ifs, cmd);
+    rig.hw->write(kTime, kPeriod);
+    rig.t.tick_writer();
+    return r;
+  };
+  const std::string hw = info.name;
+  const std::string joint = kJoints[0].name;
+  CHECK(step(coded(801, 0.0)) == return_type::OK, "read() without motor error codes");
+  rhi_fake::logs::clear();
+  CHECK(step(coded(802, 3.0)) == return_type::OK, "read() with error code 0x3 (no bit of the mask 0xc)");
+  DiagnosticArray a;
+  if (next_diagnostics(a, "an error code outside the mask")) {
+    check_status(a, hw, kJointMotorGroup[0], DiagnosticStatus::WARN, (joint + " (0x3)").c_str(), "code 0x3, mask 0xc");
+  }
+  CHECK(step(coded(803, 20.0)) == return_type::ERROR, "read() with %s at error code 0x14 (bit 0x4 of the mask 0xc)",
+        joint.c_str());
+  CHECK(rig.hw->read(kTime, kPeriod) == return_type::ERROR, "and keeps returning ERROR");
+  CHECK_EQ(health(rig, kFault), 1.0, "the health GPIO's fault while a motor is in error");
+  CHECK_EQ(rhi_fake::logs::count_containing("motor error", Severity::Error), 1U, "one error line for the motor");
+  CHECK(rhi_fake::logs::contains(joint + " (SDK slot", Severity::Error) && rhi_fake::logs::contains("0x14", Severity::Error),
+        "the error line names the joint and its code");
+  if (next_diagnostics(a, "an error code in the mask")) {
+    check_status(a, hw, kJointMotorGroup[0], DiagnosticStatus::ERROR, (joint + " (0x14)").c_str(), "code 0x14, mask 0xc");
+  }
+  enter_error(rig);
+  rig.t.tick_writer();
+  CommandFrame c;
+  if (last_command(rig.t, c, "motor error, after on_error")) {
+    check_damping_only(c, "motor error, after on_error");
+  }
+  if (recover(rig)) {
+    CHECK(step(coded(804, 0.0)) == return_type::OK, "after the code cleared, configure + activate: read() returns OK");
+  }
+  teardown(rig);
+}
+
 void test_diagnostics() {
   rhi_check::Section section("diagnostics");
   fresh_process();
@@ -1819,7 +1905,8 @@ void test_diagnostics() {
     teardown(rig);
     return;
   }
-  CHECK_EQ(a.status.size(), motors ? 3U : 2U, "statuses: link, safety%s", motors ? ", motors" : "");
+  CHECK_EQ(a.status.size(), motors ? 2U + kMotorGroupCount : 2U, "statuses: link, safety%s",
+           motors ? " and one per motor group" : "");
   check_status(a, hw, "link", DiagnosticStatus::WARN, "no state", "before any state");
   check_status(a, hw, "safety", DiagnosticStatus::OK, "", "before any state");
   if (!activate(rig)) {
@@ -1828,6 +1915,7 @@ void test_diagnostics() {
   }
   const ControllerCommand cmd = distinct_command(4);
   const size_t hot = kJointCount - 1;
+  const char* hot_group = kJointMotorGroup[hot];
   deliver_health(rig, health_state(1, 40.0, hot, 41.0, 0.0));
   apply_command(rig.ifs, cmd);
   rig.hw->write(kTime, kPeriod);
@@ -1836,28 +1924,23 @@ void test_diagnostics() {
     check_status(a, hw, "link", DiagnosticStatus::OK, "state fresh", "healthy robot");
     check_status(a, hw, "safety", DiagnosticStatus::OK, "commands forwarded", "healthy robot");
     if (motors) {
-      check_status(a, hw, "motors", DiagnosticStatus::OK, "", "healthy robot");
-      const DiagnosticStatus* m = status_named(a, hw + ": motors");
-      if (m != nullptr && kMotorHealth[0]) {
-        const std::string shown = value_of(*m, std::string(kJoints[hot].name) + " temperature [C]");
-        CHECK(shown == "41.0", "the motors status lists every joint's temperature (got '%s')", shown.c_str());
-      }
+      check_motor_groups(a, hw, hot);
     }
   }
   if (motors && kMotorHealth[0]) {
     deliver_health(rig, health_state(2, 40.0, hot, 65.0, 0.0));
     if (next_diagnostics(a, "a hot motor")) {
-      check_status(a, hw, "motors", DiagnosticStatus::WARN, kJoints[hot].name, "65 C (warn 60)");
+      check_status(a, hw, hot_group, DiagnosticStatus::WARN, kJoints[hot].name, "65 C (warn 60)");
     }
     deliver_health(rig, health_state(3, 40.0, hot, 85.0, 0.0));
     if (next_diagnostics(a, "a motor too hot")) {
-      check_status(a, hw, "motors", DiagnosticStatus::ERROR, "too hot", "85 C (error 80)");
+      check_status(a, hw, hot_group, DiagnosticStatus::ERROR, "too hot", "85 C (error 80)");
     }
   }
   if (motors && kMotorHealth[2]) {
     deliver_health(rig, health_state(4, 40.0, hot, 40.0, 6.0));
     if (next_diagnostics(a, "a motor error code")) {
-      check_status(a, hw, "motors", DiagnosticStatus::WARN, (std::string(kJoints[hot].name) + " (0x6)").c_str(),
+      check_status(a, hw, hot_group, DiagnosticStatus::WARN, (std::string(kJoints[hot].name) + " (0x6)").c_str(),
                    "error code 6");
     }
   }
@@ -1916,6 +1999,9 @@ void test_diagnostics() {
 #if RHI_FAKE_HI_MAJOR >= 5
   check_hardware_status();
 #endif
+  if (kMotorHealth[2]) {
+    check_motor_error_faults();
+  }
 }
 
 #if defined(RHI_TRANSPORT_UNITREE_DDS)

@@ -94,6 +94,9 @@ def test_agibot_groups_get_offsets():
       "above 90")),
     (BASE + "parameters:\n  motor_temperature_warn_c: 60\n  motor_temperature_error_c: 60\n", 12,
      "parameters.motor_temperature_error_c", "must be greater than motor_temperature_warn_c (60)"),
+    (BASE + "parameters:\n  motor_error_fault_mask: 4\n", 11, "parameters.motor_error_fault_mask",
+     "carries no motor error codes"),
+    (BASE + "parameters:\n  motor_error_fault_mask: -1\n", 11, "parameters.motor_error_fault_mask", "out of range"),
     (BASE + "parameters:\n  network_iface: eth0\n", 11, "parameters.network_iface", "did you mean 'network_interface'"),
     (BASE + "transport_options:\n  lowcmd_topic: rt/lowcmd\n", 11, "transport_options.lowcmd_topic", "unknown key"),
     (BASE + "transport_options:\n  state_topic: 'bad topic'\n", 11, "transport_options.state_topic",
@@ -188,3 +191,17 @@ def test_yaml_booleans_as_joint_names_stay_names(tmp_path):
     text = BASE.replace("  j1: 0", "  on: 0").replace("  j2: 1", "  no: 1")
     cfg = load_config(write(tmp_path, text))
     assert [n for n, _ in cfg.joint_map] == ["on", "no", "j3"]
+
+
+@pytest.mark.parametrize("robot", ["unitree/g1", "agibot/x2"])
+def test_motor_error_fault_mask_is_read_where_error_codes_travel(tmp_path, robot):
+    """Hex as in a vendor's error table, 0 (codes never fault) by default, at most 32 bits."""
+    source = (REPO / "robots" / f"{robot}.yaml").read_text(encoding="utf-8")
+    assert load_config(REPO / "robots" / f"{robot}.yaml").parameters.motor_error_fault_mask == 0
+    with_block = source if "\nparameters:\n" in source else source.replace("\njoint_map:", "\nparameters:\njoint_map:")
+    text = with_block.replace("\nparameters:\n", "\nparameters:\n  motor_error_fault_mask: 0x0000000C\n")
+    (tmp_path / "robot.yaml").write_text(text, encoding="utf-8")
+    assert load_config(tmp_path / "robot.yaml").parameters.motor_error_fault_mask == 12
+    (tmp_path / "robot.yaml").write_text(text.replace("0x0000000C", "0x100000000"), encoding="utf-8")
+    with pytest.raises(ConfigError, match=r"out of range 0\.\.4294967295"):
+        load_config(tmp_path / "robot.yaml")

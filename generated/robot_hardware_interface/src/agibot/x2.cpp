@@ -27,54 +27,64 @@ namespace
 constexpr auto kPosition = robot_hardware_interface::CommandMode::kPosition;
 using Transport = robot_hardware_interface::AgibotTopicsTransport<X2_NUM_MOTOR, double>;
 
-// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to and the
-// default gains: {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd}
+// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to, the
+// default gains and its motor group (one /diagnostics status each, by limb from the joint names):
+// {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd, motor group}
 constexpr std::array<robot_hardware_interface::JointSpec, 31> kJoints = {{
-  {"left_hip_pitch_joint", 0, kPosition, -2.70526, 2.556907, 11.93808, 120.0, 0.0, 0.0},
-  {"left_hip_roll_joint", 1, kPosition, -0.235619, 2.905973, 11.93808, 120.0, 0.0, 0.0},
-  {"left_hip_yaw_joint", 2, kPosition, -1.858775925, 3.604104925, 11.93808, 120.0, 0.0, 0.0},
-  {"left_knee_joint", 3, kPosition, 0.0, 2.408554, 11.93808, 120.0, 0.0, 0.0},
-  {"left_ankle_pitch_joint", 4, kPosition, -0.802851, 0.453786, 13.6136, 60.0, 0.0, 0.0},
+  {"left_hip_pitch_joint", 0, kPosition, -2.70526, 2.556907, 11.93808, 120.0, 0.0, 0.0, 0},
+  {"left_hip_roll_joint", 1, kPosition, -0.235619, 2.905973, 11.93808, 120.0, 0.0, 0.0, 0},
+  {"left_hip_yaw_joint", 2, kPosition, -1.858775925, 3.604104925, 11.93808, 120.0, 0.0, 0.0, 0},
+  {"left_knee_joint", 3, kPosition, 0.0, 2.408554, 11.93808, 120.0, 0.0, 0.0, 0},
+  {"left_ankle_pitch_joint", 4, kPosition, -0.802851, 0.453786, 13.6136, 60.0, 0.0, 0.0, 0},
   {"left_ankle_roll_joint", 5, kPosition, -0.2967059728, 0.2967059728, 14.660799999999998, 36.0,
-    0.0, 0.0},
-  {"right_hip_pitch_joint", 6, kPosition, -2.70526, 2.556907, 11.93808, 120.0, 0.0, 0.0},
-  {"right_hip_roll_joint", 7, kPosition, -2.905973, 0.235619, 11.93808, 120.0, 0.0, 0.0},
-  {"right_hip_yaw_joint", 8, kPosition, -3.604104925, 1.858775925, 11.93808, 120.0, 0.0, 0.0},
-  {"right_knee_joint", 9, kPosition, 0.0, 2.408554, 11.93808, 120.0, 0.0, 0.0},
-  {"right_ankle_pitch_joint", 10, kPosition, -0.802851, 0.453786, 13.6136, 60.0, 0.0, 0.0},
+    0.0, 0.0, 0},
+  {"right_hip_pitch_joint", 6, kPosition, -2.70526, 2.556907, 11.93808, 120.0, 0.0, 0.0, 1},
+  {"right_hip_roll_joint", 7, kPosition, -2.905973, 0.235619, 11.93808, 120.0, 0.0, 0.0, 1},
+  {"right_hip_yaw_joint", 8, kPosition, -3.604104925, 1.858775925, 11.93808, 120.0, 0.0, 0.0, 1},
+  {"right_knee_joint", 9, kPosition, 0.0, 2.408554, 11.93808, 120.0, 0.0, 0.0, 1},
+  {"right_ankle_pitch_joint", 10, kPosition, -0.802851, 0.453786, 13.6136, 60.0, 0.0, 0.0, 1},
   {"right_ankle_roll_joint", 11, kPosition, -0.2967059728, 0.2967059728, 14.660799999999998, 36.0,
-    0.0, 0.0},
-  {"waist_yaw_joint", 12, kPosition, -3.429572, 2.120575, 11.93808, 120.0, 0.0, 0.0},
-  {"waist_pitch_joint", 13, kPosition, -0.314159, 0.314159, 14.660799999999998, 36.0, 0.0, 0.0},
-  {"waist_roll_joint", 14, kPosition, -0.488692, 0.488692, 14.661, 36.0, 0.0, 0.0},
-  {"head_yaw_joint", 29, kPosition, -0.488692, 0.488692, 3.3109, 3.13125, 0.0, 0.0},
-  {"head_pitch_joint", 30, kPosition, -0.401425, 0.488692, 10.472, 2.0, 0.0, 0.0},
-  {"left_shoulder_pitch_joint", 15, kPosition, -3.080506, 2.033309, 13.6136, 60.0, 0.0, 0.0},
-  {"left_shoulder_roll_joint", 16, kPosition, -0.061087, 3.0456, 13.6136, 60.0, 0.0, 0.0},
+    0.0, 0.0, 1},
+  {"waist_yaw_joint", 12, kPosition, -3.429572, 2.120575, 11.93808, 120.0, 0.0, 0.0, 2},
+  {"waist_pitch_joint", 13, kPosition, -0.314159, 0.314159, 14.660799999999998, 36.0, 0.0, 0.0, 2},
+  {"waist_roll_joint", 14, kPosition, -0.488692, 0.488692, 14.661, 36.0, 0.0, 0.0, 2},
+  {"head_yaw_joint", 29, kPosition, -0.488692, 0.488692, 3.3109, 3.13125, 0.0, 0.0, 5},
+  {"head_pitch_joint", 30, kPosition, -0.401425, 0.488692, 10.472, 2.0, 0.0, 0.0, 5},
+  {"left_shoulder_pitch_joint", 15, kPosition, -3.080506, 2.033309, 13.6136, 60.0, 0.0, 0.0, 3},
+  {"left_shoulder_roll_joint", 16, kPosition, -0.061087, 3.0456, 13.6136, 60.0, 0.0, 0.0, 3},
   {"left_shoulder_yaw_joint", 17, kPosition, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0,
-    0.0},
-  {"left_elbow_joint", 18, kPosition, -2.356194, 0.0, 14.660799999999998, 36.0, 0.0, 0.0},
-  {"left_wrist_yaw_joint", 19, kPosition, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0, 0.0},
-  {"left_wrist_pitch_joint", 20, kPosition, -0.523599, 0.523599, 15.707999999999998, 6.0, 0.0, 0.0},
-  {"left_wrist_roll_joint", 21, kPosition, -1.50971, 0.724312, 15.707999999999998, 6.0, 0.0, 0.0},
-  {"right_shoulder_pitch_joint", 22, kPosition, -3.080506, 2.033309, 13.6136, 60.0, 0.0, 0.0},
-  {"right_shoulder_roll_joint", 23, kPosition, -3.0456, 0.061087, 13.6136, 60.0, 0.0, 0.0},
+    0.0, 3},
+  {"left_elbow_joint", 18, kPosition, -2.356194, 0.0, 14.660799999999998, 36.0, 0.0, 0.0, 3},
+  {"left_wrist_yaw_joint", 19, kPosition, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0, 0.0,
+    3},
+  {"left_wrist_pitch_joint", 20, kPosition, -0.523599, 0.523599, 15.707999999999998, 6.0, 0.0, 0.0,
+    3},
+  {"left_wrist_roll_joint", 21, kPosition, -1.50971, 0.724312, 15.707999999999998, 6.0, 0.0, 0.0,
+    3},
+  {"right_shoulder_pitch_joint", 22, kPosition, -3.080506, 2.033309, 13.6136, 60.0, 0.0, 0.0, 4},
+  {"right_shoulder_roll_joint", 23, kPosition, -3.0456, 0.061087, 13.6136, 60.0, 0.0, 0.0, 4},
   {"right_shoulder_yaw_joint", 24, kPosition, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0,
-    0.0},
-  {"right_elbow_joint", 25, kPosition, -2.356194, 0.0, 14.660799999999998, 36.0, 0.0, 0.0},
-  {"right_wrist_yaw_joint", 26, kPosition, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0, 0.0},
-  {"right_wrist_pitch_joint", 27, kPosition, -0.523599, 0.523599, 15.707999999999998, 6.0, 0.0,
-    0.0},
-  {"right_wrist_roll_joint", 28, kPosition, -0.724312, 1.50971, 15.707999999999998, 6.0, 0.0, 0.0},
+    0.0, 4},
+  {"right_elbow_joint", 25, kPosition, -2.356194, 0.0, 14.660799999999998, 36.0, 0.0, 0.0, 4},
+  {"right_wrist_yaw_joint", 26, kPosition, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0, 0.0,
+    4},
+  {"right_wrist_pitch_joint", 27, kPosition, -0.523599, 0.523599, 15.707999999999998, 6.0, 0.0, 0.0,
+    4},
+  {"right_wrist_roll_joint", 28, kPosition, -0.724312, 1.50971, 15.707999999999998, 6.0, 0.0, 0.0,
+    4},
 }};
 static_assert(robot_hardware_interface::slots_are_valid(kJoints, X2_NUM_MOTOR), "joint table");
 
-// Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
+// Plugin and node name, joints, IMU sensor name, motor groups, and the <hardware> parameter
+// defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
-// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c
+// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c,
+// motor_error_fault_mask
 constexpr RobotSpec kRobot{"robot_hardware_interface/agibot/X2HardwareInterface",
   "x2_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"lo", true, 2000, 1, 100, 1000, 1000, 70, 85}};
+  {{"left leg motors", "right leg motors", "waist motors", "left arm motors", "right arm motors",
+    "head motors"}},
+  {"lo", true, 2000, 1, 100, 1000, 1000, 70, 85, 0x0U}};
 
 // AimDK joint groups: {name, first motor slot, size, command topic, state topic}
 constexpr std::array<robot_hardware_interface::AimdkJointGroup, 4> kGroups = {{

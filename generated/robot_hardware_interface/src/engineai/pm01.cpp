@@ -27,42 +27,47 @@ namespace
 constexpr auto kPosition = robot_hardware_interface::CommandMode::kPosition;
 using Transport = robot_hardware_interface::EngineaiTopicsTransport<PM01_NUM_MOTOR, double>;
 
-// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to and the
-// default gains: {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd}
+// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to, the
+// default gains and its motor group (one /diagnostics status each, by limb from the joint names):
+// {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd, motor group}
 constexpr std::array<robot_hardware_interface::JointSpec, 24> kJoints = {{
-  {"J00_HIP_PITCH_L", 0, kPosition, -3.141, 2.443, 26.3, 164.0, 0.0, 0.0},
-  {"J01_HIP_ROLL_L", 1, kPosition, -0.436, 2.094, 26.3, 164.0, 0.0, 0.0},
-  {"J02_HIP_YAW_L", 2, kPosition, -1.57, 4.014, 35.2, 61.0, 0.0, 0.0},
-  {"J03_KNEE_PITCH_L", 3, kPosition, -0.3491, 2.3911, 26.3, 164.0, 0.0, 0.0},
-  {"J04_ANKLE_PITCH_L", 4, kPosition, -0.6807, 0.7243, 35.2, 61.0, 0.0, 0.0},
-  {"J05_ANKLE_ROLL_L", 5, kPosition, -0.2618, 0.2618, 35.2, 61.0, 0.0, 0.0},
-  {"J06_HIP_PITCH_R", 6, kPosition, -3.141, 2.443, 26.3, 164.0, 0.0, 0.0},
-  {"J07_HIP_ROLL_R", 7, kPosition, -2.094, 0.436, 26.3, 164.0, 0.0, 0.0},
-  {"J08_HIP_YAW_R", 8, kPosition, -4.014, 1.57, 35.2, 61.0, 0.0, 0.0},
-  {"J09_KNEE_PITCH_R", 9, kPosition, -0.3491, 2.3911, 26.3, 164.0, 0.0, 0.0},
-  {"J10_ANKLE_PITCH_R", 10, kPosition, -0.6807, 0.7243, 35.2, 61.0, 0.0, 0.0},
-  {"J11_ANKLE_ROLL_R", 11, kPosition, -0.2618, 0.2618, 35.2, 61.0, 0.0, 0.0},
-  {"J12_WAIST_YAW", 12, kPosition, -4.014, 1.57, 35.2, 61.0, 0.0, 0.0},
-  {"J13_SHOULDER_PITCH_L", 13, kPosition, -2.9671, 2.7925, 35.2, 61.0, 0.0, 0.0},
-  {"J14_SHOULDER_ROLL_L", 14, kPosition, -0.6108, 2.3562, 35.2, 61.0, 0.0, 0.0},
-  {"J15_SHOULDER_YAW_L", 15, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
-  {"J16_ELBOW_PITCH_L", 16, kPosition, -2.1948, 0.7374, 35.2, 61.0, 0.0, 0.0},
-  {"J17_ELBOW_YAW_L", 17, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
-  {"J18_SHOULDER_PITCH_R", 18, kPosition, -2.9671, 2.7925, 35.2, 61.0, 0.0, 0.0},
-  {"J19_SHOULDER_ROLL_R", 19, kPosition, -2.3562, 0.6108, 35.2, 61.0, 0.0, 0.0},
-  {"J20_SHOULDER_YAW_R", 20, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
-  {"J21_ELBOW_PITCH_R", 21, kPosition, -2.1948, 0.7374, 35.2, 61.0, 0.0, 0.0},
-  {"J22_ELBOW_YAW_R", 22, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0},
-  {"J23_HEAD_YAW", 23, kPosition, -0.6109, 0.6109, 35.2, 61.0, 0.0, 0.0},
+  {"J00_HIP_PITCH_L", 0, kPosition, -3.141, 2.443, 26.3, 164.0, 0.0, 0.0, 0},
+  {"J01_HIP_ROLL_L", 1, kPosition, -0.436, 2.094, 26.3, 164.0, 0.0, 0.0, 0},
+  {"J02_HIP_YAW_L", 2, kPosition, -1.57, 4.014, 35.2, 61.0, 0.0, 0.0, 0},
+  {"J03_KNEE_PITCH_L", 3, kPosition, -0.3491, 2.3911, 26.3, 164.0, 0.0, 0.0, 0},
+  {"J04_ANKLE_PITCH_L", 4, kPosition, -0.6807, 0.7243, 35.2, 61.0, 0.0, 0.0, 0},
+  {"J05_ANKLE_ROLL_L", 5, kPosition, -0.2618, 0.2618, 35.2, 61.0, 0.0, 0.0, 0},
+  {"J06_HIP_PITCH_R", 6, kPosition, -3.141, 2.443, 26.3, 164.0, 0.0, 0.0, 1},
+  {"J07_HIP_ROLL_R", 7, kPosition, -2.094, 0.436, 26.3, 164.0, 0.0, 0.0, 1},
+  {"J08_HIP_YAW_R", 8, kPosition, -4.014, 1.57, 35.2, 61.0, 0.0, 0.0, 1},
+  {"J09_KNEE_PITCH_R", 9, kPosition, -0.3491, 2.3911, 26.3, 164.0, 0.0, 0.0, 1},
+  {"J10_ANKLE_PITCH_R", 10, kPosition, -0.6807, 0.7243, 35.2, 61.0, 0.0, 0.0, 1},
+  {"J11_ANKLE_ROLL_R", 11, kPosition, -0.2618, 0.2618, 35.2, 61.0, 0.0, 0.0, 1},
+  {"J12_WAIST_YAW", 12, kPosition, -4.014, 1.57, 35.2, 61.0, 0.0, 0.0, 2},
+  {"J13_SHOULDER_PITCH_L", 13, kPosition, -2.9671, 2.7925, 35.2, 61.0, 0.0, 0.0, 3},
+  {"J14_SHOULDER_ROLL_L", 14, kPosition, -0.6108, 2.3562, 35.2, 61.0, 0.0, 0.0, 3},
+  {"J15_SHOULDER_YAW_L", 15, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0, 3},
+  {"J16_ELBOW_PITCH_L", 16, kPosition, -2.1948, 0.7374, 35.2, 61.0, 0.0, 0.0, 3},
+  {"J17_ELBOW_YAW_L", 17, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0, 3},
+  {"J18_SHOULDER_PITCH_R", 18, kPosition, -2.9671, 2.7925, 35.2, 61.0, 0.0, 0.0, 4},
+  {"J19_SHOULDER_ROLL_R", 19, kPosition, -2.3562, 0.6108, 35.2, 61.0, 0.0, 0.0, 4},
+  {"J20_SHOULDER_YAW_R", 20, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0, 4},
+  {"J21_ELBOW_PITCH_R", 21, kPosition, -2.1948, 0.7374, 35.2, 61.0, 0.0, 0.0, 4},
+  {"J22_ELBOW_YAW_R", 22, kPosition, -2.618, 2.618, 35.2, 61.0, 0.0, 0.0, 4},
+  {"J23_HEAD_YAW", 23, kPosition, -0.6109, 0.6109, 35.2, 61.0, 0.0, 0.0, 5},
 }};
 static_assert(robot_hardware_interface::slots_are_valid(kJoints, PM01_NUM_MOTOR), "joint table");
 
-// Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
+// Plugin and node name, joints, IMU sensor name, motor groups, and the <hardware> parameter
+// defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
-// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c
+// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c,
+// motor_error_fault_mask
 constexpr RobotSpec kRobot{"robot_hardware_interface/engineai/PM01HardwareInterface",
   "pm01_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"lo", true, 2000, 1, 100, 1000, 1000, 70, 85}};
+  {{"left leg motors", "right leg motors", "waist motors", "left arm motors", "right arm motors",
+    "head motors"}},
+  {"lo", true, 2000, 1, 100, 1000, 1000, 70, 85, 0x0U}};
 
 // transport_options: command, state, IMU and motor debug topics, parallel_parser_type (0 CLASSIC, 1
 // RL), qos

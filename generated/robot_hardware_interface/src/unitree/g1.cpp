@@ -29,47 +29,51 @@ constexpr auto kPosition = robot_hardware_interface::CommandMode::kPosition;
 using Transport = robot_hardware_interface::UnitreeDdsTransport<
   G1_NUM_MOTOR, float, robot_hardware_interface::unitree_hg::Family>;
 
-// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to and the
-// default gains: {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd}
+// URDF joint -> SDK motor slot, how it is commanded, the URDF limits write() clamps to, the
+// default gains and its motor group (one /diagnostics status each, by limb from the joint names):
+// {name, slot, mode, position min, max, |velocity| max, |effort| max, kp, kd, motor group}
 constexpr std::array<robot_hardware_interface::JointSpec, 29> kJoints = {{
-  {"left_hip_pitch_joint", 0, kPosition, -2.5307, 2.8798, 32.0, 88.0, 60.0, 1.0},
-  {"left_hip_roll_joint", 1, kPosition, -0.5236, 2.9671, 20.0, 139.0, 60.0, 1.0},
-  {"left_hip_yaw_joint", 2, kPosition, -2.7576, 2.7576, 32.0, 88.0, 60.0, 1.0},
-  {"left_knee_joint", 3, kPosition, -0.087267, 2.8798, 20.0, 139.0, 100.0, 2.0},
-  {"left_ankle_pitch_joint", 4, kPosition, -0.87267, 0.5236, 30.0, 35.0, 40.0, 1.0},
-  {"left_ankle_roll_joint", 5, kPosition, -0.2618, 0.2618, 30.0, 35.0, 40.0, 1.0},
-  {"right_hip_pitch_joint", 6, kPosition, -2.5307, 2.8798, 32.0, 88.0, 60.0, 1.0},
-  {"right_hip_roll_joint", 7, kPosition, -2.9671, 0.5236, 20.0, 139.0, 60.0, 1.0},
-  {"right_hip_yaw_joint", 8, kPosition, -2.7576, 2.7576, 32.0, 88.0, 60.0, 1.0},
-  {"right_knee_joint", 9, kPosition, -0.087267, 2.8798, 20.0, 139.0, 100.0, 2.0},
-  {"right_ankle_pitch_joint", 10, kPosition, -0.87267, 0.5236, 30.0, 35.0, 40.0, 1.0},
-  {"right_ankle_roll_joint", 11, kPosition, -0.2618, 0.2618, 30.0, 35.0, 40.0, 1.0},
-  {"waist_yaw_joint", 12, kPosition, -2.618, 2.618, 32.0, 88.0, 60.0, 1.0},
-  {"waist_roll_joint", 13, kPosition, -0.52, 0.52, 30.0, 35.0, 40.0, 1.0},
-  {"waist_pitch_joint", 14, kPosition, -0.52, 0.52, 30.0, 35.0, 40.0, 1.0},
-  {"left_shoulder_pitch_joint", 15, kPosition, -3.0892, 2.6704, 37.0, 25.0, 40.0, 1.0},
-  {"left_shoulder_roll_joint", 16, kPosition, -1.5882, 2.2515, 37.0, 25.0, 40.0, 1.0},
-  {"left_shoulder_yaw_joint", 17, kPosition, -2.618, 2.618, 37.0, 25.0, 40.0, 1.0},
-  {"left_elbow_joint", 18, kPosition, -1.0472, 2.0944, 37.0, 25.0, 40.0, 1.0},
-  {"left_wrist_roll_joint", 19, kPosition, -1.972222054, 1.972222054, 37.0, 25.0, 40.0, 1.0},
-  {"left_wrist_pitch_joint", 20, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0},
-  {"left_wrist_yaw_joint", 21, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0},
-  {"right_shoulder_pitch_joint", 22, kPosition, -3.0892, 2.6704, 37.0, 25.0, 40.0, 1.0},
-  {"right_shoulder_roll_joint", 23, kPosition, -2.2515, 1.5882, 37.0, 25.0, 40.0, 1.0},
-  {"right_shoulder_yaw_joint", 24, kPosition, -2.618, 2.618, 37.0, 25.0, 40.0, 1.0},
-  {"right_elbow_joint", 25, kPosition, -1.0472, 2.0944, 37.0, 25.0, 40.0, 1.0},
-  {"right_wrist_roll_joint", 26, kPosition, -1.972222054, 1.972222054, 37.0, 25.0, 40.0, 1.0},
-  {"right_wrist_pitch_joint", 27, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0},
-  {"right_wrist_yaw_joint", 28, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0},
+  {"left_hip_pitch_joint", 0, kPosition, -2.5307, 2.8798, 32.0, 88.0, 60.0, 1.0, 0},
+  {"left_hip_roll_joint", 1, kPosition, -0.5236, 2.9671, 20.0, 139.0, 60.0, 1.0, 0},
+  {"left_hip_yaw_joint", 2, kPosition, -2.7576, 2.7576, 32.0, 88.0, 60.0, 1.0, 0},
+  {"left_knee_joint", 3, kPosition, -0.087267, 2.8798, 20.0, 139.0, 100.0, 2.0, 0},
+  {"left_ankle_pitch_joint", 4, kPosition, -0.87267, 0.5236, 30.0, 35.0, 40.0, 1.0, 0},
+  {"left_ankle_roll_joint", 5, kPosition, -0.2618, 0.2618, 30.0, 35.0, 40.0, 1.0, 0},
+  {"right_hip_pitch_joint", 6, kPosition, -2.5307, 2.8798, 32.0, 88.0, 60.0, 1.0, 1},
+  {"right_hip_roll_joint", 7, kPosition, -2.9671, 0.5236, 20.0, 139.0, 60.0, 1.0, 1},
+  {"right_hip_yaw_joint", 8, kPosition, -2.7576, 2.7576, 32.0, 88.0, 60.0, 1.0, 1},
+  {"right_knee_joint", 9, kPosition, -0.087267, 2.8798, 20.0, 139.0, 100.0, 2.0, 1},
+  {"right_ankle_pitch_joint", 10, kPosition, -0.87267, 0.5236, 30.0, 35.0, 40.0, 1.0, 1},
+  {"right_ankle_roll_joint", 11, kPosition, -0.2618, 0.2618, 30.0, 35.0, 40.0, 1.0, 1},
+  {"waist_yaw_joint", 12, kPosition, -2.618, 2.618, 32.0, 88.0, 60.0, 1.0, 2},
+  {"waist_roll_joint", 13, kPosition, -0.52, 0.52, 30.0, 35.0, 40.0, 1.0, 2},
+  {"waist_pitch_joint", 14, kPosition, -0.52, 0.52, 30.0, 35.0, 40.0, 1.0, 2},
+  {"left_shoulder_pitch_joint", 15, kPosition, -3.0892, 2.6704, 37.0, 25.0, 40.0, 1.0, 3},
+  {"left_shoulder_roll_joint", 16, kPosition, -1.5882, 2.2515, 37.0, 25.0, 40.0, 1.0, 3},
+  {"left_shoulder_yaw_joint", 17, kPosition, -2.618, 2.618, 37.0, 25.0, 40.0, 1.0, 3},
+  {"left_elbow_joint", 18, kPosition, -1.0472, 2.0944, 37.0, 25.0, 40.0, 1.0, 3},
+  {"left_wrist_roll_joint", 19, kPosition, -1.972222054, 1.972222054, 37.0, 25.0, 40.0, 1.0, 3},
+  {"left_wrist_pitch_joint", 20, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0, 3},
+  {"left_wrist_yaw_joint", 21, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0, 3},
+  {"right_shoulder_pitch_joint", 22, kPosition, -3.0892, 2.6704, 37.0, 25.0, 40.0, 1.0, 4},
+  {"right_shoulder_roll_joint", 23, kPosition, -2.2515, 1.5882, 37.0, 25.0, 40.0, 1.0, 4},
+  {"right_shoulder_yaw_joint", 24, kPosition, -2.618, 2.618, 37.0, 25.0, 40.0, 1.0, 4},
+  {"right_elbow_joint", 25, kPosition, -1.0472, 2.0944, 37.0, 25.0, 40.0, 1.0, 4},
+  {"right_wrist_roll_joint", 26, kPosition, -1.972222054, 1.972222054, 37.0, 25.0, 40.0, 1.0, 4},
+  {"right_wrist_pitch_joint", 27, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0, 4},
+  {"right_wrist_yaw_joint", 28, kPosition, -1.614429558, 1.614429558, 22.0, 5.0, 40.0, 1.0, 4},
 }};
 static_assert(robot_hardware_interface::slots_are_valid(kJoints, G1_NUM_MOTOR), "joint table");
 
-// Plugin and node name, joints, IMU sensor name, and the <hardware> parameter defaults:
+// Plugin and node name, joints, IMU sensor name, motor groups, and the <hardware> parameter
+// defaults:
 // network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
-// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c
+// fault_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c, motor_temperature_error_c,
+// motor_error_fault_mask
 constexpr RobotSpec kRobot{"robot_hardware_interface/unitree/G1HardwareInterface",
   "g1_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
-  {"eth0", true, 2000, 1, 100, 1000, 1000, 70, 85}};
+  {{"left leg motors", "right leg motors", "waist motors", "left arm motors", "right arm motors"}},
+  {"eth0", true, 2000, 1, 100, 1000, 1000, 70, 85, 0x0U}};
 
 // transport_options: domain_id, lowcmd_topic, lowstate_topic, mode_pr (hg: 0 PR, 1 AB),
 // motor modes (go), release_motion_control, verify_state_crc

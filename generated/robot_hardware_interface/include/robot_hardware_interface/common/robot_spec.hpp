@@ -42,7 +42,12 @@ struct JointSpec
   double effort_max;         // bound of |feed-forward effort|
   double default_stiffness;  // vendor YAML default_gains: kp while stiffness is not claimed
   double default_damping;    // kd while damping is not claimed
+  size_t motor_group;        // its motor's /diagnostics status: index into RobotSpec::motor_groups
 };
+
+// /diagnostics has one status per motor group, the joints by limb ("left leg motors"): at most
+// this many (rhi_gen/model/motor_groups.py MAX_MOTOR_GROUPS: 7 sides by 6 limbs).
+inline constexpr size_t kMaxMotorGroups = 48;
 
 // Defaults of the <hardware> parameters (the vendor YAML's `parameters`).
 struct ParameterDefaults
@@ -56,6 +61,7 @@ struct ParameterDefaults
   uint64_t diagnostics_period_ms;      // 0: no /diagnostics
   uint64_t motor_temperature_warn_c;   // /diagnostics levels of the motors
   uint64_t motor_temperature_error_c;
+  uint64_t motor_error_fault_mask;     // motor error code bits that fault the robot, 0: none do
 };
 
 // Everything the driver core needs to know about one robot; each robot's source file defines one.
@@ -66,6 +72,7 @@ struct RobotSpec
   const JointSpec * joints;  // URDF order
   size_t joint_count;
   const char * imu_name;     // sensor name of the IMU interfaces; nullptr: the robot has no IMU
+  std::array<const char *, kMaxMotorGroups> motor_groups;  // names; nullptr after the last
   ParameterDefaults parameters;
 };
 

@@ -97,8 +97,8 @@ public:
     transport_->stop();
     core_.reset_for_activation();
     link_dead_reported_ = false;
-    hot_motor_reported_ = false;
-    hot_slot_ = -1;  // the next motor health frame says again
+    motor_fault_reported_ = false;
+    faulty_slot_ = -1;  // the next motor health frame says again
     const CallbackReturn user = on_activate_hook();
     if (user != CallbackReturn::SUCCESS) {
       return user;
@@ -180,7 +180,7 @@ public:
     const int64_t now_ns = steady_ns(start);
     core_.read_state();
     if (motor_health_ != 0U && core_.read_motor_health()) {
-      hot_slot_ = slot_too_hot();
+      faulty_slot_ = faulty_motor_slot();
       publish_slow_state_values();
     }
     // Only an active component faults: ros2_control also reads an inactive one, and a robot that
@@ -188,14 +188,14 @@ public:
     const int64_t silence_ns = core_.silence_ns(now_ns);  // once: the fault and the GPIO
     const bool active = active_.load(std::memory_order_relaxed);
     const bool link_dead = active && core_.link_dead(silence_ns);
-    const bool motor_too_hot = active && hot_slot_ >= 0;
-    core_.read_health(silence_ns, link_dead || motor_too_hot);
+    const bool motor_fault = active && faulty_slot_ >= 0;
+    core_.read_health(silence_ns, link_dead || motor_fault);
     publish_state_values();
     if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(link_dead)) {
       return report_dead_link();
     }
-    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(motor_too_hot)) {
-      return report_hot_motor();
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(motor_fault)) {
+      return report_motor_fault();
     }
     core_.monitor().check_read_latency(start);
     return return_type::OK;
@@ -331,8 +331,8 @@ private:
 
   // /diagnostics (diagnostic_msgs/DiagnosticArray) every diagnostics_period_ms from its own
   // thread: "<hardware>: link", "<hardware>: safety" and, where the state carries motor health,
-  // "<hardware>: motors". Reads only atomics and its own buffer (HealthFacts): the hot paths never
-  // wait for it, and it may allocate.
+  // one per motor group ("<hardware>: left leg motors", RobotSpec::motor_groups). Reads only
+  // atomics and its own buffer (HealthFacts): the hot paths never wait for it, and it may allocate.
   bool start_diagnostics()
   {
     const DriverParameters & p = core_.parameters();
@@ -347,15 +347,24 @@ private:
       return false;
     }
     const std::string prefix = hardware_name_ + ": ";
-    diagnostics_message_.status.resize(motor_health_ != 0U ? 3 : 2);
-    const char * names[] = {"link", "safety", "motors"};
-    for (size_t i = 0; i < diagnostics_message_.status.size(); ++i) {
-      diagnostics_message_.status[i].name = prefix + names[i];
-      diagnostics_message_.status[i].hardware_id = hardware_name_;
+    const RobotSpec & spec = core_.spec();
+    size_t groups = 0;
+    const bool motors = motor_health_ != 0U;
+    while (motors && groups < kMaxMotorGroups && spec.motor_groups[groups] != nullptr) {
+      ++groups;
+    }
+    diagnostics_message_.status.resize(2 + groups);
+    diagnostics_message_.status[0].name = prefix + "link";
+    diagnostics_message_.status[1].name = prefix + "safety";
+    for (size_t g = 0; g < groups; ++g) {
+      diagnostics_message_.status[2 + g].name = prefix + spec.motor_groups[g];
+    }
+    for (auto & status : diagnostics_message_.status) {
+      status.hardware_id = hardware_name_;
     }
     diagnostics_limits_ = DiagnosticsLimits{
       p.state_timeout_ms, p.fault_timeout_ms, static_cast<double>(p.motor_temperature_warn_c),
-      static_cast<double>(p.motor_temperature_error_c)};
+      static_cast<double>(p.motor_temperature_error_c), p.motor_error_fault_mask};
     diagnostics_thread_.start(
       std::chrono::milliseconds(p.diagnostics_period_ms), [this]() {publish_diagnostics();});
     return true;
@@ -371,15 +380,16 @@ private:
     DriverDiagnostics::describe_link(diagnostics_message_.status[0], facts, diagnostics_limits_);
     DriverDiagnostics::describe_safety(diagnostics_message_.status[1], facts, previous_facts_);
     previous_facts_ = facts;
-    if (motor_health_ != 0U) {
-      const MotorHealthFrame<N> * frame = core_.diagnostics_motor_health();
+    const MotorHealthFrame<N> * frame =
+      motor_health_ != 0U ? core_.diagnostics_motor_health() : nullptr;
+    for (size_t i = 2; i < diagnostics_message_.status.size(); ++i) {
       if (frame != nullptr) {
         DriverDiagnostics::describe_motors(
-          diagnostics_message_.status[2], *frame, core_.slots().slot_joint_names(), motor_health_,
+          diagnostics_message_.status[i], *frame, core_.spec(), i - 2, motor_health_,
           diagnostics_limits_);
       } else {
         DriverDiagnostics::set(
-          diagnostics_message_.status[2], diagnostic_msgs::msg::DiagnosticStatus::WARN,
+          diagnostics_message_.status[i], diagnostic_msgs::msg::DiagnosticStatus::WARN,
           "no motor health from the robot yet");
       }
     }
@@ -387,39 +397,62 @@ private:
     diagnostics_publisher_->publish(diagnostics_message_);
   }
 
-  // read(), on a new motor health frame: the first driven slot at or above
-  // motor_temperature_error_c (where the state carries temperatures), -1 for none.
-  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE int slot_too_hot()
+  // Whether the motor of `slot` is at or above motor_temperature_error_c (where the state carries
+  // temperatures).
+  bool motor_too_hot(size_t slot) const
   {
-    if ((motor_health_ & kMotorTemperature) == 0U) {
-      return -1;
-    }
-    const auto limit = static_cast<double>(core_.parameters().motor_temperature_error_c);
-    const MotorHealthFrame<N> & health = core_.motor_health();
+    return (motor_health_ & kMotorTemperature) != 0U &&
+           core_.motor_health().temperature[slot] >=
+           static_cast<double>(core_.parameters().motor_temperature_error_c);
+  }
+
+  // Whether the motor of `slot` reports an error code with a bit of motor_error_fault_mask (where
+  // the state carries error codes; the mask is 0, nothing faults, unless the vendor YAML sets it).
+  bool motor_in_error(size_t slot) const
+  {
+    return (motor_health_ & kMotorErrorCode) != 0U &&
+           (motor_error_bits(core_.motor_health().error_code[slot]) &
+           core_.parameters().motor_error_fault_mask) != 0U;
+  }
+
+  // read(), on a new motor health frame: the first driven slot too hot or in error, -1 for none.
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE int faulty_motor_slot()
+  {
     for (const size_t slot : core_.slots().mapped_slots()) {
-      if (health.temperature[slot] >= limit) {
+      if (motor_too_hot(slot) || motor_in_error(slot)) {
         return static_cast<int>(slot);
       }
     }
     return -1;
   }
 
-  // read() of an active robot with a motor too hot: ERROR (ros2_control stops the controllers and
-  // on_error holds every joint damping-only), said once per activation.
-  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_hot_motor()
+  // read() of an active robot with a motor too hot or in error: ERROR (ros2_control stops the
+  // controllers and on_error holds every joint damping-only), said once per activation.
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_motor_fault()
   {
-    if (!hot_motor_reported_) {
-      hot_motor_reported_ = true;
-      const auto slot = static_cast<size_t>(hot_slot_);
-      const char * joint = core_.slots().slot_joint_names()[slot];
-      RCLCPP_ERROR(
-        core_.logger(), "motor too hot: %s (SDK slot %zu) at %.1f C, motor_temperature_error_c is "
-        "%" PRIu64 ": read() returns ERROR, ros2_control stops the controllers and the joints are "
-        "held damping-only. Let the motor cool, then set the component active again (ros2 control "
-        "set_hardware_component_state %s active)", joint, slot,
-        core_.motor_health().temperature[slot], core_.parameters().motor_temperature_error_c,
-        hardware_name_.c_str());
+    if (motor_fault_reported_) {
+      return return_type::ERROR;
     }
+    motor_fault_reported_ = true;
+    const auto slot = static_cast<size_t>(faulty_slot_);
+    const char * joint = core_.slots().slot_joint_names()[slot];
+    if (!motor_too_hot(slot)) {
+      RCLCPP_ERROR(
+        core_.logger(), "motor error: %s (SDK slot %zu) reports error code 0x%" PRIX64 ", a bit of "
+        "motor_error_fault_mask 0x%" PRIX64 ": read() returns ERROR, ros2_control stops the "
+        "controllers and the joints are held damping-only. Clear the motor's error (the vendor's "
+        "tools), then set the component active again (ros2 control set_hardware_component_state "
+        "%s active)", joint, slot, motor_error_bits(core_.motor_health().error_code[slot]),
+        core_.parameters().motor_error_fault_mask, hardware_name_.c_str());
+      return return_type::ERROR;
+    }
+    RCLCPP_ERROR(
+      core_.logger(), "motor too hot: %s (SDK slot %zu) at %.1f C, motor_temperature_error_c is "
+      "%" PRIu64 ": read() returns ERROR, ros2_control stops the controllers and the joints are "
+      "held damping-only. Let the motor cool, then set the component active again (ros2 control "
+      "set_hardware_component_state %s active)", joint, slot,
+      core_.motor_health().temperature[slot], core_.parameters().motor_temperature_error_c,
+      hardware_name_.c_str());
     return return_type::ERROR;
   }
 
@@ -643,8 +676,8 @@ private:
   HealthFacts previous_facts_;
   PeriodicThread diagnostics_thread_;  // last: stopped first when destroyed
   bool link_dead_reported_{false};  // controller thread: read() said ERROR in this activation
-  bool hot_motor_reported_{false};  // controller thread: read() said a motor is too hot
-  int hot_slot_{-1};                // controller thread: a motor at motor_temperature_error_c
+  bool motor_fault_reported_{false};  // controller thread: read() said a motor is faulty
+  int faulty_slot_{-1};  // controller thread: a motor too hot or in error, faulty_motor_slot()
   std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
 };
 

@@ -14,6 +14,9 @@ code through the harness's fake robot (tests/cpp/harness/transport_<transport>.h
 * state       the state callback (one complete state frame delivered by the stand-in transport)
 * state_dec4  the same with state_decimation = 4 (average per delivered frame)
 * writer      one command writer cycle
+* health_msg  the motor health callback, where motor health is a message of its own (EngineAI MotorDebug,
+              50 Hz or more on the robot; a health frame is kept every 10 ms, so most calls only look at
+              the clock)
 * readwrite_pos  read() + write() of one controller cycle with a producer thread delivering state, under
                  a position-only claim (each joint's position, or velocity for a wheel: the common case)
 * readwrite_all  the same with every command interface claimed
@@ -75,10 +78,10 @@ from tests.support import cpp_build, vendor_msgs  # noqa: E402
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
 TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics"}
-DRIVER_PATHS = ("state", "state_dec4", "writer", "readwrite_pos", "readwrite_all", "readwrite_cal")
+DRIVER_PATHS = ("state", "state_dec4", "health_msg", "writer", "readwrite_pos", "readwrite_all", "readwrite_cal")
 READWRITE_PATHS = ("readwrite_pos", "readwrite_all", "readwrite_cal")
-FLOOR_OF = {"state": "state", "state_dec4": "state", "writer": "writer", "readwrite_pos": "readwrite",
-            "readwrite_all": "readwrite", "readwrite_cal": "readwrite"}
+FLOOR_OF = {"state": "state", "state_dec4": "state", "health_msg": "state", "writer": "writer",
+            "readwrite_pos": "readwrite", "readwrite_all": "readwrite", "readwrite_cal": "readwrite"}
 LOCKS_OF = {"readwrite_pos": "locks_pos", "readwrite_all": "locks_all", "readwrite_cal": "locks_all"}
 DEFAULT_DISTROS = ("humble", "jazzy", "rolling")
 FLAGS = ("-O2", "-g")  # -g: function names for callgrind's per-function figures; code is the same
@@ -120,7 +123,7 @@ def run_times(binary: Path, iterations: int, paths: tuple[str, ...] = ()) -> dic
 DRIVER_ENTRY = re.compile(
     r"^std::_Function_handler<[^,]*, robot_hardware_interface::"
     r"|^rclcpp::GenericTimer<robot_hardware_interface::.*>::execute_callback\("
-    r"|^robot_hardware_interface::.*::(on_low_state|on_group_state|on_joint_state|write_command)\(")
+    r"|^robot_hardware_interface::.*::(on_low_state|on_group_state|on_joint_state|on_motor_debug|write_command)\(")
 
 
 def callgrind(binary: Path, path: str, iterations: int, work: Path) -> tuple[float, dict[str, int]]:
@@ -197,10 +200,11 @@ def main() -> None:
 
 def report(label: str, distro: str, binary: Path, args, have_valgrind: bool, work: Path, full: bool) -> None:
     """The table of one robot on one distro; ``full``: the transport paths too (the same on every distro)."""
-    driver_paths = DRIVER_PATHS if full else READWRITE_PATHS
+    driver_paths: tuple[str, ...] = DRIVER_PATHS if full else READWRITE_PATHS
     floors = [f"{k}_{f}" for k in ("memcpy", "shmutex") for f in ("state", "writer", "readwrite")]
     floors = [*(floors if full else ["memcpy_readwrite", "shmutex_readwrite"]), "locks_pos", "locks_all"]
     times = run_times(binary, args.iterations, () if full else (*driver_paths, *floors))
+    driver_paths = tuple(path for path in driver_paths if path in times)  # health_msg: EngineAI only
     instr: dict[str, float] = {}
     driver: dict[str, float] = {}
     if have_valgrind:

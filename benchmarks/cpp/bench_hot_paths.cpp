@@ -280,7 +280,7 @@ struct Path {
 
 
 std::vector<Path> paths() {
-  return {
+  std::vector<Path> all = {
       {"noop", 0, false, [](Rig&, Floors&) {}},  // the measuring loop itself (subtracted)
       {"state", 1, false, [](Rig& r, Floors&) { r.t.deliver_prepared(); }},
       {"state_dec4", 4, false, [](Rig& r, Floors&) { r.t.deliver_prepared(); }},
@@ -322,6 +322,10 @@ std::vector<Path> paths() {
          shmutex_handoff(f.cmd_mutex, f.cmd_slot, f.cmd_src, f.cmd_dst);
        }},
   };
+  if (Transport::kHealthMessage) {  // motor health in a message of its own (EngineAI MotorDebug): its callback
+    all.push_back({"health_msg", 1, false, [](Rig& r, Floors&) { r.t.deliver_prepared_health(); }});
+  }
+  return all;
 }
 
 // Latency of `iterations` calls (steady_clock around each call: its own cost is reported as

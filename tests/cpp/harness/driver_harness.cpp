@@ -231,18 +231,20 @@ void check_hot_path_allocations(Transport& t, SystemInterface& hw, Interfaces& i
   for (uint32_t k = 0; k < 20; ++k) {
     t.prepare_state(coded_state(k));
     t.deliver_prepared();
+    t.deliver_prepared_health();
     t.deliver_prepared_imu();
     hw.read(kTime, kPeriod);
     apply_command(ifs, cmd);
     hw.write(kTime, kPeriod);
     t.tick_writer();
   }
-  uint64_t in_state = 0, in_imu = 0, in_read = 0, in_write = 0, in_writer = 0;
+  uint64_t in_state = 0, in_health = 0, in_imu = 0, in_read = 0, in_write = 0, in_writer = 0;
   constexpr uint32_t kCycles = 200;
   const uint64_t sent_before = t.sent_messages();
   for (uint32_t k = 0; k < kCycles; ++k) {
     t.prepare_state(coded_state(100 + k));  // harness side, not counted
     in_state += rhi_alloc::count_in([&] { t.deliver_prepared(); });
+    in_health += rhi_alloc::count_in([&] { t.deliver_prepared_health(); });
     in_imu += rhi_alloc::count_in([&] { t.deliver_prepared_imu(); });
     in_read += rhi_alloc::count_in([&] { hw.read(kTime, kPeriod); });
     in_write += rhi_alloc::count_in([&] { hw.write(kTime, kPeriod); });
@@ -254,6 +256,7 @@ void check_hot_path_allocations(Transport& t, SystemInterface& hw, Interfaces& i
   CHECK_EQ(t.sent_messages() - sent_before, kCycles * Transport::command_messages_per_cycle(),
            "the measured cycles really sent commands");
   CHECK_EQ(in_state, 0U, "heap allocations in the state callback");
+  CHECK_EQ(in_health, 0U, "heap allocations in the motor health callback (a message of its own)");
   CHECK_EQ(in_imu, 0U, "heap allocations in the IMU callback");
   CHECK_EQ(in_read, 0U, "heap allocations in read()");
   CHECK_EQ(in_write, 0U, "heap allocations in write()");

@@ -56,13 +56,11 @@ public:
     imu_info_.linear_acceleration.z = f.acc[2];
     imu_info_.rpy.x = 0.125;  // not exported; present as on the robot
   }
-  // The state, then the motor debug message (the robot sends it at 50 Hz or more; here with every state, the
-  // driver keeps one every 10 ms).
-  size_t deliver_prepared() {
-    const size_t reached = rhi_fake::ros::deliver<StateMsg>(kStateTopic, state_msg_);
-    rhi_fake::ros::deliver<DebugMsg>(kMotorDebugTopic, debug_msg_);
-    return reached;
-  }
+  size_t deliver_prepared() { return rhi_fake::ros::deliver<StateMsg>(kStateTopic, state_msg_); }
+  // Motor temperatures travel in MotorDebug (50 Hz or more on the robot): deliver_state() sends one after
+  // every state (the driver keeps one every 10 ms).
+  static constexpr bool kHealthMessage = true;
+  size_t deliver_prepared_health() { return rhi_fake::ros::deliver<DebugMsg>(kMotorDebugTopic, debug_msg_); }
   // A MotorDebug the driver must drop (the temperatures stay): one motor short, or a NaN.
   size_t deliver_bad_motor_debug(bool short_array) {
     DebugMsg bad = debug_msg_;
@@ -75,7 +73,9 @@ public:
   }
   size_t deliver_state(const StateFrame& f) {
     prepare_state(f);
-    return deliver_prepared();
+    const size_t reached = deliver_prepared();
+    deliver_prepared_health();
+    return reached;
   }
   size_t deliver_prepared_imu() { return rhi_fake::ros::deliver<ImuMsg>(kImuTopic, imu_info_); }
   size_t deliver_imu(const StateFrame& f) {

@@ -15,6 +15,9 @@ namespace rhi_test {
 class RosTransportBase {
 public:
   static constexpr bool kImuInState = false;
+  // Motor health in a message of its own (EngineAI MotorDebug): none here, it travels with the state.
+  static constexpr bool kHealthMessage = false;
+  size_t deliver_prepared_health() { return 0; }
 
   // The command period as the transport sees it: the driver's one wall timer.
   bool writer_period_us(uint64_t& out) const {

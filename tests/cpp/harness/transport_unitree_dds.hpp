@@ -30,6 +30,9 @@ namespace rhi_test {
 
 class Transport {
 public:
+  // Motor health in a message of its own (EngineAI MotorDebug): none here, it travels with the state.
+  static constexpr bool kHealthMessage = false;
+  size_t deliver_prepared_health() { return 0; }
   using LowCmd = unitree_hg::msg::dds_::LowCmd_;
   using LowState = unitree_hg::msg::dds_::LowState_;
   static constexpr const char* kName = "unitree_dds";

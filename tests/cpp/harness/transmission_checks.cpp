@@ -44,14 +44,14 @@ constexpr size_t N = 6;
 using Core = DriverCore<N, float>;
 
 constexpr std::array<JointSpec, 5> kJoints = {{
-    {"reversed_geared", 0, CommandMode::kPosition, -1.0, 1.0, 3.0, 40.0, 20.0, 1.0},
-    {"plain", 1, CommandMode::kPosition, -2.0, 2.0, kNoLimit, kNoLimit, 10.0, 0.5},
-    {"wrist_pitch", 3, CommandMode::kPosition, -1.5, 1.5, kNoLimit, kNoLimit, 8.0, 0.4},
-    {"wrist_roll", 4, CommandMode::kPosition, -1.5, 1.5, kNoLimit, kNoLimit, 8.0, 0.4},
-    {"wheel", 5, CommandMode::kVelocity, -kNoLimit, kNoLimit, 30.0, 10.0, 0.0, 2.0},
+    {"reversed_geared", 0, CommandMode::kPosition, -1.0, 1.0, 3.0, 40.0, 20.0, 1.0, 0},
+    {"plain", 1, CommandMode::kPosition, -2.0, 2.0, kNoLimit, kNoLimit, 10.0, 0.5, 0},
+    {"wrist_pitch", 3, CommandMode::kPosition, -1.5, 1.5, kNoLimit, kNoLimit, 8.0, 0.4, 0},
+    {"wrist_roll", 4, CommandMode::kPosition, -1.5, 1.5, kNoLimit, kNoLimit, 8.0, 0.4, 0},
+    {"wheel", 5, CommandMode::kVelocity, -kNoLimit, kNoLimit, 30.0, 10.0, 0.0, 2.0, 0},
 }};
 constexpr RobotSpec kRobot{"test/TransmissionRobot", "transmission_robot", kJoints.data(), kJoints.size(),
-                           nullptr, {"lo", false, 2000, 1, 100, 1000, 0, 70, 85}};
+                           nullptr, {{"motors"}}, {"lo", false, 2000, 1, 100, 1000, 0, 70, 85, 0}};
 
 constexpr double kWristOffset[2] = {0.2, -0.3};
 constexpr std::array<JointTransmissionSpec, 4> kTransmissions = {{

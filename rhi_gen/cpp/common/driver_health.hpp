@@ -44,7 +44,9 @@ private:
 struct HealthFacts
 {
   bool active{false};           // between on_activate and on_deactivate / on_error
+  int64_t now_ns{0};            // steady time the facts were taken at, 0: never taken
   int64_t silence_ns{-1};       // without a valid state (since the newest, or the activation)
+  uint64_t valid_messages{0};   // valid state messages (each part, where the state comes in parts)
   uint64_t invalid_states{0};
   uint64_t stale_holds{0};
   uint64_t rejected_commands{0};
@@ -58,6 +60,15 @@ struct HealthFacts
     return silence_ns < 0 ? -1.0 : static_cast<double>(silence_ns) * 1e-6;
   }
   double age_ms() const {return age_ms_of(silence_ns);}
+  // Valid state messages per second since `earlier` facts, -1 without earlier ones.
+  double message_rate_since(const HealthFacts & earlier) const
+  {
+    if (earlier.now_ns == 0 || now_ns <= earlier.now_ns) {
+      return -1.0;
+    }
+    return static_cast<double>(valid_messages - earlier.valid_messages) * 1e9 /
+           static_cast<double>(now_ns - earlier.now_ns);
+  }
   bool no_state() const {return silence_ns < 0;}
   // No valid state for more than `timeout_ms`: stale after state_timeout_ms, dead after
   // fault_timeout_ms (an active component only: an inactive one may be silent).

@@ -1800,6 +1800,35 @@ void check_hardware_status() {
 }
 #endif
 
+// The link status counts the valid state messages (every group's, where the state comes in parts) and shows
+// their rate: 5 states between two messages add 5 per part.
+void check_link_message_count(Rig& rig, const std::string& hw, DiagnosticArray& a) {
+#if defined(RHI_TRANSPORT_AGIBOT_TOPICS)
+  constexpr uint64_t kMessagesPerState = kGroupCount;
+#else
+  constexpr uint64_t kMessagesPerState = 1;
+#endif
+  const auto count = [&hw](const DiagnosticArray& m) {
+    const DiagnosticStatus* l = status_named(m, hw + ": link");
+    return l == nullptr ? std::string("<no link status>") : value_of(*l, "valid state messages");
+  };
+  const std::string before = count(a);
+  for (uint32_t k = 0; k < 5; ++k) {
+    rig.t.deliver_state(coded_state(20 + k));
+  }
+  if (!next_diagnostics(a, "after 5 more states")) return;
+  const std::string after = count(a);
+  const uint64_t added = std::strtoull(after.c_str(), nullptr, 10) - std::strtoull(before.c_str(), nullptr, 10);
+  CHECK_EQ(added, 5 * kMessagesPerState, "valid state messages went from %s to %s over 5 states", before.c_str(),
+           after.c_str());
+  const DiagnosticStatus* l = status_named(a, hw + ": link");
+  const std::string rate = l != nullptr ? value_of(*l, "valid state messages [1/s]") : "<no link status>";
+  char* end = nullptr;
+  const double hz = std::strtod(rate.c_str(), &end);
+  CHECK(end != rate.c_str() && *end == '\0' && hz >= 0.0, "the link status shows a message rate (got '%s')",
+        rate.c_str());
+}
+
 // Every motor group has its status, OK on a healthy robot, and lists exactly its own joints (each joint in one
 // status); the joint `hot` (at 41 C) shows its temperature.
 void check_motor_groups(const DiagnosticArray& a, const std::string& hw, size_t hot) {
@@ -1930,6 +1959,7 @@ void test_diagnostics() {
       check_motor_groups(a, hw, hot);
     }
   }
+  check_link_message_count(rig, hw, a);
   if (motors && kMotorHealth[0]) {
     deliver_health(rig, health_state(2, 40.0, hot, 65.0, 0.0));
     if (next_diagnostics(a, "a hot motor")) {

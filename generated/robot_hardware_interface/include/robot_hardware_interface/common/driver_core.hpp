@@ -181,7 +181,9 @@ public:
   {
     HealthFacts facts;
     facts.active = active;
+    facts.now_ns = now_ns;
     facts.silence_ns = freshness_.silence_ns(now_ns);
+    facts.valid_messages = freshness_.valid_messages().get();
     facts.invalid_states = freshness_.invalid_states().get();
     facts.stale_holds = guard_.stale_holds().get();
     facts.rejected_commands = guard_.rejected_commands().get();

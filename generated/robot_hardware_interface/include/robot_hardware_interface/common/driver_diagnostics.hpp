@@ -50,9 +50,11 @@ public:
   using Status = diagnostic_msgs::msg::DiagnosticStatus;
 
   // "<hardware>: link": OK while the state is fresh, WARN while the driver holds a stale one (or
-  // an inactive robot is silent), ERROR once it is dead (fault_timeout_ms, active only).
+  // an inactive robot is silent), ERROR once it is dead (fault_timeout_ms, active only); the rate
+  // of valid state messages since `previous`.
   static void describe_link(
-    Status & status, const HealthFacts & facts, const DiagnosticsLimits & limits)
+    Status & status, const HealthFacts & facts, const HealthFacts & previous,
+    const DiagnosticsLimits & limits)
   {
     const double age_ms = facts.age_ms();
     const std::string silence = "no valid state for " + number(age_ms, "%.0f") + " ms";
@@ -71,6 +73,9 @@ public:
       set(status, Status::OK, facts.active ? "state fresh" : "state fresh (inactive)");
     }
     add(status, "state age [ms]", number(age_ms));
+    const double rate = facts.message_rate_since(previous);
+    add(status, "valid state messages [1/s]", rate >= 0.0 ? number(rate, "%.0f") : "n/a");
+    add(status, "valid state messages", std::to_string(facts.valid_messages));
     add(status, "invalid state frames", std::to_string(facts.invalid_states));
     add(status, "stale holds", std::to_string(facts.stale_holds));
     add(status, "active", facts.active ? "true" : "false");

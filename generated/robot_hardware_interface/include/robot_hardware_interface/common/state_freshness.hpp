@@ -67,10 +67,15 @@ public:
   // IMU callback: a rejected sample; returns the count.
   uint64_t reject_imu() {return ++invalid_imu_count_;}
 
-  // The newest valid state is this old (steady time): multi-stream transports report the age of
-  // their oldest stream here.
+  // Any thread: valid state messages since on_init (each group's message, for a transport that
+  // sends the state in parts), for the link's message rate on /diagnostics.
+  const HealthCounter & valid_messages() const {return valid_messages_;}
+
+  // State thread: a valid state message; the newest valid state is this old (steady time):
+  // multi-stream transports report the age of their oldest stream here.
   void mark_fresh(int64_t state_time_ns)
   {
+    valid_messages_.add();
     last_state_time_ns_.store(state_time_ns, std::memory_order_release);
   }
 
@@ -98,6 +103,7 @@ private:
   std::atomic<int64_t> activated_ns_{0};        // steady time of the last reset() (any reader)
   bool frames_valid_{false};                    // state thread: the last parsed frame was valid
   HealthCounter invalid_states_;                // state thread: rejected frames
+  HealthCounter valid_messages_;                // state thread: mark_fresh() calls
   uint64_t invalid_imu_count_{0};               // IMU callback: rejected samples
 };
 

@@ -377,7 +377,8 @@ private:
     for (auto & status : diagnostics_message_.status) {
       status.values.clear();
     }
-    DriverDiagnostics::describe_link(diagnostics_message_.status[0], facts, diagnostics_limits_);
+    DriverDiagnostics::describe_link(
+      diagnostics_message_.status[0], facts, previous_facts_, diagnostics_limits_);
     DriverDiagnostics::describe_safety(diagnostics_message_.status[1], facts, previous_facts_);
     previous_facts_ = facts;
     const MotorHealthFrame<N> * frame =

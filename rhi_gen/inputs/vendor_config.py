@@ -122,33 +122,26 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     params = Parameters()
     if "parameters" in data:
         m = v.mapping(data["parameters"], "parameters", PARAMETER_KEYS)
+        d, p = params, "parameters"
+
+        def whole(key: str, low: int, high: int) -> int:
+            """parameters.<key>, a whole number in [low, high]; the default when absent."""
+            default: int = getattr(d, key)
+            return v.optional(m, p, key, v.integer_in(low, high), default)
+
         params = Parameters(
-            network_interface=v.string(m["network_interface"], "parameters.network_interface", NETIF_RE,
-                                       "network interface name") if "network_interface" in m
-            else params.network_interface,
-            enable_monitor=v.boolean(m["enable_monitor"], "parameters.enable_monitor")
-            if "enable_monitor" in m else params.enable_monitor,
-            command_writer_period_us=v.integer(m["command_writer_period_us"],
-                                               "parameters.command_writer_period_us", 100, 10_000_000)
-            if "command_writer_period_us" in m else params.command_writer_period_us,
-            state_decimation=v.integer(m["state_decimation"], "parameters.state_decimation", 1, 10_000)
-            if "state_decimation" in m else params.state_decimation,
-            state_timeout_ms=v.integer(m["state_timeout_ms"], "parameters.state_timeout_ms", 1, 600_000)
-            if "state_timeout_ms" in m else params.state_timeout_ms,
-            fault_timeout_ms=v.integer(m["fault_timeout_ms"], "parameters.fault_timeout_ms", 2, 3_600_000)
-            if "fault_timeout_ms" in m else params.fault_timeout_ms,
-            diagnostics_period_ms=v.integer(m["diagnostics_period_ms"], "parameters.diagnostics_period_ms", 0,
-                                            60_000)
-            if "diagnostics_period_ms" in m else params.diagnostics_period_ms,
-            motor_temperature_warn_c=v.integer(m["motor_temperature_warn_c"], "parameters.motor_temperature_warn_c",
-                                               1, 200)
-            if "motor_temperature_warn_c" in m else params.motor_temperature_warn_c,
-            motor_temperature_error_c=v.integer(m["motor_temperature_error_c"],
-                                                "parameters.motor_temperature_error_c", 1, 200)
-            if "motor_temperature_error_c" in m else params.motor_temperature_error_c,
-            motor_error_fault_mask=v.integer(m["motor_error_fault_mask"], "parameters.motor_error_fault_mask", 0,
-                                             MAX_ERROR_FAULT_MASK)
-            if "motor_error_fault_mask" in m else params.motor_error_fault_mask,
+            network_interface=v.optional(m, p, "network_interface",
+                                         lambda x, q: v.string(x, q, NETIF_RE, "network interface name"),
+                                         d.network_interface),
+            enable_monitor=v.optional(m, p, "enable_monitor", v.boolean, d.enable_monitor),
+            command_writer_period_us=whole("command_writer_period_us", 100, 10_000_000),
+            state_decimation=whole("state_decimation", 1, 10_000),
+            state_timeout_ms=whole("state_timeout_ms", 1, 600_000),
+            fault_timeout_ms=whole("fault_timeout_ms", 2, 3_600_000),
+            diagnostics_period_ms=whole("diagnostics_period_ms", 0, 60_000),
+            motor_temperature_warn_c=whole("motor_temperature_warn_c", 1, 200),
+            motor_temperature_error_c=whole("motor_temperature_error_c", 1, 200),
+            motor_error_fault_mask=whole("motor_error_fault_mask", 0, MAX_ERROR_FAULT_MASK),
         )
         _check_fault_timeout(v, params, given="fault_timeout_ms" in m)
         _check_temperatures(v, params, given="motor_temperature_error_c" in m)

@@ -13,8 +13,8 @@
 //     HardwareComponentInterfaceParams &); the framework creates the handles from the description
 //     (on_export_*_interfaces()) and owns their values; the component gets its logger from it.
 //     The old on_init and the raw-pointer handles are deprecated (4.x, 5.x) or gone (6.x).
-//   - 5.10+ (Kilted, Lyrical, Rolling): the HardwareStatus hooks, which the driver fills through
-//     init_status() / update_status().
+//   - 5.10+ (Kilted, Lyrical, Rolling): the HardwareStatus hooks
+//     (ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS), which the driver overrides.
 // Drivers derive from SystemInterfaceAdapter, keep their values in plain doubles, and call
 // publish_state_values() / fetch_command_values() / publish_command_values() where the values
 // change hands: no-ops with raw pointers, a try-lock copy per interface with framework handles
@@ -166,26 +166,7 @@ public:
   }
 #endif
 
-#if ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
-  // Called by init() before on_init (info_ is parsed), and by the framework's status timer.
-  CallbackReturn init_hardware_status_message(control_msgs::msg::HardwareStatus & msg) override
-  {
-    return init_status(info_.name, msg);
-  }
-
-  return_type update_hardware_status_message(control_msgs::msg::HardwareStatus & msg) override
-  {
-    return update_status(msg);
-  }
-#endif
-
 protected:
-#if ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
-  virtual CallbackReturn init_status(
-    const std::string & hardware_name, control_msgs::msg::HardwareStatus & msg) = 0;
-  virtual return_type update_status(control_msgs::msg::HardwareStatus & msg) = 0;
-#endif
-
   // `logger` is the logger ros2_control gives the component (its own one on Humble).
   explicit SystemInterfaceAdapter(const rclcpp::Logger & logger)
   : logger_(logger)

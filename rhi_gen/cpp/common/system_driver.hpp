@@ -28,6 +28,7 @@
 #include <rclcpp_lifecycle/state.hpp>
 
 #include "robot_hardware_interface/common/driver_core.hpp"
+#include "robot_hardware_interface/common/driver_diagnostics.hpp"
 #include "robot_hardware_interface/common/ros2_control_compat.hpp"
 #include "robot_hardware_interface/common/robot_spec.hpp"
 #include "robot_hardware_interface/common/types.hpp"
@@ -268,11 +269,12 @@ private:
 
 #if ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS
   // ros2_control's ~/hardware_status (5.10+, when status_publish_rate is set): one device, the
-  // robot, whose one state is the driver's health. Filled from HealthFacts (atomics) into strings
-  // reserved here, so the update allocates nothing, whichever thread the framework calls it from.
-  CallbackReturn init_status(
-    const std::string & hardware_name, control_msgs::msg::HardwareStatus & msg) override
+  // robot, whose one state is the driver's health. init() calls this before on_init, with info_
+  // already parsed. Filled from HealthFacts (atomics) into strings reserved here, so the update
+  // allocates nothing, whichever thread the framework calls it from.
+  CallbackReturn init_hardware_status_message(control_msgs::msg::HardwareStatus & msg) override
   {
+    const std::string & hardware_name = info_.name;
     msg.hardware_id = hardware_name;
     msg.hardware_device_states.resize(1);
     control_msgs::msg::HardwareDeviceStatus & device = msg.hardware_device_states.front();
@@ -288,7 +290,7 @@ private:
     return CallbackReturn::SUCCESS;
   }
 
-  return_type update_status(control_msgs::msg::HardwareStatus & msg) override
+  return_type update_hardware_status_message(control_msgs::msg::HardwareStatus & msg) override
   {
     using State = control_msgs::msg::GenericHardwareState;
     if (msg.hardware_device_states.size() != 1 ||

@@ -20,7 +20,6 @@
 #include "robot_hardware_interface/common/command_claims.hpp"
 #include "robot_hardware_interface/common/command_guard.hpp"
 #include "robot_hardware_interface/common/data_buffer.hpp"
-#include "robot_hardware_interface/common/driver_diagnostics.hpp"
 #include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/driver_monitor.hpp"
 #include "robot_hardware_interface/common/hardware_parameters.hpp"

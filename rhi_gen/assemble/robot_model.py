@@ -17,6 +17,7 @@ from ..model.config import VendorConfig
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
 from ..model.robot import InputProvenance, JointTransmission, MotorJoint, RobotModel
 from ..model.urdf import UrdfJoint, UrdfRobot, limits_problem, safe_position
+from .joint_inertia import JointDynamics, joint_dynamics
 from .transmissions import decide_transmissions
 
 
@@ -100,6 +101,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
             raise err(f"initial_positions.{name}", f"joint {name!r}: {problem} ({urdf_shown} line {joint.line})",
                       f"use a position inside the limits, e.g. {safe_position(joint.type, joint.limits):g}")
     decided = decide_transmissions(config, urdf)
+    dynamics = joint_dynamics(urdf.canonical_xml.decode("utf-8", errors="replace"))
     joints = []
     for joint in actuated:
         if joint.name not in mapped:
@@ -116,7 +118,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  default_stiffness=stiffness if mode == "position" else 0.0,
                                  default_damping=damping,
                                  initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),
-                                 transmission=decided.joints.get(joint.name, JointTransmission())))
+                                 transmission=decided.joints.get(joint.name, JointTransmission()),
+                                 **_simulated(dynamics.get(joint.name))))
 
     imu = config.imu
     if imu.enabled:
@@ -178,3 +181,7 @@ def default_imu_frame(urdf: UrdfRobot) -> str:
     roots = [link for link in urdf.links if link not in children]
     return roots[0] if roots else (urdf.links[0] if urdf.links else "base_link")
 
+
+def _simulated(dynamics: JointDynamics | None) -> dict[str, float]:
+    """The fake robot's inertia and damping of a joint (the defaults when the URDF parse found none)."""
+    return {} if dynamics is None else {"inertia": dynamics.inertia, "damping": dynamics.damping}

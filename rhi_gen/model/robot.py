@@ -58,6 +58,10 @@ class MotorJoint:
     default_damping: float = 0.0       # applied while no controller claims damping
     initial_position: float = 0.0      # the description's initial_value (YAML initial_positions, or safe_pose)
     transmission: JointTransmission = JointTransmission()  # motor -> joint (identity unless YAML / URDF say)
+    # What the fake robot simulates (assemble/joint_inertia.py): the URDF subtree about the joint axis
+    # [kg m^2, or kg for a prismatic joint] and the URDF <dynamics damping> or a default.
+    inertia: float = 0.01
+    damping: float = 0.1
 
 
 @dataclass(frozen=True)

@@ -59,6 +59,7 @@ PACKAGE_SCOPE_NAMES = frozenset({
     "read_unsigned_parameter", "slots_are_valid", "motor_error_bits", "steady_now_ns", "steady_now_us", "steady_ns",
     "transmit_command_block", "transmit_state_block", "trimmed",
     "word_masks",
+    "make_fake_robot", "network_exposure", "parse_fake_robot_arguments", "run_fake_robot",  # the fake robot's
 })
 # Vendor namespaces that are ours to use (the reference vendors) even though SDKs use some of them.
 ALLOWED_VENDOR_NAMESPACES = frozenset({"unitree", "agibot", "engineai"})

@@ -14,7 +14,7 @@ from ..inputs.urdf_loader import load_urdf
 from ..inputs.vendor_config import load_config
 from ..model import PackageInfo, RobotModel, UrdfRobot, VendorConfig
 from ..project import PACKAGE_NAME, Project, check_layout, robot_yamls, select_yamls
-from ..render.package import COMMON_FILES, PACKAGE_FILES, TEST_FILES, robot_paths
+from ..render.package import COMMON_FILES, FAKE_ROBOT_FILES, PACKAGE_FILES, TEST_FILES, robot_paths
 
 
 @dataclass(frozen=True)
@@ -73,7 +73,7 @@ class Clash:
 
 def shared_paths() -> frozenset[str]:
     """Package paths rhi-gen writes once for all robots (a robot's own file must never be one)."""
-    paths = {out for _, out in (*COMMON_FILES, *TEST_FILES, *PACKAGE_FILES)}
+    paths = {out for _, out in (*COMMON_FILES, *TEST_FILES, *FAKE_ROBOT_FILES, *PACKAGE_FILES)}
     for transport in transports.TRANSPORTS.values():
         paths |= {out for _, out in transport.shared_files}
     return frozenset(paths)

@@ -14,11 +14,14 @@ import re
 from dataclasses import dataclass
 
 from ..model import RobotModel
+from .fake_robot_views import has_fake_robot
 from .views import DESCRIPTION_ARGUMENTS, HEALTH_CONTROLLER, controllers_view, xacro_text
 
 ARGUMENT_HELP = {
     "use_mock_hardware": "true: ros2_control's mock_components/GenericSystem instead of the robot (no hardware "
                          "needed)",
+    "use_fake_robot": "true: also start <robot>_fake_robot, a simulated robot that answers the driver on the "
+                      "robot's own topics, with ROS 2 discovery kept on this host (no robot needed)",
     "network_interface": "network interface of the robot (driver parameter network_interface)",
     "enable_monitor": "true: the driver logs latency and rates (driver parameter enable_monitor)",
     "command_writer_period_us": "period of the command writer in microseconds",
@@ -112,7 +115,9 @@ def start_controllers(robot: RobotModel) -> tuple[tuple[str, ...], tuple[str, ..
 
 def launch_view(robot: RobotModel) -> LaunchView:
     active, inactive = start_controllers(robot)
-    defaults = (*argument_defaults(robot), ("description_file", ""), ("controllers_file", ""),
+    description = argument_defaults(robot)
+    fake = (("use_fake_robot", "false"),) if has_fake_robot(robot) else ()
+    defaults = (description[0], *fake, *description[1:], ("description_file", ""), ("controllers_file", ""),
                 ("active_controllers", " ".join(active)), ("inactive_controllers", " ".join(inactive)))
     return LaunchView(
         robot=repr(robot.robot),

@@ -46,6 +46,11 @@ def cpp_double(value: float) -> str:
     return text
 
 
+def cpp_limit(value: float) -> str:
+    """A limit as the joint tables write it: kNoLimit (robot_spec.hpp) for an infinite one."""
+    return ("-kNoLimit" if value < 0 else "kNoLimit") if math.isinf(value) else cpp_double(value)
+
+
 def header_guard(relpath: str) -> str:
     """The ROS 2 include guard of a header below include/, as ament_cpplint expects it:
     folders joined by ``__``, e.g. ROBOT_HARDWARE_INTERFACE__UNITREE__G1_HPP_."""
@@ -62,6 +67,7 @@ FILTERS = {  # the Jinja filters: {{ joint.name | cpp_string }}
     "header_guard": header_guard,
     "cpp_string": cpp_string,
     "cpp_double": cpp_double,
+    "cpp_limit": cpp_limit,
     "yaml_string": yaml_string,
     "xml": xml_escape,
 }

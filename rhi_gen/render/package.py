@@ -19,6 +19,7 @@ from .bringup_views import description_view, launch_view, urdf_view
 from .cpp_layout import fold_cpp
 from .driver_views import driver_view
 from .environment import make_environment
+from .fake_robot_views import fake_robot_view, has_fake_robot
 from .static_files import copy_static
 from .views import controllers_view, package_view, xacro_view
 
@@ -35,6 +36,12 @@ COMMON_FILES = tuple(
                  "driver_monitor.hpp", "command_claims.hpp", "command_guard.hpp", "joint_transmissions.hpp",
                  "calibration_file.hpp", "driver_core.hpp", "system_driver.hpp"))
 TEST_FILES = (("cpp/test/hardware_interface_test.hpp", "test/hardware_interface_test.hpp"),)
+# The fake robot's robot-independent part, in a package where a robot has one.
+FAKE_ROBOT_FILES = (
+    *((f"cpp/common/{name}", f"include/robot_hardware_interface/common/{name}")
+      for name in ("fake_joint_dynamics.hpp", "fake_robot.hpp", "fake_robot_main.hpp")),
+    ("cpp/src/fake_robot_main.cpp", "src/fake_robot_main.cpp"),
+)
 # Templates: what depends on the robots.
 PACKAGE_FILES = (
     ("templates/package/CMakeLists.txt.j2", "CMakeLists.txt"),
@@ -52,6 +59,8 @@ ROBOT_FILES = (
     ("templates/robot/urdf.j2", "urdf/{robot}.urdf"),
     ("templates/robot/launch.py.j2", "launch/{robot}.launch.py"),
 )
+# Only for a robot whose transport has a fake robot side (Transport.fake_robot_header).
+FAKE_ROBOT_FILE = ("templates/robot/fake_robot.cpp.j2", "src/{vendor}/{robot}_fake_robot.cpp")
 
 
 # The view-model (render/views.py) each robot template gets as ``view``, beside ``robot``.
@@ -62,12 +71,14 @@ ROBOT_VIEWS: dict[str, Callable[[RobotModel], object]] = {
     "templates/robot/description.urdf.xacro.j2": description_view,
     "templates/robot/urdf.j2": urdf_view,
     "templates/robot/launch.py.j2": launch_view,
+    "templates/robot/fake_robot.cpp.j2": fake_robot_view,
 }
 
 
 def robot_paths(vendor: str, robot: str) -> tuple[str, ...]:
     """The package paths of one robot's own files (everything else is shared)."""
-    return tuple(pattern.format(vendor=vendor, robot=robot) for _, pattern in ROBOT_FILES)
+    return tuple(pattern.format(vendor=vendor, robot=robot) for _, pattern in (*ROBOT_FILES, FAKE_ROBOT_FILE))
+
 
 
 def _render_one(env: jinja2.Environment, template: str, context: dict[str, Any], out: str) -> str:
@@ -100,6 +111,8 @@ def render_package(models: Sequence[RobotModel],
 
     shared_banner = banner_for(SHARED_INPUTS, package)("//")
     static = [*COMMON_FILES, *(TEST_FILES if robots else ())]
+    if any(has_fake_robot(r) for r in robots):
+        static += FAKE_ROBOT_FILES
     for name in sorted({r.transport for r in robots}):
         static += transports.TRANSPORTS[name].shared_files
     for source, out in static:
@@ -113,12 +126,13 @@ def render_package(models: Sequence[RobotModel],
 
     for robot in robots:
         banner = banner_for(robot_inputs(robot), package)
-        for template, pattern in ROBOT_FILES:
+        for template, pattern in (*ROBOT_FILES, *((FAKE_ROBOT_FILE,) if has_fake_robot(robot) else ())):
             out = pattern.format(vendor=robot.vendor, robot=robot.robot)
             if out in plan:  # e.g. vendor "common" + robot "types": never overwrite silently
                 raise GenerationError(f"{robot.vendor}/{robot.robot} would overwrite {out}, which another part "
                                       "of the package already generates", fix="rename the robot or vendor")
-            context = {"banner": banner, "robot": robot, "robots": robots}
+            context = {"banner": banner, "robot": robot, "robots": robots,
+                       "transport": transports.get(robot.transport)}
             if template in ROBOT_VIEWS:
                 context["view"] = ROBOT_VIEWS[template](robot)
             plan[out] = _render_one(env, template, context, out)

@@ -48,6 +48,10 @@ class Dependency:
     package_xml_note: tuple[str, ...] = ()  # package.xml's comment in its place: why it is not declared
 
 
+# What a fake robot needs besides its transport's packages: its ~/fault topic's message.
+FAKE_ROBOT_DEPENDENCY = Dependency("std_msgs", ROSDISTRO)
+
+
 @dataclass(frozen=True)
 class KnownRobot:
     """A vendor robot whose SDK motor order rhi-gen knows (`rhi-gen new` and `inspect` suggest it)."""
@@ -103,6 +107,11 @@ class Transport(ABC):
     # Whether the robot receives stiffness and damping: if not, joints export no gain interfaces.
     carries_gains: ClassVar[bool] = True
     slots_holder: ClassVar[str] = ""           # what has those slots, for messages ("a unitree hg LowCmd_")
+    # The robot's side of the transport for the generated fake robot (transport/<name>_fake_robot.hpp, one
+    # of shared_files; its type is the glue's fake_robot_type macro), "" when there is none yet, and the
+    # rate the real robot publishes its state at, which the fake robot's loop keeps.
+    fake_robot_header: ClassVar[str] = ""
+    fake_state_rate_hz: ClassVar[float] = 500.0
 
     @abstractmethod
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> TransportOptions:

@@ -12,10 +12,11 @@
 # NAME` starts one later). Uses only launch / launch_ros APIs present from Humble through Rolling.
 """Bring up one robot of robot_hardware_interface: robot_state_publisher, ros2_control_node, spawners."""
 
+import os
 import shlex
 
 from launch import LaunchDescription
-from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.actions import DeclareLaunchArgument, OpaqueFunction, SetEnvironmentVariable
 from launch.substitutions import Command, LaunchConfiguration
 from launch_ros.actions import Node
 from launch_ros.parameter_descriptions import ParameterValue
@@ -40,11 +41,28 @@ ARGUMENTS = [
     ('active_controllers', 'controllers to activate (space-separated)'),
     ('inactive_controllers', 'controllers to load without activating them (space-separated)'),
 ]
+# Arguments a robot's launch file passes only when it has them.
+OPTIONAL_ARGUMENTS = [
+    ('use_fake_robot', 'false', 'true: also start <robot>_fake_robot, discovery kept on this host'),
+]
+
+
+def keep_discovery_on_this_host():
+    """The environment every node started after it inherits: ROS 2 discovery on this host only, so
+    that a fake robot can never reach, or be taken for, a real one on the network."""
+    distro = os.environ.get('ROS_DISTRO', '')
+    actions = [SetEnvironmentVariable('ROS_STATIC_PEERS', '')]
+    if distro != 'humble':
+        actions.append(SetEnvironmentVariable('ROS_AUTOMATIC_DISCOVERY_RANGE', 'LOCALHOST'))
+    if distro in ('humble', ''):
+        actions.append(SetEnvironmentVariable('ROS_LOCALHOST_ONLY', '1'))
+    return actions
 
 
 def bringup(context):
     """The nodes, once the arguments are known."""
     value = {name: LaunchConfiguration(name).perform(context) for name, _ in ARGUMENTS}
+    value.update({name: LaunchConfiguration(name).perform(context) for name, _, _ in OPTIONAL_ARGUMENTS})
     share = FindPackageShare(PACKAGE).perform(context)
     robot = value['robot']
     description_file = value['description_file'] or f'{share}/urdf/{robot}.urdf'
@@ -57,7 +75,14 @@ def bringup(context):
     command += [' ', shlex.quote(f'description_file:={description_file}')]
     robot_description = {'robot_description': ParameterValue(Command(command), value_type=str)}
 
-    nodes = [
+    nodes = []
+    if value['use_fake_robot'] == 'true':
+        if value.get('use_mock_hardware') == 'true':
+            raise RuntimeError('use_fake_robot:=true and use_mock_hardware:=true exclude each other: the fake '
+                               'robot answers the real driver, which mock hardware replaces')
+        nodes += keep_discovery_on_this_host()
+        nodes.append(Node(package=PACKAGE, executable=f'{robot}_fake_robot', output='both'))
+    nodes += [
         Node(package='robot_state_publisher', executable='robot_state_publisher', output='both',
              parameters=[robot_description]),
         # Humble's controller manager reads ~/robot_description, later ones /robot_description:
@@ -81,4 +106,6 @@ def bringup(context):
 def generate_launch_description():
     return LaunchDescription(
         [*(DeclareLaunchArgument(name, description=text) for name, text in ARGUMENTS),
+         *(DeclareLaunchArgument(name, default_value=default, description=text)
+           for name, default, text in OPTIONAL_ARGUMENTS),
          OpaqueFunction(function=bringup)])

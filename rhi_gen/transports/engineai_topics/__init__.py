@@ -48,7 +48,10 @@ class EngineaiTopics(Transport):
     default_float_type = "double"
     dependencies = (Dependency("interface_protocol", VENDOR_SOURCE), Dependency("sensor_msgs", ROSDISTRO),
                     Dependency("geometry_msgs", ROSDISTRO))
-    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "engineai_topics.hpp"))
+    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "engineai_topics.hpp"),
+                    transport_header(NAME, "engineai_topics_fake_robot.hpp"))
+    fake_robot_header = "robot_hardware_interface/transport/engineai_topics_fake_robot.hpp"
+    fake_state_rate_hz = 500.0  # JointState and ImuInfo at 500 Hz or more, MotorDebug 50 Hz or more
     vendors = ("engineai",)
     known_robots = (
         KnownRobot("engineai", "pm01", NAME, PM01_ORDER, "PM01 motor order = interface_protocol array index J00..J23"),

@@ -1,0 +1,156 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_JOINT_DYNAMICS_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_JOINT_DYNAMICS_HPP_
+
+// The joints of a fake robot (the generated <robot>_fake_robot executable): every motor slot a
+// joint drives is one rotor (or slider) under the vendor's motor law
+//   tau = kp * (q_target - q) + kd * (dq_target - dq) + tau_ff,
+// clamped to the URDF effort limit, with the URDF velocity and position limits as hard stops, an
+// inertia estimated from the URDF's link masses and a viscous damping. No gravity, no contact.
+// Integrated with implicit Euler, so that any gains a controller sends are stable at any rate.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace robot_hardware_interface
+{
+
+// One joint of the fake robot, generated from the URDF (rhi_gen/assemble/joint_inertia.py).
+struct FakeJointSpec
+{
+  const char * name;        // URDF joint name
+  size_t slot;              // SDK motor slot, as in the driver's joint table
+  double position_min;      // URDF limits, -kNoLimit / kNoLimit when there are none
+  double position_max;
+  double velocity_max;
+  double effort_max;
+  double inertia;           // [kg m^2] or [kg]: the URDF subtree about the joint axis
+  double damping;           // [N m s / rad] or [N s / m]: URDF <dynamics damping> or a default
+  double initial_position;  // where the fake robot starts: the description's initial_value
+};
+
+// What one motor was last told, in the vendor's terms.
+struct FakeMotorCommand
+{
+  double q{0.0};
+  double dq{0.0};
+  double tau_ff{0.0};
+  double kp{0.0};
+  double kd{0.0};
+};
+
+template<size_t N>
+class FakeJointDynamics
+{
+public:
+  FakeJointDynamics(const FakeJointSpec * joints, size_t count)
+  : joints_(joints), count_(count)
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      if (joints_[k].slot < N) {
+        q_[joints_[k].slot] = joints_[k].initial_position;
+      }
+    }
+  }
+
+  // A motor's new command; a command with a non-finite number is ignored (a real motor board
+  // drops it too) and counted. A slot no joint drives is never moved.
+  void command(size_t slot, const FakeMotorCommand & c)
+  {
+    if (slot >= N) {
+      return;
+    }
+    if (!std::isfinite(c.q) || !std::isfinite(c.dq) || !std::isfinite(c.tau_ff) ||
+      !std::isfinite(c.kp) || !std::isfinite(c.kd))
+    {
+      ++rejected_commands_;
+      return;
+    }
+    command_[slot] = c;
+  }
+
+  // Every motor passive (zero gains, zero torque), as when nobody commands the robot.
+  void release() {command_.fill(FakeMotorCommand{});}
+
+  // Advance every joint by dt seconds.
+  void step(double dt)
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      step_joint(joints_[k], dt);
+    }
+  }
+
+  // Put a joint at rest at `q` (start-up pose, tests): clamped into its limits.
+  void place(size_t slot, double q)
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      if (joints_[k].slot == slot) {
+        q_[slot] = std::clamp(q, joints_[k].position_min, joints_[k].position_max);
+        dq_[slot] = 0.0;
+        tau_[slot] = 0.0;
+      }
+    }
+  }
+
+  double position(size_t slot) const {return q_[slot];}
+  double velocity(size_t slot) const {return dq_[slot];}
+  double effort(size_t slot) const {return tau_[slot];}
+  const FakeMotorCommand & last_command(size_t slot) const {return command_[slot];}
+  uint64_t rejected_commands() const {return rejected_commands_;}
+  const FakeJointSpec * joints() const {return joints_;}
+  size_t joint_count() const {return count_;}
+
+private:
+  void step_joint(const FakeJointSpec & j, double h)
+  {
+    const size_t s = j.slot;
+    if (s >= N || !(h > 0.0)) {
+      return;
+    }
+    const FakeMotorCommand & c = command_[s];
+    const double inertia = j.inertia > 0.0 ? j.inertia : 1.0;
+    const double b = j.damping > 0.0 ? j.damping : 0.0;
+    const double q0 = q_[s];
+    const double dq0 = dq_[s];
+    // Implicit Euler of I ddq = kp (qt - q) + kd (dqt - dq) + tau_ff - b dq, q1 = q0 + h dq1.
+    double dq1 = (inertia * dq0 / h + c.kp * (c.q - q0) + c.kd * c.dq + c.tau_ff) /
+      (inertia / h + c.kp * h + c.kd + b);
+    double tau = c.kp * (c.q - q0 - h * dq1) + c.kd * (c.dq - dq1) + c.tau_ff;
+    if (std::fabs(tau) > j.effort_max) {
+      // The motor saturates: the clamped torque drives the joint, only the damping stays implicit.
+      tau = std::copysign(j.effort_max, tau);
+      dq1 = (inertia * dq0 / h + tau) / (inertia / h + b);
+    }
+    dq1 = std::clamp(dq1, -j.velocity_max, j.velocity_max);
+    double q1 = q0 + h * dq1;
+    if (q1 <= j.position_min) {
+      q1 = j.position_min;
+      dq1 = std::max(dq1, 0.0);
+    } else if (q1 >= j.position_max) {
+      q1 = j.position_max;
+      dq1 = std::min(dq1, 0.0);
+    }
+    q_[s] = q1;
+    dq_[s] = dq1;
+    tau_[s] = tau;
+  }
+
+  const FakeJointSpec * joints_;
+  size_t count_;
+  std::array<double, N> q_{};
+  std::array<double, N> dq_{};
+  std::array<double, N> tau_{};
+  std::array<FakeMotorCommand, N> command_{};
+  uint64_t rejected_commands_{0};
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_JOINT_DYNAMICS_HPP_

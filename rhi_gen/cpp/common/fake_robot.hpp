@@ -1,0 +1,309 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_ROBOT_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_ROBOT_HPP_
+
+// A fake robot: the robot's side of its transport, for trying the real driver before the robot is
+// on the bench. FakeRobotRunner steps the joints (fake_joint_dynamics.hpp) at the robot's state
+// rate on one wall timer and hands them to the transport's fake side (transport/*_fake_robot.hpp),
+// which speaks exactly the driver's protocol. Faults are injected at run time on ~/fault
+// (std_msgs/String). Everything runs on the node's one executor thread: no locks.
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include <rclcpp/logging.hpp>
+#include <rclcpp/node.hpp>
+#include <rclcpp/subscription.hpp>
+#include <rclcpp/timer.hpp>
+#include <std_msgs/msg/string.hpp>
+
+#include "robot_hardware_interface/common/fake_joint_dynamics.hpp"
+
+namespace robot_hardware_interface
+{
+
+// Motor temperature of a healthy fake robot [deg C].
+inline constexpr double kFakeAmbientTemperature = 35.0;
+
+// What the user broke, on ~/fault. Every field is off / 0 until a fault is injected.
+struct FakeFaults
+{
+  bool silent{false};   // publish nothing (a dead link)
+  bool corrupt{false};  // publish frames the driver must reject (bad CRC, arrays too short)
+};
+
+// The robot's body: joints, motor health and injected faults. The transport's fake side reads
+// it to publish state and writes the commands it receives into it.
+template<size_t N>
+struct FakeRobotModel
+{
+  FakeRobotModel(const FakeJointSpec * joints, size_t count)
+  : dynamics(joints, count)
+  {
+    temperature.fill(kFakeAmbientTemperature);
+  }
+
+  FakeJointDynamics<N> dynamics;
+  std::array<double, N> temperature{};  // [deg C]
+  std::array<uint32_t, N> error_code{};  // the vendor's bit field, 0 = no error
+  FakeFaults faults;
+  uint64_t steps{0};  // physics steps since start: transports publish slower messages every k-th
+};
+
+// The transport's fake side: subscribes the driver's commands, publishes the robot's state.
+template<size_t N>
+class FakeRobotTransport
+{
+public:
+  virtual ~FakeRobotTransport() = default;
+  virtual const char * name() const = 0;
+  // The network interface it is told to use ("" for ROS 2 topics: DDS chooses).
+  virtual const char * network_interface() const {return "";}
+  // Whether its state message carries motor error codes (`error` faults need them).
+  virtual bool carries_error_codes() const {return false;}
+  // Create the subscriptions and publishers and size every message (no allocation afterwards).
+  virtual void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) = 0;
+  // One state (and IMU, health) publication after a physics step.
+  virtual void publish(const FakeRobotModel<N> & model) = 0;
+};
+
+// Achieved loop rate and jitter, for the log and the benchmark (allocation-free).
+struct FakeLoopStats
+{
+  uint64_t steps{0};
+  int64_t first_ns{0};
+  int64_t last_ns{0};
+  int64_t max_late_ns{0};   // largest period minus the nominal period
+  int64_t max_early_ns{0};  // largest nominal period minus the period
+  double sum_abs_jitter_ns{0.0};
+
+  void record(int64_t now_ns, int64_t nominal_ns)
+  {
+    if (steps > 0) {
+      const int64_t late = (now_ns - last_ns) - nominal_ns;
+      max_late_ns = std::max(max_late_ns, late);
+      max_early_ns = std::max(max_early_ns, -late);
+      sum_abs_jitter_ns += static_cast<double>(late < 0 ? -late : late);
+    } else {
+      first_ns = now_ns;
+    }
+    last_ns = now_ns;
+    ++steps;
+  }
+  double rate_hz() const
+  {
+    return steps > 1 && last_ns > first_ns ?
+           static_cast<double>(steps - 1) * 1e9 / static_cast<double>(last_ns - first_ns) : 0.0;
+  }
+  double mean_jitter_us() const
+  {
+    return steps > 1 ? sum_abs_jitter_ns / static_cast<double>(steps - 1) / 1e3 : 0.0;
+  }
+};
+
+// What every fake robot offers its executable and the tests, whatever its motor count.
+class FakeRobot
+{
+public:
+  virtual ~FakeRobot() = default;
+  virtual const char * node_name() const = 0;
+  virtual const char * transport() const = 0;
+  virtual const char * network_interface() const = 0;
+  virtual double rate_hz() const = 0;
+  // Subscriptions, publishers and the ~/fault topic; then start() runs the loop at `rate_hz`.
+  virtual void configure(const rclcpp::Node::SharedPtr & node) = 0;
+  virtual void start(double rate_hz) = 0;
+  virtual void stop() = 0;
+  // One loop iteration now (the wall timer's callback): physics, then publication.
+  virtual void step() = 0;
+  // A fault request, as on ~/fault: false (and `why`) when it is not understood.
+  virtual bool inject(const char * request, std::string * why) = 0;
+  virtual size_t joint_count() const = 0;
+  virtual const FakeJointSpec & joint(size_t k) const = 0;
+  virtual double position(size_t slot) const = 0;
+  virtual double velocity(size_t slot) const = 0;
+  virtual void place(size_t slot, double q) = 0;
+  virtual const FakeMotorCommand & last_command(size_t slot) const = 0;
+  virtual const FakeLoopStats & stats() const = 0;
+};
+
+// The robot-independent fake robot: its loop, its faults, its body; the transport speaks.
+template<size_t N>
+class FakeRobotRunner final : public FakeRobot
+{
+public:
+  FakeRobotRunner(
+    const char * node_name, const FakeJointSpec * joints, size_t count, double rate_hz,
+    std::unique_ptr<FakeRobotTransport<N>> transport)
+  : node_name_(node_name), rate_hz_(rate_hz), model_(joints, count),
+    transport_(std::move(transport))
+  {
+  }
+
+  const char * node_name() const override {return node_name_;}
+  const char * transport() const override {return transport_->name();}
+  const char * network_interface() const override {return transport_->network_interface();}
+  double rate_hz() const override {return rate_hz_;}
+
+  void configure(const rclcpp::Node::SharedPtr & node) override
+  {
+    node_ = node;
+    transport_->configure(node, model_);
+    fault_subscription_ = node->create_subscription<std_msgs::msg::String>(
+      "~/fault", rclcpp::QoS(rclcpp::KeepLast(10)).reliable(),
+      [this](const std_msgs::msg::String & msg) {on_fault(msg.data);});
+  }
+
+  void start(double rate_hz) override
+  {
+    rate_hz_ = rate_hz;
+    period_ns_ = static_cast<int64_t>(1e9 / rate_hz);
+    timer_ = node_->create_wall_timer(std::chrono::nanoseconds(period_ns_), [this]() {step();});
+  }
+
+  void stop() override
+  {
+    if (timer_) {
+      timer_->cancel();
+      timer_.reset();
+    }
+  }
+
+  void step() override
+  {
+    const int64_t now_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::steady_clock::now().time_since_epoch()).count();
+    stats_.record(now_ns, period_ns_);
+    // The nominal period, not the measured one: the same commands give the same motion.
+    model_.dynamics.step(1.0 / rate_hz_);
+    ++model_.steps;
+    if (!model_.faults.silent) {
+      transport_->publish(model_);
+    }
+  }
+
+  bool inject(const char * request, std::string * why) override
+  {
+    return apply_fault(request, why);
+  }
+
+  size_t joint_count() const override {return model_.dynamics.joint_count();}
+  const FakeJointSpec & joint(size_t k) const override {return model_.dynamics.joints()[k];}
+  double position(size_t slot) const override {return model_.dynamics.position(slot);}
+  double velocity(size_t slot) const override {return model_.dynamics.velocity(slot);}
+  void place(size_t slot, double q) override {model_.dynamics.place(slot, q);}
+  const FakeMotorCommand & last_command(size_t slot) const override
+  {
+    return model_.dynamics.last_command(slot);
+  }
+  const FakeLoopStats & stats() const override {return stats_;}
+
+private:
+  void on_fault(const std::string & request)
+  {
+    std::string why;
+    if (apply_fault(request.c_str(), &why)) {
+      RCLCPP_WARN(node_->get_logger(), "fault injected: %s", request.c_str());
+    } else {
+      RCLCPP_ERROR(
+        node_->get_logger(), "fault request '%s' refused: %s", request.c_str(), why.c_str());
+    }
+  }
+
+  // silent | corrupt | hot <joint> <deg C> | error <joint> <code> | clear
+  bool apply_fault(const char * request, std::string * why)
+  {
+    char verb[16] = {0};
+    char joint[128] = {0};
+    char value[32] = {0};
+    const int n = std::sscanf(request, "%15s %127s %31s", verb, joint, value);
+    if (n == 1 && std::strcmp(verb, "silent") == 0) {
+      model_.faults.silent = true;
+      return true;
+    }
+    if (n == 1 && std::strcmp(verb, "corrupt") == 0) {
+      model_.faults.corrupt = true;
+      return true;
+    }
+    if (n == 1 && std::strcmp(verb, "clear") == 0) {
+      model_.faults = FakeFaults{};
+      model_.temperature.fill(kFakeAmbientTemperature);
+      model_.error_code.fill(0U);
+      return true;
+    }
+    const bool hot = std::strcmp(verb, "hot") == 0;
+    const bool error = std::strcmp(verb, "error") == 0;
+    if (n != 3 || (!hot && !error)) {
+      *why = "expected one of: silent, corrupt, hot <joint> <deg C>, error <joint> <code>, clear";
+      return false;
+    }
+    const FakeJointSpec * spec = find_joint(joint);
+    if (spec == nullptr) {
+      *why = std::string("no joint named '") + joint + "' on this robot";
+      return false;
+    }
+    char * end = nullptr;
+    if (hot) {
+      const double celsius = std::strtod(value, &end);
+      if (end == value || *end != '\0' || !std::isfinite(celsius)) {
+        *why = std::string("'") + value + "' is not a temperature in deg C";
+        return false;
+      }
+      model_.temperature[spec->slot] = celsius;
+      return true;
+    }
+    if (!transport_->carries_error_codes()) {
+      *why = std::string("the ") + transport_->name() + " state message carries no error codes";
+      return false;
+    }
+    const unsigned long long code = std::strtoull(value, &end, 0);  // NOLINT(runtime/int)
+    if (end == value || *end != '\0' || value[0] == '-' || code > 0xFFFFFFFFULL) {
+      *why = std::string("'") + value + "' is not an error code (0 to 0xFFFFFFFF)";
+      return false;
+    }
+    model_.error_code[spec->slot] = static_cast<uint32_t>(code);
+    return true;
+  }
+
+  const FakeJointSpec * find_joint(const char * name) const
+  {
+    for (size_t k = 0; k < model_.dynamics.joint_count(); ++k) {
+      if (std::strcmp(model_.dynamics.joints()[k].name, name) == 0) {
+        return &model_.dynamics.joints()[k];
+      }
+    }
+    return nullptr;
+  }
+
+  const char * node_name_;
+  double rate_hz_;
+  int64_t period_ns_{0};
+  FakeRobotModel<N> model_;
+  std::unique_ptr<FakeRobotTransport<N>> transport_;
+  rclcpp::Node::SharedPtr node_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr fault_subscription_;
+  rclcpp::TimerBase::SharedPtr timer_;
+  FakeLoopStats stats_;
+};
+
+// Defined by each robot's src/<vendor>/<robot>_fake_robot.cpp: the robot's fake robot, for the
+// executable's main() (src/fake_robot_main.cpp) and for tests.
+std::unique_ptr<FakeRobot> make_fake_robot();
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_ROBOT_HPP_

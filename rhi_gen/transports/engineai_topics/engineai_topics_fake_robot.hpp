@@ -1,0 +1,131 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_FAKE_ROBOT_HPP_
+#define ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_FAKE_ROBOT_HPP_
+
+// The robot's side of engineai_topics (EngineAI interface_protocol), for the fake robot: it takes
+// JointCommand arrays indexed by motor slot (the PD law: position, velocity, stiffness, damping,
+// feed_forward_torque; the direct `torque` field is not simulated) and publishes JointState (every
+// step), ImuInfo at rest (every step) and MotorDebug temperatures (every 10th step: 50 Hz at the
+// robot's 500 Hz), on the driver's topics with the driver's QoS. `corrupt` publishes JointState
+// arrays one motor short, which the driver must drop.
+
+#include <cstddef>
+#include <cstdint>
+
+#include <interface_protocol/msg/imu_info.hpp>
+#include <interface_protocol/msg/joint_command.hpp>
+#include <interface_protocol/msg/joint_state.hpp>
+#include <interface_protocol/msg/motor_debug.hpp>
+#include <rclcpp/node.hpp>
+#include <rclcpp/publisher.hpp>
+#include <rclcpp/subscription.hpp>
+
+#include "robot_hardware_interface/common/fake_robot.hpp"
+#include "robot_hardware_interface/transport/engineai_topics.hpp"
+
+namespace robot_hardware_interface
+{
+
+template<size_t N>
+class EngineaiTopicsFakeRobot final : public FakeRobotTransport<N>
+{
+  using JointCommand = interface_protocol::msg::JointCommand;
+  using JointState = interface_protocol::msg::JointState;
+  using ImuInfo = interface_protocol::msg::ImuInfo;
+  using MotorDebug = interface_protocol::msg::MotorDebug;
+  static constexpr uint64_t kMotorDebugEvery = 10;
+
+public:
+  explicit EngineaiTopicsFakeRobot(const EngineaiTopicsOptions & options)
+  : options_(options)
+  {
+  }
+
+  const char * name() const override {return "engineai_topics";}
+
+  void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) override
+  {
+    model_ = &model;
+    node_ = node;
+    state_.position.assign(N, 0.0);
+    state_.velocity.assign(N, 0.0);
+    state_.torque.assign(N, 0.0);
+    short_state_.position.assign(N - 1, 0.0);
+    short_state_.velocity.assign(N - 1, 0.0);
+    short_state_.torque.assign(N - 1, 0.0);
+    debug_.tau_cmd.assign(N, 0.0);
+    debug_.mos_temperature.assign(N, kFakeAmbientTemperature);
+    debug_.motor_temperature.assign(N, kFakeAmbientTemperature);
+    imu_.quaternion.w = 1.0;              // at rest, level
+    imu_.linear_acceleration.z = 9.80665;  // the accelerometer feels gravity
+    const rclcpp::QoS qos = make_qos(options_.qos);
+    state_publisher_ = node->create_publisher<JointState>(options_.state_topic, qos);
+    imu_publisher_ = node->create_publisher<ImuInfo>(options_.imu_topic, qos);
+    debug_publisher_ = node->create_publisher<MotorDebug>(options_.motor_debug_topic, qos);
+    command_subscription_ = node->create_subscription<JointCommand>(
+      options_.command_topic, qos, [this](const JointCommand & msg) {on_command(msg);});
+  }
+
+  void publish(const FakeRobotModel<N> & model) override
+  {
+    const auto & joints = model.dynamics;
+    const auto stamp = node_->now();
+    if (model.faults.corrupt) {
+      short_state_.header.stamp = stamp;
+      state_publisher_->publish(short_state_);
+    } else {
+      for (size_t i = 0; i < N; ++i) {
+        state_.position[i] = joints.position(i);
+        state_.velocity[i] = joints.velocity(i);
+        state_.torque[i] = joints.effort(i);
+      }
+      state_.header.stamp = stamp;
+      state_publisher_->publish(state_);
+    }
+    imu_.header.stamp = stamp;
+    imu_publisher_->publish(imu_);
+    if (model.steps % kMotorDebugEvery == 0) {
+      using Celsius = typename decltype(debug_.motor_temperature)::value_type;
+      for (size_t i = 0; i < N; ++i) {
+        debug_.motor_temperature[i] = static_cast<Celsius>(model.temperature[i]);
+      }
+      debug_publisher_->publish(debug_);
+    }
+  }
+
+private:
+  // A JointCommand too short for every motor is ignored whole, as a malformed frame.
+  void on_command(const JointCommand & msg)
+  {
+    if (msg.position.size() < N || msg.velocity.size() < N || msg.feed_forward_torque.size() < N ||
+      msg.stiffness.size() < N || msg.damping.size() < N)
+    {
+      return;
+    }
+    for (size_t i = 0; i < N; ++i) {
+      model_->dynamics.command(
+        i, FakeMotorCommand{msg.position[i], msg.velocity[i], msg.feed_forward_torque[i],
+          msg.stiffness[i], msg.damping[i]});
+    }
+  }
+
+  const EngineaiTopicsOptions options_;
+  FakeRobotModel<N> * model_{nullptr};
+  rclcpp::Node::SharedPtr node_;
+  JointState state_;        // pre-sized in configure(): no allocation per step
+  JointState short_state_;  // what `corrupt` publishes
+  ImuInfo imu_;
+  MotorDebug debug_;
+  typename rclcpp::Publisher<JointState>::SharedPtr state_publisher_;
+  typename rclcpp::Publisher<ImuInfo>::SharedPtr imu_publisher_;
+  typename rclcpp::Publisher<MotorDebug>::SharedPtr debug_publisher_;
+  typename rclcpp::Subscription<JointCommand>::SharedPtr command_subscription_;
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_FAKE_ROBOT_HPP_

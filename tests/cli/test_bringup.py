@@ -18,6 +18,7 @@ import pytest
 import yaml
 
 from rhi_gen.render.bringup_views import start_controllers
+from rhi_gen.render.fake_robot_views import has_fake_robot
 from tests.support.cli import run_cli
 from tests.support.cpp_build import PACKAGE, load_models, make_test_project, project_robot_labels, render_package_to
 from tests.support.description_checks import check_ros2_control, exported, parse_ros2_control
@@ -170,14 +171,17 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
     m = r.model
     launched = run(package_dir, m.robot, **({"use_mock_hardware": "true"} if mock else {}))
 
-    assert list(launched.arguments) == LAUNCH_ARGUMENTS
+    fake = has_fake_robot(m)
+    assert list(launched.arguments) == [LAUNCH_ARGUMENTS[0], *(["use_fake_robot"] if fake else []),
+                                        *LAUNCH_ARGUMENTS[1:]]
     defaults = {}
     for name, a in launched.arguments.items():
         assert a.default_value is not None, f"launch argument {name!r} has no default"
         defaults[name] = "".join(s.perform(LaunchContext({})) for s in a.default_value)
     p = m.parameters
     assert defaults == {
-        "use_mock_hardware": "false", "network_interface": p.network_interface,
+        "use_mock_hardware": "false", **({"use_fake_robot": "false"} if fake else {}),
+        "network_interface": p.network_interface,
         "enable_monitor": "true" if p.enable_monitor else "false",
         "command_writer_period_us": str(p.command_writer_period_us), "state_decimation": str(p.state_decimation),
         "state_timeout_ms": str(p.state_timeout_ms), "fault_timeout_ms": str(p.fault_timeout_ms),
@@ -226,6 +230,27 @@ def test_launch_arguments_choose_controllers_files_and_parameters(package, tmp_p
     real = run(package_dir, "g1", network_interface="enp3s0", state_decimation="4")
     d, _ = parse_ros2_control(node(real, "robot_state_publisher")[0].parameters[0]["robot_description"])
     assert (d.parameters["network_interface"], d.parameters["state_decimation"]) == ("enp3s0", "4")
+
+
+@pytest.mark.parametrize("distro", ["humble", "jazzy", ""])
+def test_use_fake_robot_starts_it_first_with_discovery_on_this_host(package, monkeypatch, distro) -> None:
+    """use_fake_robot:=true: the fake robot starts before the other nodes, the real driver (not mock hardware)
+    answers it, and every node inherits discovery limited to this host (Humble's variable on Humble,
+    Jazzy's after; both when ROS_DISTRO is unknown), static peers cleared."""
+    package_dir, _ = package
+    monkeypatch.setenv("ROS_DISTRO", distro)
+    launched = run(package_dir, "pm01", use_fake_robot="true")
+    assert [n.executable for n in launched.nodes][:2] == ["pm01_fake_robot", "robot_state_publisher"]
+    assert node(launched, "pm01_fake_robot")[0].package == PACKAGE
+    want = {"ROS_STATIC_PEERS": "", **({"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"} if distro != "humble" else {}),
+            **({"ROS_LOCALHOST_ONLY": "1"} if distro in ("humble", "") else {})}
+    assert all(n.environment == want for n in launched.nodes)
+    d, _ = parse_ros2_control(node(launched, "robot_state_publisher")[0].parameters[0]["robot_description"])
+    assert d.plugin == "robot_hardware_interface/engineai/PM01HardwareInterface"
+    plain = run(package_dir, "pm01")
+    assert not node(plain, "pm01_fake_robot") and all(not n.environment for n in plain.nodes)
+    with pytest.raises(RuntimeError, match="use_fake_robot:=true and use_mock_hardware:=true exclude each other"):
+        run(package_dir, "pm01", use_fake_robot="true", use_mock_hardware="true")
 
 
 def test_launch_standin_rejects_what_the_real_api_rejects(package, tmp_path) -> None:

@@ -35,6 +35,7 @@ import subprocess
 
 import pytest
 
+from rhi_gen.render.fake_robot_views import has_fake_robot
 from tests.support import vendor_msgs
 from tests.support.cpp_build import (
     PACKAGE,
@@ -194,6 +195,8 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
         expected = {"interfaces", "transmission", "faults", "threads"}
     if model.transport == "unitree_dds" and not model.has_transmission:
         expected.add("crc")
+    if has_fake_robot(model):
+        expected.add("fake_robot")
     missing = expected - set(run.sections)
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 

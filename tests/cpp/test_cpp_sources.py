@@ -17,7 +17,7 @@ import pytest
 
 from rhi_gen import transports
 from rhi_gen.render.environment import SOURCE_ROOT
-from rhi_gen.render.package import COMMON_FILES
+from rhi_gen.render.package import COMMON_FILES, FAKE_ROBOT_FILES
 from tests.support import vendor_msgs
 from tests.support.ament_lint import run_cpplint, run_uncrustify
 from tests.support.cpp_build import WARNING_FLAGS, message_include_flags, require_compiler, run_parallel, standin_flags
@@ -28,6 +28,7 @@ DISTRO = "humble"
 def _sources() -> dict[str, tuple[Path, str]]:
     """package path -> (source file, transport that needs it or "") for every header copied as it is."""
     found: dict[str, tuple[Path, str]] = {out: (SOURCE_ROOT / src, "") for src, out in COMMON_FILES}
+    found.update((out, (SOURCE_ROOT / src, "")) for src, out in FAKE_ROBOT_FILES if out.endswith(".hpp"))
     for name, transport in transports.TRANSPORTS.items():
         for src, out in transport.shared_files:
             found.setdefault(out, (SOURCE_ROOT / src, name))

@@ -12,6 +12,8 @@ the real one does. Written from, and checked against (the signatures are the sam
   ``launch/launch/actions/declare_launch_argument.py`` (DeclareLaunchArgument(name, *, default_value=None,
   description=None, choices=None, **kwargs); executing it without a value and without a default raises),
   ``launch/launch/actions/opaque_function.py`` (OpaqueFunction(*, function, args=None, kwargs=None)),
+  ``launch/launch/actions/set_environment_variable.py`` (SetEnvironmentVariable(name, value, **kwargs): the
+  variable is set in the launch context's environment, which every process started after it inherits),
   ``launch/launch/actions/include_launch_description.py`` (IncludeLaunchDescription(launch_description_source,
   *, launch_arguments=None): the arguments become launch configurations; a declared argument without default
   that is not given is an error), ``launch/launch/launch_description_sources/python_launch_description_source.py``
@@ -171,6 +173,12 @@ class OpaqueFunction(Action):
         self.kwargs = dict(kwargs or {})
 
 
+class SetEnvironmentVariable(Action):
+    def __init__(self, name: Any, value: Any, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.name, self.value = name, value
+
+
 class PythonLaunchDescriptionSource:
     def __init__(self, launch_file_path: Any) -> None:
         self.launch_file_path = normalize(launch_file_path)
@@ -208,7 +216,8 @@ MODULES: dict[str, dict[str, object]] = {
     "launch": {"LaunchDescription": LaunchDescription, "LaunchContext": LaunchContext,
                "Substitution": Substitution},
     "launch.actions": {"DeclareLaunchArgument": DeclareLaunchArgument, "OpaqueFunction": OpaqueFunction,
-                       "IncludeLaunchDescription": IncludeLaunchDescription},
+                       "IncludeLaunchDescription": IncludeLaunchDescription,
+                       "SetEnvironmentVariable": SetEnvironmentVariable},
     "launch.launch_description_sources": {"PythonLaunchDescriptionSource": PythonLaunchDescriptionSource},
     "launch.substitutions": {"Command": Command, "LaunchConfiguration": LaunchConfiguration,
                              "PathJoinSubstitution": PathJoinSubstitution, "TextSubstitution": TextSubstitution},
@@ -257,6 +266,7 @@ class StartedNode:
     arguments: list[str]
     parameters: list[Any]       # a performed dict (ParameterValue -> its value) or a parameter file path
     remappings: list[tuple[str, str]]
+    environment: dict[str, str] = field(default_factory=dict)  # what SetEnvironmentVariable set before it
 
 
 @dataclass
@@ -264,6 +274,7 @@ class Launched:
     arguments: dict[str, DeclareLaunchArgument] = field(default_factory=dict)  # the top file's, by name
     configurations: dict[str, str] = field(default_factory=dict)
     nodes: list[StartedNode] = field(default_factory=list)
+    environment: dict[str, str] = field(default_factory=dict)  # set by SetEnvironmentVariable, in order
 
 
 def launch(path: Path, shares: Mapping[str, Path], overrides: Mapping[str, str] | None = None) -> Launched:
@@ -303,7 +314,10 @@ def _visit(entities: Iterable[Any], context: LaunchContext, out: Launched) -> No
                 package=perform(context, entity.package), executable=perform(context, entity.executable),
                 arguments=[perform(context, a) for a in entity.arguments],
                 parameters=[_parameters(context, p) for p in entity.parameters],
-                remappings=[(perform(context, a), perform(context, b)) for a, b in entity.remappings]))
+                remappings=[(perform(context, a), perform(context, b)) for a, b in entity.remappings],
+                environment=dict(out.environment)))
+        elif isinstance(entity, SetEnvironmentVariable):
+            out.environment[perform(context, entity.name)] = perform(context, entity.value)
         else:
             raise TypeError(f"the stand-in does not know {type(entity).__name__}")
 

@@ -2439,6 +2439,10 @@ void test_unfilled_refuses_activation() {
 
 // --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,health,diagnostics,crc,threads)
 // runs just those scenarios, e.g. to repeat the threaded one many times.
+#if defined(RHI_FAKE_ROBOT)
+#include "fake_robot_checks.inc"
+#endif
+
 static bool selected(const std::string& only, const char* name) {
   if (only.empty()) {
     return true;
@@ -2480,6 +2484,9 @@ int main(int argc, char** argv) {
     if (selected(only, "diagnostics")) test_diagnostics();
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
     if (selected(only, "crc")) test_crc_functions();
+#endif
+#if defined(RHI_FAKE_ROBOT)
+    if (selected(only, "fake_robot")) test_fake_robot();
 #endif
     if (selected(only, "threads")) test_threads(threads_ms);
   } catch (const std::exception& e) {

@@ -7,7 +7,7 @@ import pytest
 from rhi_gen import transports
 from rhi_gen.errors import GenerationError
 from rhi_gen.render.environment import SOURCE_ROOT, make_environment
-from rhi_gen.render.package import COMMON_FILES, TEST_FILES, render_package
+from rhi_gen.render.package import COMMON_FILES, FAKE_ROBOT_FILES, TEST_FILES, render_package
 from rhi_gen.render.static_files import copy_static
 from tests.support.cpp_build import load_models
 from tests.support.repo import REPO
@@ -15,8 +15,9 @@ from tests.support.repo import REPO
 
 def test_copied_files_keep_every_byte_after_the_banner():
     plan = render_package([loaded.model for loaded in load_models(REPO)])
-    copied = [*COMMON_FILES, *TEST_FILES, *(f for t in ("unitree_dds", "agibot_topics", "engineai_topics")
-                                           for f in transports.TRANSPORTS[t].shared_files)]
+    shared = (f for t in ("unitree_dds", "agibot_topics", "engineai_topics")
+              for f in transports.TRANSPORTS[t].shared_files)
+    copied = [*COMMON_FILES, *TEST_FILES, *FAKE_ROBOT_FILES, *shared]
     for source, out in copied:
         text = (SOURCE_ROOT / source).read_text(encoding="utf-8")
         body = text.split("\n\n", 1)[1]

@@ -95,7 +95,9 @@ def test_views_of_the_reference_robots():
     """The repository's own robots (generated/ is checked byte for byte by test_generated_is_current)."""
     models = [r.model for r in load_robots(find_project(REPO))]
     view = package_view(sorted(models, key=lambda m: (m.vendor, m.robot)))
-    assert view.ros_deps == ("aimdk_msgs", "geometry_msgs", "interface_protocol", "sensor_msgs")
+    # std_msgs: the PM01's fake robot (its ~/fault topic)
+    assert view.ros_deps == ("aimdk_msgs", "geometry_msgs", "interface_protocol", "sensor_msgs", "std_msgs")
+    assert [t.fake_robot for t in view.robots] == ["", "pm01_fake_robot", ""]
     assert view.vendor_msgs == "aimdk_msgs, interface_protocol"
     assert [d.name for d in view.plain_deps] == ["unitree_sdk2"]
     x2 = next(m for m in models if m.robot == "x2")

@@ -8,7 +8,7 @@ them. A coupled joint's motors get no limits (a matrix mixes them); rows are in 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from .. import transports
 from ..model import RobotModel
@@ -26,6 +26,7 @@ class FakeJointLine:
     inertia: float
     damping: float
     initial_position: float
+    velocity_commanded: bool = False  # a wheel
 
 
 @dataclass(frozen=True)
@@ -75,5 +76,7 @@ def has_fake_robot(robot: RobotModel) -> bool:
 def fake_robot_view(robot: RobotModel) -> FakeRobotView:
     coupled = {name for group in robot.coupled_groups for name in group.joints}
     transport = transports.get(robot.transport)
-    return FakeRobotView(tuple(_line(j, j.name in coupled) for j in robot.joints_by_index),
+    lines = (replace(_line(j, j.name in coupled), velocity_commanded=j.command_mode == "velocity")
+             for j in robot.joints_by_index)
+    return FakeRobotView(tuple(lines),
                          transport.fake_state_rate_hz, f"{robot.robot}_fake_robot")

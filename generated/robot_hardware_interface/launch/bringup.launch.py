@@ -68,13 +68,6 @@ def bringup(context):
     description_file = value['description_file'] or f'{share}/urdf/{robot}.urdf'
     controllers_file = value['controllers_file'] or f'{share}/config/{robot}_controllers.yaml'
 
-    # Command runs shlex.split() on the joined text: quote every path and value (spaces, quotes).
-    command = ['xacro ', shlex.quote(f'{share}/description/{robot}.urdf.xacro')]
-    for name in DESCRIPTION_ARGUMENTS:
-        command += [' ', shlex.quote(f'{name}:={value[name]}')]
-    command += [' ', shlex.quote(f'description_file:={description_file}')]
-    robot_description = {'robot_description': ParameterValue(Command(command), value_type=str)}
-
     nodes = []
     if value['use_fake_robot'] == 'true':
         if value.get('use_mock_hardware') == 'true':
@@ -82,6 +75,16 @@ def bringup(context):
                                'robot answers the real driver, which mock hardware replaces')
         nodes += keep_discovery_on_this_host()
         nodes.append(Node(package=PACKAGE, executable=f'{robot}_fake_robot', output='both'))
+        # An SDK transport's fake robot listens on the loopback interface: so does the driver.
+        value['network_interface'] = 'lo'
+
+    # Command runs shlex.split() on the joined text: quote every path and value (spaces, quotes).
+    command = ['xacro ', shlex.quote(f'{share}/description/{robot}.urdf.xacro')]
+    for name in DESCRIPTION_ARGUMENTS:
+        command += [' ', shlex.quote(f'{name}:={value[name]}')]
+    command += [' ', shlex.quote(f'description_file:={description_file}')]
+    robot_description = {'robot_description': ParameterValue(Command(command), value_type=str)}
+
     nodes += [
         Node(package='robot_state_publisher', executable='robot_state_publisher', output='both',
              parameters=[robot_description]),

@@ -24,6 +24,8 @@ ROBOT = 'x2'
 ARGUMENTS = [
     ('use_mock_hardware', 'false',
      "true: ros2_control's mock_components/GenericSystem instead of the robot (no hardware needed)"),
+    ('use_fake_robot', 'false',
+     "true: also start <robot>_fake_robot, a simulated robot that answers the driver on the robot's own topics, with ROS 2 discovery kept on this host (no robot needed)"),
     ('network_interface', 'lo',
      'network interface of the robot (driver parameter network_interface)'),
     ('enable_monitor', 'true',

@@ -38,6 +38,8 @@ namespace robot_hardware_interface
 
 // Motor temperature of a healthy fake robot [deg C].
 inline constexpr double kFakeAmbientTemperature = 35.0;
+// What the accelerometer of a robot at rest reads, upwards [m/s^2].
+inline constexpr double kStandardGravity = 9.80665;
 
 // What the user broke, on ~/fault. Every field is off / 0 until a fault is injected.
 struct FakeFaults
@@ -71,12 +73,17 @@ class FakeRobotTransport
 public:
   virtual ~FakeRobotTransport() = default;
   virtual const char * name() const = 0;
-  // The network interface it is told to use ("" for ROS 2 topics: DDS chooses).
+  // The network interface it uses ("" for ROS 2 topics: ROS 2 discovery settings decide), and
+  // whether another one can be chosen (--network-interface).
   virtual const char * network_interface() const {return "";}
-  // Whether its state message carries motor error codes (`error` faults need them).
+  virtual bool set_network_interface(const char * /*name*/) {return false;}
+  // Whether its messages carry motor temperatures (`hot` needs them) and error codes (`error`).
+  virtual bool carries_temperatures() const {return false;}
   virtual bool carries_error_codes() const {return false;}
   // Create the subscriptions and publishers and size every message (no allocation afterwards).
   virtual void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) = 0;
+  // Before each physics step: commands received on another thread (an SDK's) into the model.
+  virtual void take_commands(FakeRobotModel<N> & /*model*/) {}
   // One state (and IMU, health) publication after a physics step.
   virtual void publish(const FakeRobotModel<N> & model) = 0;
 };
@@ -123,6 +130,7 @@ public:
   virtual const char * node_name() const = 0;
   virtual const char * transport() const = 0;
   virtual const char * network_interface() const = 0;
+  virtual bool set_network_interface(const char * name) = 0;
   virtual double rate_hz() const = 0;
   // Subscriptions, publishers and the ~/fault topic; then start() runs the loop at `rate_hz`.
   virtual void configure(const rclcpp::Node::SharedPtr & node) = 0;
@@ -157,6 +165,10 @@ public:
   const char * node_name() const override {return node_name_;}
   const char * transport() const override {return transport_->name();}
   const char * network_interface() const override {return transport_->network_interface();}
+  bool set_network_interface(const char * name) override
+  {
+    return transport_->set_network_interface(name);
+  }
   double rate_hz() const override {return rate_hz_;}
 
   void configure(const rclcpp::Node::SharedPtr & node) override
@@ -188,6 +200,7 @@ public:
     const int64_t now_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
       std::chrono::steady_clock::now().time_since_epoch()).count();
     stats_.record(now_ns, period_ns_);
+    transport_->take_commands(model_);
     // The nominal period, not the measured one: the same commands give the same motion.
     model_.dynamics.step(1.0 / rate_hz_);
     ++model_.steps;
@@ -257,6 +270,10 @@ private:
       return false;
     }
     char * end = nullptr;
+    if (hot && !transport_->carries_temperatures()) {
+      *why = std::string("the ") + transport_->name() + " messages carry no motor temperatures";
+      return false;
+    }
     if (hot) {
       const double celsius = std::strtod(value, &end);
       if (end == value || *end != '\0' || !std::isfinite(celsius)) {
@@ -267,7 +284,7 @@ private:
       return true;
     }
     if (!transport_->carries_error_codes()) {
-      *why = std::string("the ") + transport_->name() + " state message carries no error codes";
+      *why = std::string("the ") + transport_->name() + " messages carry no motor error codes";
       return false;
     }
     const unsigned long long code = std::strtoull(value, &end, 0);  // NOLINT(runtime/int)

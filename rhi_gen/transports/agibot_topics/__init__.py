@@ -70,7 +70,9 @@ class AgibotTopics(Transport):
     default_float_type = "double"
     dependencies = (Dependency("aimdk_msgs", VENDOR_SOURCE), Dependency("sensor_msgs", ROSDISTRO))
     shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "joint_names.hpp"),
-                    transport_header(NAME, "agibot_topics.hpp"))
+                    transport_header(NAME, "agibot_topics.hpp"), transport_header(NAME, "agibot_topics_fake_robot.hpp"))
+    fake_robot_header = "robot_hardware_interface/transport/agibot_topics_fake_robot.hpp"
+    fake_state_rate_hz = 1000.0  # JointStateArray per group at 1000 Hz, IMU 500 Hz (x2_rl_deploy README)
     vendors = ("agibot",)
     known_robots = (
         KnownRobot("agibot", "x2", NAME, X2_ORDER, "X2 motor order = AimDK joint groups leg, waist, arm, head",

@@ -34,7 +34,9 @@ class GenericTopics(Transport):
     option_keys = ("command_topic", "state_topic", "imu_topic", "qos")
     default_float_type = "double"
     dependencies = (Dependency("sensor_msgs", ROSDISTRO),)
-    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "generic_topics.hpp"))
+    shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "generic_topics.hpp"),
+                    transport_header(NAME, "generic_topics_fake_robot.hpp"))
+    fake_robot_header = "robot_hardware_interface/transport/generic_topics_fake_robot.hpp"
 
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> GenericTopicsOptions:
         p = "transport_options"

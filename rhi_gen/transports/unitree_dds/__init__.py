@@ -144,7 +144,10 @@ class UnitreeDds(Transport):
     default_float_type = "float"
     dependencies = (UNITREE_SDK2,)
     shared_files = tuple(transport_header(NAME, name) for name in
-                         ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp"))
+                         ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp",
+                          "unitree_dds_fake_robot.hpp"))
+    fake_robot_header = "robot_hardware_interface/transport/unitree_dds_fake_robot.hpp"
+    fake_state_rate_hz = 500.0  # LowState_ at 500 Hz (unitree_ros2 "HIGH_FREQ" lowstate)
     vendors = ("unitree",)
     known_robots = KNOWN_ROBOTS
     motor_slots = FAMILIES["hg"]

@@ -23,32 +23,33 @@ constexpr size_t kMotorCount = 24;
 
 // The driver's motors as the fake robot simulates them, by SDK slot (URDF limits and initial
 // position in motor units, inertia of the URDF subtree about the axis, URDF damping):
-// {name, slot, position min, max, |velocity| max, |effort| max, inertia, damping, initial position}
+// {name, slot, position min, max, |velocity| max, |effort| max, inertia, damping, initial position,
+// velocity-commanded}
 constexpr std::array<FakeJointSpec, 24> kFakeJoints = {{
-  {"J00_HIP_PITCH_L", 0, -3.141, 2.443, 26.3, 164.0, 1.06699, 0.1, 0.0},
-  {"J01_HIP_ROLL_L", 1, -0.436, 2.094, 26.3, 164.0, 1.12239, 0.1, 0.0},
-  {"J02_HIP_YAW_L", 2, -1.57, 4.014, 35.2, 61.0, 0.046248, 0.1, 0.0},
-  {"J03_KNEE_PITCH_L", 3, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0},
-  {"J04_ANKLE_PITCH_L", 4, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0},
-  {"J05_ANKLE_ROLL_L", 5, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0},
-  {"J06_HIP_PITCH_R", 6, -3.141, 2.443, 26.3, 164.0, 1.067, 0.1, 0.0},
-  {"J07_HIP_ROLL_R", 7, -2.094, 0.436, 26.3, 164.0, 1.12239, 0.1, 0.0},
-  {"J08_HIP_YAW_R", 8, -4.014, 1.57, 35.2, 61.0, 0.046248, 0.1, 0.0},
-  {"J09_KNEE_PITCH_R", 9, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0},
-  {"J10_ANKLE_PITCH_R", 10, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0},
-  {"J11_ANKLE_ROLL_R", 11, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0},
-  {"J12_WAIST_YAW", 12, -4.014, 1.57, 35.2, 61.0, 0.537976, 0.1, 0.0},
-  {"J13_SHOULDER_PITCH_L", 13, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0},
-  {"J14_SHOULDER_ROLL_L", 14, -0.6108, 2.3562, 35.2, 61.0, 0.186304, 0.1, 0.0},
-  {"J15_SHOULDER_YAW_L", 15, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0},
-  {"J16_ELBOW_PITCH_L", 16, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, 0.0},
-  {"J17_ELBOW_YAW_L", 17, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0},
-  {"J18_SHOULDER_PITCH_R", 18, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0},
-  {"J19_SHOULDER_ROLL_R", 19, -2.3562, 0.6108, 35.2, 61.0, 0.186303, 0.1, 0.0},
-  {"J20_SHOULDER_YAW_R", 20, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0},
-  {"J21_ELBOW_PITCH_R", 21, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, 0.0},
-  {"J22_ELBOW_YAW_R", 22, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0},
-  {"J23_HEAD_YAW", 23, -0.6109, 0.6109, 35.2, 61.0, 0.01, 0.1, 0.0},
+  {"J00_HIP_PITCH_L", 0, -3.141, 2.443, 26.3, 164.0, 1.06699, 0.1, 0.0, false},
+  {"J01_HIP_ROLL_L", 1, -0.436, 2.094, 26.3, 164.0, 1.12239, 0.1, 0.0, false},
+  {"J02_HIP_YAW_L", 2, -1.57, 4.014, 35.2, 61.0, 0.046248, 0.1, 0.0, false},
+  {"J03_KNEE_PITCH_L", 3, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0, false},
+  {"J04_ANKLE_PITCH_L", 4, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0, false},
+  {"J05_ANKLE_ROLL_L", 5, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0, false},
+  {"J06_HIP_PITCH_R", 6, -3.141, 2.443, 26.3, 164.0, 1.067, 0.1, 0.0, false},
+  {"J07_HIP_ROLL_R", 7, -2.094, 0.436, 26.3, 164.0, 1.12239, 0.1, 0.0, false},
+  {"J08_HIP_YAW_R", 8, -4.014, 1.57, 35.2, 61.0, 0.046248, 0.1, 0.0, false},
+  {"J09_KNEE_PITCH_R", 9, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0, false},
+  {"J10_ANKLE_PITCH_R", 10, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0, false},
+  {"J11_ANKLE_ROLL_R", 11, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0, false},
+  {"J12_WAIST_YAW", 12, -4.014, 1.57, 35.2, 61.0, 0.537976, 0.1, 0.0, false},
+  {"J13_SHOULDER_PITCH_L", 13, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0, false},
+  {"J14_SHOULDER_ROLL_L", 14, -0.6108, 2.3562, 35.2, 61.0, 0.186304, 0.1, 0.0, false},
+  {"J15_SHOULDER_YAW_L", 15, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0, false},
+  {"J16_ELBOW_PITCH_L", 16, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, 0.0, false},
+  {"J17_ELBOW_YAW_L", 17, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0, false},
+  {"J18_SHOULDER_PITCH_R", 18, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0, false},
+  {"J19_SHOULDER_ROLL_R", 19, -2.3562, 0.6108, 35.2, 61.0, 0.186303, 0.1, 0.0, false},
+  {"J20_SHOULDER_YAW_R", 20, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0, false},
+  {"J21_ELBOW_PITCH_R", 21, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, 0.0, false},
+  {"J22_ELBOW_YAW_R", 22, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0, false},
+  {"J23_HEAD_YAW", 23, -0.6109, 0.6109, 35.2, 61.0, 0.01, 0.1, 0.0, false},
 }};
 
 // transport_options: command, state, IMU and motor debug topics, parallel_parser_type (0 CLASSIC, 1
@@ -57,13 +58,15 @@ constexpr robot_hardware_interface::EngineaiTopicsOptions kTransport{
   "/hardware/joint_command", "/hardware/joint_state", "/hardware/imu_info",
   "/hardware/motor_debug", 0, {false, false, 3}};
 
+using FakeTransport = robot_hardware_interface::EngineaiTopicsFakeRobot<kMotorCount>;
+
 }  // namespace
 
 std::unique_ptr<FakeRobot> make_fake_robot()
 {
   return std::make_unique<FakeRobotRunner<kMotorCount>>(
     "pm01_fake_robot", kFakeJoints.data(), kFakeJoints.size(), 500.0,
-    std::make_unique<robot_hardware_interface::EngineaiTopicsFakeRobot<kMotorCount>>(kTransport));
+    std::make_unique<FakeTransport>(kTransport));
 }
 
 }  // namespace robot_hardware_interface

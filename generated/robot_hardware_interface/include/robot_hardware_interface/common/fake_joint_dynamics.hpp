@@ -35,6 +35,7 @@ struct FakeJointSpec
   double inertia;           // [kg m^2] or [kg]: the URDF subtree about the joint axis
   double damping;           // [N m s / rad] or [N s / m]: URDF <dynamics damping> or a default
   double initial_position;  // where the fake robot starts: the description's initial_value
+  bool velocity_commanded;  // a wheel: a servo without gains in the command keeps its velocity
 };
 
 // What one motor was last told, in the vendor's terms.

@@ -70,6 +70,7 @@ struct FakeRobotArguments
   bool help{false};
   bool allow_network{false};
   double rate_hz{0.0};  // 0: the robot's own state rate
+  std::string network_interface;  // "": the transport's default (SDK transports: lo)
   std::string error;    // a bad argument, in one line
 };
 
@@ -87,6 +88,8 @@ inline FakeRobotArguments parse_fake_robot_arguments(int argc, char ** argv)
       out.help = true;
     } else if (std::strcmp(arg, "--allow-network") == 0) {
       out.allow_network = true;
+    } else if (std::strcmp(arg, "--network-interface") == 0 && i + 1 < argc) {
+      out.network_interface = argv[++i];
     } else if (std::strcmp(arg, "--rate") == 0 && i + 1 < argc) {
       char * end = nullptr;
       out.rate_hz = std::strtod(argv[++i], &end);
@@ -105,10 +108,11 @@ inline int run_fake_robot(int argc, char ** argv, std::unique_ptr<FakeRobot> rob
   const FakeRobotArguments args = parse_fake_robot_arguments(argc, argv);
   if (args.help) {
     std::printf(
-      "usage: %s [--rate HZ] [--allow-network] [--ros-args ...]\n"
+      "usage: %s [--rate HZ] [--network-interface IF] [--allow-network] [--ros-args ...]\n"
       "A fake %s robot: answers its driver on the robot's own topics with simulated joints.\n"
-      "  --rate HZ         state rate (default %.0f Hz)\n"
-      "  --allow-network   start even where ROS 2 discovery or the SDK reaches other hosts\n"
+      "  --rate HZ                state rate (default %.0f Hz)\n"
+      "  --network-interface IF   the SDK's network interface (default lo; SDK transports)\n"
+      "  --allow-network          start even where ROS 2 discovery or the SDK reaches other hosts\n"
       "Faults: ros2 topic pub --once /%s/fault std_msgs/msg/String \"{data: 'REQUEST'}\"\n"
       "  REQUEST: silent | corrupt | hot <joint> <deg C> | error <joint> <code> | clear\n",
       argv[0], robot->transport(), robot->rate_hz(), robot->node_name());
@@ -116,6 +120,14 @@ inline int run_fake_robot(int argc, char ** argv, std::unique_ptr<FakeRobot> rob
   }
   if (!args.error.empty()) {
     std::fprintf(stderr, "%s: %s\n", robot->node_name(), args.error.c_str());
+    return 2;
+  }
+  if (!args.network_interface.empty() &&
+    !robot->set_network_interface(args.network_interface.c_str()))
+  {
+    std::fprintf(
+      stderr, "%s: --network-interface: the %s transport has none (ROS 2 discovery settings "
+      "decide where its topics go)\n", robot->node_name(), robot->transport());
     return 2;
   }
   const std::string exposure =

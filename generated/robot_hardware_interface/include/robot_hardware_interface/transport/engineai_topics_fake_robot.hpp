@@ -47,6 +47,7 @@ public:
   }
 
   const char * name() const override {return "engineai_topics";}
+  bool carries_temperatures() const override {return true;}
 
   void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) override
   {
@@ -62,7 +63,7 @@ public:
     debug_.mos_temperature.assign(N, kFakeAmbientTemperature);
     debug_.motor_temperature.assign(N, kFakeAmbientTemperature);
     imu_.quaternion.w = 1.0;              // at rest, level
-    imu_.linear_acceleration.z = 9.80665;  // the accelerometer feels gravity
+    imu_.linear_acceleration.z = kStandardGravity;
     const rclcpp::QoS qos = make_qos(options_.qos);
     state_publisher_ = node->create_publisher<JointState>(options_.state_topic, qos);
     imu_publisher_ = node->create_publisher<ImuInfo>(options_.imu_topic, qos);

@@ -1,0 +1,196 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_FAKE_ROBOT_HPP_
+#define ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_FAKE_ROBOT_HPP_
+
+// The robot's side of unitree_dds (unitree_sdk2 DDS, hg and go messages), for the fake robot: on
+// the loopback interface (--network-interface changes it), it reads LowCmd_ on the driver's
+// command topic (a frame with a wrong CRC is dropped, as the motor board drops it; a slot whose
+// MotorCmd_.mode is 0 is passive) and writes LowState_ every step (500 Hz) with a valid CRC: the
+// motors, the IMU at rest, temperatures (and, hg, supply voltage and error codes), hg's
+// mode_machine. `corrupt` sends frames whose CRC does not match, which the driver must drop. The
+// SDK calls the command handler on its own thread: commands wait under a lock until the next step.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <unitree/robot/channel/channel_factory.hpp>
+#include <unitree/robot/channel/channel_publisher.hpp>
+#include <unitree/robot/channel/channel_subscriber.hpp>
+
+#include "robot_hardware_interface/common/fake_robot.hpp"
+#include "robot_hardware_interface/transport/unitree_dds.hpp"
+#include "robot_hardware_interface/transport/unitree_go.hpp"
+#include "robot_hardware_interface/transport/unitree_hg.hpp"
+
+namespace robot_hardware_interface
+{
+// What differs between the message families on the robot's side (overloads by message type).
+struct UnitreeFakeFields
+{
+  // hg LowState_.mode_machine of the fake robot: 5 is the G1 29-DoF rev 1.0 (SDK_FACTS.md); the
+  // driver only echoes it back.
+  static constexpr uint8_t kHgModeMachine = 5;
+  static constexpr float kHgSupplyVolts = 48.0F;
+
+  static int16_t hg_celsius(double celsius)
+  {
+    return static_cast<int16_t>(std::lround(std::clamp(celsius, -32768.0, 32767.0)));
+  }
+
+  // The parts of a LowState_ that stay the same.
+  static void init_state(::unitree_hg::msg::dds_::LowState_ & state)
+  {
+    state.mode_machine() = kHgModeMachine;
+  }
+  static void init_state(::unitree_go::msg::dds_::LowState_ & state)
+  {
+    state.head()[0] = unitree_go::kHead0;
+    state.head()[1] = unitree_go::kHead1;
+  }
+
+  // Motor health, as each family's MotorState_ carries it.
+  static void write_health(
+    ::unitree_hg::msg::dds_::MotorState_ & motor, double celsius, uint32_t error_code)
+  {
+    motor.temperature()[0] = hg_celsius(celsius);  // winding
+    motor.temperature()[1] = hg_celsius(celsius);  // housing
+    motor.vol() = kHgSupplyVolts;
+    motor.motorstate() = error_code;
+  }
+  static void write_health(
+    ::unitree_go::msg::dds_::MotorState_ & motor, double celsius, uint32_t /*error_code*/)
+  {
+    motor.temperature() = static_cast<uint8_t>(std::lround(std::clamp(celsius, 0.0, 255.0)));
+  }
+
+  static constexpr bool carries_error_codes(const ::unitree_hg::msg::dds_::LowState_ *)
+  {
+    return true;
+  }
+  static constexpr bool carries_error_codes(const ::unitree_go::msg::dds_::LowState_ *)
+  {
+    return false;
+  }
+};
+
+template<size_t N, typename Family>
+class UnitreeDdsFakeRobot final : public FakeRobotTransport<N>
+{
+  using LowCmd = typename Family::LowCmd;
+  using LowState = typename Family::LowState;
+  static_assert(N <= Family::kMotorSlots, "more motors than LowState_ slots");
+
+public:
+  explicit UnitreeDdsFakeRobot(const UnitreeDdsOptions & options)
+  : options_(options)
+  {
+  }
+
+  const char * name() const override {return "unitree_dds";}
+  const char * network_interface() const override {return network_interface_.c_str();}
+  bool set_network_interface(const char * name) override
+  {
+    network_interface_ = name;
+    return true;
+  }
+  bool carries_temperatures() const override {return true;}
+  bool carries_error_codes() const override
+  {
+    return UnitreeFakeFields::carries_error_codes(static_cast<const LowState *>(nullptr));
+  }
+
+  void configure(const rclcpp::Node::SharedPtr & /*node*/, FakeRobotModel<N> & /*model*/) override
+  {
+    state_ = LowState{};
+    UnitreeFakeFields::init_state(state_);
+    auto & imu = state_.imu_state();
+    imu.quaternion()[0] = 1.0F;          // w, x, y, z: at rest, level
+    imu.accelerometer()[2] = static_cast<float>(kStandardGravity);
+    ::unitree::robot::ChannelFactory::Instance()->Init(options_.domain_id, network_interface_);
+    publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowState>>(
+      options_.lowstate_topic);
+    publisher_->InitChannel();
+    subscriber_ = std::make_shared<::unitree::robot::ChannelSubscriber<LowCmd>>(
+      options_.lowcmd_topic);
+    subscriber_->InitChannel(
+      [this](const void * message) {on_low_cmd(*static_cast<const LowCmd *>(message));}, 1);
+  }
+
+  void take_commands(FakeRobotModel<N> & model) override
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!pending_) {
+      return;
+    }
+    pending_ = false;
+    for (size_t slot = 0; slot < N; ++slot) {
+      model.dynamics.command(slot, commands_[slot]);
+    }
+  }
+
+  void publish(const FakeRobotModel<N> & model) override
+  {
+    const auto & joints = model.dynamics;
+    for (size_t slot = 0; slot < N; ++slot) {
+      auto & motor = state_.motor_state()[slot];
+      motor.q() = static_cast<float>(joints.position(slot));
+      motor.dq() = static_cast<float>(joints.velocity(slot));
+      motor.tau_est() = static_cast<float>(joints.effort(slot));
+      UnitreeFakeFields::write_health(motor, model.temperature[slot], model.error_code[slot]);
+    }
+    state_.tick() = static_cast<uint32_t>(model.steps * 2U);  // ms at 500 Hz
+    state_.crc() = Family::state_crc(state_) ^ (model.faults.corrupt ? 1U : 0U);
+    publisher_->Write(state_);
+  }
+
+  // Commands dropped for a wrong CRC (tests).
+  uint64_t bad_crc_commands() const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return bad_crc_commands_;
+  }
+
+private:
+  // The SDK's thread: a LowCmd_ with a valid CRC becomes every motor's next command.
+  void on_low_cmd(const LowCmd & cmd)
+  {
+    const bool valid = cmd.crc() == Family::command_crc(cmd);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!valid) {
+      ++bad_crc_commands_;
+      return;
+    }
+    for (size_t slot = 0; slot < N; ++slot) {
+      const auto & motor = cmd.motor_cmd()[slot];
+      commands_[slot] = motor.mode() == 0U ? FakeMotorCommand{} : FakeMotorCommand{
+        static_cast<double>(motor.q()), static_cast<double>(motor.dq()),
+        static_cast<double>(motor.tau()), static_cast<double>(motor.kp()),
+        static_cast<double>(motor.kd())};
+    }
+    pending_ = true;
+  }
+
+  const UnitreeDdsOptions options_;
+  std::string network_interface_{"lo"};
+  LowState state_;  // the constant parts filled once: no allocation per step
+  ::unitree::robot::ChannelPublisherPtr<LowState> publisher_;
+  ::unitree::robot::ChannelSubscriberPtr<LowCmd> subscriber_;
+  mutable std::mutex mutex_;  // commands_, pending_, bad_crc_commands_: SDK thread and loop
+  std::array<FakeMotorCommand, N> commands_{};
+  bool pending_{false};
+  uint64_t bad_crc_commands_{0};
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_FAKE_ROBOT_HPP_

@@ -247,6 +247,10 @@ def test_use_fake_robot_starts_it_first_with_discovery_on_this_host(package, mon
     assert all(n.environment == want for n in launched.nodes)
     d, _ = parse_ros2_control(node(launched, "robot_state_publisher")[0].parameters[0]["robot_description"])
     assert d.plugin == "robot_hardware_interface/engineai/PM01HardwareInterface"
+    # the G1 (unitree_sdk2): its fake robot is on lo, so the driver is too, whatever network_interface says
+    g1 = run(package_dir, "g1", use_fake_robot="true", network_interface="eth0")
+    d, _ = parse_ros2_control(node(g1, "robot_state_publisher")[0].parameters[0]["robot_description"])
+    assert d.parameters["network_interface"] == "lo" and node(g1, "g1_fake_robot")
     plain = run(package_dir, "pm01")
     assert not node(plain, "pm01_fake_robot") and all(not n.environment for n in plain.nodes)
     with pytest.raises(RuntimeError, match="use_fake_robot:=true and use_mock_hardware:=true exclude each other"):

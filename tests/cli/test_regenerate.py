@@ -36,7 +36,7 @@ PKG = "generated/robot_hardware_interface"
 G1_FILES = {f"{PKG}/include/robot_hardware_interface/unitree/g1.hpp", f"{PKG}/src/unitree/g1.cpp",
             f"{PKG}/description/g1.ros2_control.xacro", f"{PKG}/config/g1_controllers.yaml",
             f"{PKG}/test/test_g1_hardware_interface.cpp", f"{PKG}/urdf/g1.urdf", f"{PKG}/description/g1.urdf.xacro",
-            f"{PKG}/launch/g1.launch.py"}
+            f"{PKG}/launch/g1.launch.py", f"{PKG}/src/unitree/g1_fake_robot.cpp"}
 # The bring-up files name no joint: a joint rename leaves them as they are.
 G1_BRINGUP = {f"{PKG}/description/g1.urdf.xacro", f"{PKG}/launch/g1.launch.py"}
 MANIFEST = "generated/.rhi-gen-manifest"
@@ -98,8 +98,8 @@ def test_renamed_joint_is_one_rename_and_touches_only_its_lines(project, capsys)
     assert "\x1b[" not in out  # captured output is not a terminal: plain text
     assert "+++ b/generated/robot_hardware_interface/src/unitree/g1.cpp" in out
     # the header holds no joint names (the joint table is in the source), nor do the description and the
-    # launch file: 5 of the robot's 8 files (the installed URDF copy is one)
-    assert "5 file(s) and generated/.rhi-gen-manifest would change" in err
+    # launch file: 6 of the robot's 9 files (the installed URDF copy is one, the fake robot's table another)
+    assert "6 file(s) and generated/.rhi-gen-manifest would change" in err
     assert tree(project) == {**before, **{k: v for k, v in tree(project).items() if k.startswith("robots/")}}
 
     code, out, _ = cli(capsys, project, "generate")
@@ -297,7 +297,7 @@ def test_removed_robot_with_user_code_is_refused(project, capsys):
 def test_removed_robot_without_user_code_is_removed(project, capsys):
     (project / "robots/unitree/g1.yaml").unlink()
     code, out, _ = cli(capsys, project, "generate")
-    assert code == 0 and "12 removed" in out  # 8 robot files + the 4 unitree transport headers
+    assert code == 0 and "14 removed" in out  # 9 robot files + the 5 unitree transport headers
     assert not any((project / rel).exists() for rel in G1_FILES)
     assert not (project / f"{PKG}/src/unitree").exists()
     for header in ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp"):
@@ -354,7 +354,7 @@ def test_check_reports_stale_inputs_and_file_differences(project, capsys):
     assert out.startswith("stale: unitree/g1: robots/unitree/g1.yaml changed, robots/unitree/g1.urdf changed\n"
                           "  renamed     joint 3: left_knee_joint -> left_knee_pitch_joint\n")
     assert "+++ b/generated/robot_hardware_interface/src/unitree/g1.cpp" in out
-    assert "1 robot(s) with changed inputs, 5 file(s) differ" in err
+    assert "1 robot(s) with changed inputs, 6 file(s) differ" in err
 
 
 def test_check_catches_a_stale_manifest_even_when_files_match(project, capsys):

@@ -539,7 +539,9 @@ class CppBuilder:
         # include (a clone without the AimDK messages reuses the G1 objects of a session that had them).
         self._message_flags: dict[str | None, list[str]] = {}
         self._messages: dict[str | None, str] = {}
-        self._harness = _tree_digest(HARNESS_DIR) + _tree_digest(TOY_BUS_DIR, (".hpp", ".in"))
+        # .inc: the sections and mutants driver_harness.cpp includes
+        self._harness = _tree_digest(HARNESS_DIR, (".hpp", ".h", ".cpp", ".inc")) + \
+            _tree_digest(TOY_BUS_DIR, (".hpp", ".in"))
         self._lock = threading.Lock()
         self._inflight: dict[str, threading.Event] = {}
         self._results: dict[str, CompileResult] = {}

@@ -2471,8 +2471,8 @@ int main(int argc, char** argv) {
     if (kHasTransmission && only.empty()) {
       // The main scenario, decimation and parameters compare exact motor values with joint values.
       std::printf("motors that are not joints: sections interfaces, transmission, faults, health, diagnostics, "
-                  "threads\n");
-      only = "interfaces,transmission,faults,health,diagnostics,threads";
+                  "fake_robot, threads\n");
+      only = "interfaces,transmission,faults,health,diagnostics,fake_robot,threads";
     }
     if (selected(only, "interfaces")) test_interfaces();
     if (selected(only, "transmission")) test_transmission();

@@ -1,0 +1,85 @@
+"""Benchmark: the generated fake robots hold their rate (issue 22).
+
+Run (from the repository root):
+
+    .venv/bin/python benchmarks/bench_fake_robot.py [--seconds 3] [--steps 20000] [--robot g1]
+
+It renders the reference robots' package into a temporary folder, builds benchmarks/cpp/bench_fake_robot.cpp
+with each robot's generated src/<vendor>/<robot>_fake_robot.cpp (-O2) against the Rolling stand-ins and the
+real ROS message headers, and runs it: the fake robot's loop on its wall timer, spun by an executor thread
+(the stand-in rclcpp fires a due timer from the spinning thread, as rclcpp's executor does), for --seconds,
+reporting the achieved rate against the robot's nominal one and the jitter of the period (mean of
+|period - nominal|, and the largest late and early period); then one loop iteration (the physics of every
+motor and the publication of every message of a step) timed --steps times (median, p99, p99.9). The
+rate and jitter depend on the machine's load and timer resolution: they are indicative, not asserted.
+
+A robot whose vendor messages are not available here (AgiBot X2 without ../shared) is skipped with one line.
+Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from tests.support import cpp_build, vendor_msgs  # noqa: E402
+
+BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_fake_robot.cpp"
+ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
+DISTRO = "rolling"
+FLAGS = cpp_build.FLAVOURS["plain"]
+
+
+def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild) -> Path:
+    m = rb.model
+    source = cpp_build.fake_robot_source(rb.package_dir, m.vendor, m.robot)
+    assert source is not None, f"{m.vendor}/{m.robot} has no fake robot"
+    includes = [rb.package_dir / "include", *cpp_build.DISTROS[DISTRO].include_dirs]
+    digest = [cpp_build.package_digest(rb.package_dir)]
+    tag = f"{m.vendor}_{m.robot}"
+    objects = [builder.compile(source, FLAGS, includes, digest_parts=digest, name=f"benchfake_robot_{tag}",
+                               distro=DISTRO, transport=m.transport),
+               builder.compile(BENCH_SOURCE, FLAGS, includes, digest_parts=digest, name=f"benchfake_{tag}",
+                               distro=DISTRO, transport=m.transport)]
+    for o in objects:
+        if not o.ok:
+            sys.exit(f"bench_fake_robot: {o.path.name} did not compile:\n{o.stderr[-4000:]}")
+    linked = builder.link(objects, FLAGS, f"benchfake_{tag}")
+    if not linked.ok:
+        sys.exit(f"bench_fake_robot: {tag} did not link:\n{linked.stderr[-4000:]}")
+    return linked.path
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--seconds", type=float, default=3.0, help="how long the loop runs (default 3)")
+    parser.add_argument("--steps", type=int, default=20000, help="timed loop iterations (default 20000)")
+    parser.add_argument("--robot", action="append", help="g1, x2 or pm01 (repeatable; default all)")
+    args = parser.parse_args()
+    robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
+    cache = Path(os.environ.get("RHI_CPP_CACHE") or Path(tempfile.gettempdir()) / "rhi_bench_cache")
+    builder = cpp_build.CppBuilder(cache)
+    with tempfile.TemporaryDirectory(prefix="rhi_bench_fake_") as tmp:
+        package = cpp_build.render_test_package(Path(tmp), only=robots, extra_robots=False)
+        for label in robots:
+            rb = package.build(label)
+            reason = vendor_msgs.skip_reason(rb.model.transport)
+            if reason:
+                print(f"{label}: skipped: {reason}")
+                continue
+            binary = build(builder, rb)
+            run = subprocess.run([str(binary), f"--seconds={args.seconds}", f"--steps={args.steps}"],
+                                 capture_output=True, text=True, timeout=120 + args.seconds)
+            if run.returncode != 0:
+                sys.exit(f"bench_fake_robot: {label} exited with {run.returncode}:\n{run.stderr[-4000:]}")
+            print(run.stdout.rstrip(), flush=True)
+
+
+if __name__ == "__main__":
+    main()

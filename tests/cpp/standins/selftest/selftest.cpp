@@ -39,6 +39,9 @@
 #include <rclcpp/logging.hpp>
 #include <rclcpp/macros.hpp>
 #include <rclcpp/node.hpp>
+#include <rclcpp/node_interfaces/node_parameters_interface.hpp>
+#include <rclcpp/parameter.hpp>
+#include <rclcpp/parameter_value.hpp>
 #include <rclcpp/qos.hpp>
 #include <rclcpp/rclcpp.hpp>
 #include <rclcpp/time.hpp>
@@ -608,6 +611,52 @@ static void test_rclcpp()
 }
 
 // ============================================================== thread-safety smoke (for TSan)
+static void test_parameters()
+{
+  auto node = std::make_shared<rclcpp::Node>("parameters_node");
+  CHECK(node->declare_parameter<std::string>("fault", "") == "");
+  CHECK(node->declare_parameter<int64_t>("count", 3) == 3);
+  CHECK_THROWS(rclcpp::exceptions::ParameterAlreadyDeclaredException,
+    node->declare_parameter<std::string>("fault", "x"));
+  CHECK_THROWS(rclcpp::exceptions::ParameterNotDeclaredException, node->get_parameter("nope"));
+  CHECK_THROWS(rclcpp::ParameterTypeException, node->get_parameter("count").as_string());
+  std::vector<std::string> seen;
+  auto first = node->add_on_set_parameters_callback(
+    [&seen](const std::vector<rclcpp::Parameter> & ps) {
+      seen.push_back("first:" + ps.at(0).get_name());
+      rcl_interfaces::msg::SetParametersResult r;
+      r.successful = ps.at(0).get_name() != "fault" || ps.at(0).as_string() != "bad";
+      r.reason = r.successful ? "" : "bad request";
+      return r;
+    });
+  auto second = node->add_on_set_parameters_callback(
+    [&seen](const std::vector<rclcpp::Parameter> & ps) {
+      seen.push_back("second:" + ps.at(0).get_name());
+      rcl_interfaces::msg::SetParametersResult r;
+      r.successful = true;
+      return r;
+    });
+  auto ok = node->set_parameter(rclcpp::Parameter("fault", "silent"));
+  CHECK(ok.successful && node->get_parameter("fault").as_string() == "silent");
+  CHECK(seen.size() == 2 && seen[0] == "second:fault" && seen[1] == "first:fault");  // newest first
+  auto refused = node->set_parameter(rclcpp::Parameter("fault", "bad"));
+  CHECK(!refused.successful && refused.reason == "bad request");
+  CHECK(node->get_parameter("fault").as_string() == "silent");  // a refused value is not stored
+  auto typed = node->set_parameter(rclcpp::Parameter("fault", 5));
+  CHECK(!typed.successful && typed.reason.find("Wrong parameter type") != std::string::npos);
+  first.reset();  // a dropped handle removes its callback
+  seen.clear();
+  CHECK(node->set_parameter(rclcpp::Parameter("fault", "bad")).successful && seen.size() == 1);
+  CHECK_THROWS(rclcpp::exceptions::InvalidParameterValueException, [&node]() {
+    auto refuse = node->add_on_set_parameters_callback([](const std::vector<rclcpp::Parameter> &) {
+        rcl_interfaces::msg::SetParametersResult r;
+        r.successful = false;
+        return r;
+      });
+    node->declare_parameter<bool>("flag", false);
+  }());
+}
+
 static void test_concurrency()
 {
   auto node = std::make_shared<rclcpp::Node>("concurrency_node", "/ns");
@@ -990,6 +1039,7 @@ int main()
   test_messages();
   test_time();
   test_rclcpp();
+  test_parameters();
   test_concurrency();
   test_unitree();
   test_reset();

@@ -62,6 +62,28 @@ public:
   : NameValidationError("topic name", topic_name, error_msg_, invalid_index_) {}
 };
 
+class ParameterAlreadyDeclaredException : public std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+class ParameterNotDeclaredException : public std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+class InvalidParameterValueException : public std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+class InvalidParameterTypeException : public std::runtime_error
+{
+public:
+  InvalidParameterTypeException(const std::string & name, const std::string message)
+  : std::runtime_error("parameter '" + name + "' has invalid type: " + message) {}
+};
+
 }  // namespace exceptions
 }  // namespace rclcpp
 

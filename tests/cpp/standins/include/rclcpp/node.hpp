@@ -1,6 +1,9 @@
 // rhi-gen test stand-in (not the real ROS 2 code): rclcpp::Node (ROS 2 Humble API subset):
 // names, logger, clock, now(), create_publisher, create_subscription, create_wall_timer,
-// get_node_base_interface / get_node_clock_interface / get_node_logging_interface. Like rclcpp:
+// get_node_base_interface / get_node_clock_interface / get_node_logging_interface, and statically
+// typed scalar parameters: declare_parameter, get_parameter, set_parameter, add_on_set_parameters_callback
+// (callbacks run newest first, a failed one rejects the set; a value of another type is rejected with
+// rclcpp's reason; parameter overrides from NodeOptions / --ros-args are not modelled). Like rclcpp:
 //  * constructing a Node before rclcpp::init() (or after shutdown) throws rclcpp::exceptions::RCLError;
 //  * invalid node names / namespaces / topic names throw the rclcpp::exceptions::Invalid*Error types;
 //  * topic names are expanded: "x" -> "<ns>/x", "~/x" -> "<node fqn>/x".
@@ -12,6 +15,8 @@
 #include <cctype>
 #include <chrono>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -19,8 +24,11 @@
 #include <type_traits>
 #include <typeindex>
 #include <utility>
+#include <vector>
 
 #include "rcl/time.h"
+#include "rcl_interfaces/msg/parameter_descriptor.hpp"
+#include "rcl_interfaces/msg/set_parameters_result.hpp"
 #include "rclcpp/callback_group.hpp"
 #include "rclcpp/clock.hpp"
 #include "rclcpp/context.hpp"
@@ -28,6 +36,9 @@
 #include "rclcpp/exceptions.hpp"
 #include "rclcpp/logger.hpp"
 #include "rclcpp/macros.hpp"
+#include "rclcpp/node_interfaces/node_parameters_interface.hpp"
+#include "rclcpp/parameter.hpp"
+#include "rclcpp/parameter_value.hpp"
 #include "rclcpp/node_interfaces/node_base_interface.hpp"
 #include "rclcpp/node_interfaces/node_clock_interface.hpp"
 #include "rclcpp/node_interfaces/node_logging_interface.hpp"
@@ -342,7 +353,126 @@ public:
     return timer;
   }
 
+  // ---------------------------------------------------------------- parameters
+
+  using OnSetParametersCallbackHandle = rclcpp::node_interfaces::OnSetParametersCallbackHandle;
+
+  const rclcpp::ParameterValue & declare_parameter(
+    const std::string & name, const rclcpp::ParameterValue & default_value,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false)
+  {
+    (void)parameter_descriptor;
+    (void)ignore_override;
+    std::vector<OnSetParametersCallbackHandle::SharedPtr> callbacks;
+    {
+      std::lock_guard<std::mutex> lock(parameters_mutex_);
+      if (parameters_.count(name) != 0U) {
+        throw rclcpp::exceptions::ParameterAlreadyDeclaredException(
+                "parameter '" + name + "' has already been declared");
+      }
+      callbacks = live_callbacks();
+    }
+    // Declaring runs the on-set callbacks, as rclcpp does; a refusal throws.
+    const std::vector<rclcpp::Parameter> parameters{rclcpp::Parameter(name, default_value)};
+    for (const auto & handle : callbacks) {
+      const auto result = handle->callback(parameters);
+      if (!result.successful) {
+        throw rclcpp::exceptions::InvalidParameterValueException(
+                "parameter '" + name + "' could not be set: " + result.reason);
+      }
+    }
+    std::lock_guard<std::mutex> lock(parameters_mutex_);
+    return parameters_[name] = default_value;
+  }
+
+  template<typename ParameterT>
+  auto declare_parameter(
+    const std::string & name, const ParameterT & default_value,
+    const rcl_interfaces::msg::ParameterDescriptor & parameter_descriptor =
+    rcl_interfaces::msg::ParameterDescriptor(),
+    bool ignore_override = false)
+  {
+    try {
+      return this->declare_parameter(
+        name, rclcpp::ParameterValue(default_value), parameter_descriptor,
+        ignore_override).template get<ParameterT>();
+    } catch (const ParameterTypeException & ex) {
+      throw exceptions::InvalidParameterTypeException(name, ex.what());
+    }
+  }
+
+  rclcpp::Parameter get_parameter(const std::string & name) const
+  {
+    std::lock_guard<std::mutex> lock(parameters_mutex_);
+    const auto it = parameters_.find(name);
+    if (it == parameters_.end()) {
+      throw rclcpp::exceptions::ParameterNotDeclaredException(name);
+    }
+    return rclcpp::Parameter(name, it->second);
+  }
+
+  /// What `ros2 param set` reaches: the callbacks (newest first) may refuse, then the value is stored.
+  rcl_interfaces::msg::SetParametersResult set_parameter(const rclcpp::Parameter & parameter)
+  {
+    rcl_interfaces::msg::SetParametersResult result;
+    result.successful = true;
+    std::vector<OnSetParametersCallbackHandle::SharedPtr> callbacks;
+    {
+      std::lock_guard<std::mutex> lock(parameters_mutex_);
+      const auto it = parameters_.find(parameter.get_name());
+      if (it == parameters_.end()) {
+        throw rclcpp::exceptions::ParameterNotDeclaredException(parameter.get_name());
+      }
+      if (it->second.get_type() != parameter.get_type()) {
+        result.successful = false;
+        result.reason = "Wrong parameter type, parameter {" + parameter.get_name() + "} is of type {" +
+          rclcpp::to_string(it->second.get_type()) + "}, setting it to {" +
+          rclcpp::to_string(parameter.get_type()) + "} is not allowed.";
+        return result;
+      }
+      callbacks = live_callbacks();
+    }
+    const std::vector<rclcpp::Parameter> parameters{parameter};
+    for (const auto & handle : callbacks) {
+      result = handle->callback(parameters);
+      if (!result.successful) {
+        return result;
+      }
+    }
+    std::lock_guard<std::mutex> lock(parameters_mutex_);
+    parameters_[parameter.get_name()] = parameter.get_parameter_value();
+    return result;
+  }
+
+  [[nodiscard]] OnSetParametersCallbackHandle::SharedPtr add_on_set_parameters_callback(
+    std::function<rcl_interfaces::msg::SetParametersResult(const std::vector<rclcpp::Parameter> &)>
+    callback)
+  {
+    auto handle = std::make_shared<OnSetParametersCallbackHandle>();
+    handle->callback = std::move(callback);
+    std::lock_guard<std::mutex> lock(parameters_mutex_);
+    on_set_callbacks_.push_back(handle);
+    return handle;
+  }
+
 private:
+  // The live on-set callbacks, newest first (parameters_mutex_ held).
+  std::vector<OnSetParametersCallbackHandle::SharedPtr> live_callbacks() const
+  {
+    std::vector<OnSetParametersCallbackHandle::SharedPtr> out;
+    for (auto weak = on_set_callbacks_.rbegin(); weak != on_set_callbacks_.rend(); ++weak) {
+      if (auto handle = weak->lock()) {
+        out.push_back(handle);
+      }
+    }
+    return out;
+  }
+
+  mutable std::mutex parameters_mutex_;
+  std::map<std::string, rclcpp::ParameterValue> parameters_;
+  std::vector<std::weak_ptr<OnSetParametersCallbackHandle>> on_set_callbacks_;
   NodeOptions options_;
   rclcpp::Logger logger_;
   rclcpp::Clock::SharedPtr clock_;

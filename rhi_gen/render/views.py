@@ -19,14 +19,7 @@ from dataclasses import dataclass
 from .. import transports
 from ..model import MotorJoint, RobotModel
 from ..project import PACKAGE_NAME
-from ..transports import (
-    COMMON_DEPENDENCIES,
-    COMMON_MESSAGE_DEPENDENCIES,
-    FAKE_ROBOT_DEPENDENCY,
-    PLAIN_CMAKE,
-    VENDOR_SOURCE,
-    Dependency,
-)
+from ..transports import COMMON_DEPENDENCIES, COMMON_MESSAGE_DEPENDENCIES, PLAIN_CMAKE, VENDOR_SOURCE, Dependency
 
 # ---------------------------------------------------------------- package files
 
@@ -62,7 +55,6 @@ class RobotTarget:
     depends: tuple[str, ...]    # the transport's packages, as rhi_check_dependencies checks them
     links: tuple[str, ...]      # its PRIVATE link items: ${pkg_TARGETS} of ROS packages, then SDK targets
     fake_robot: str = ""        # its fake robot executable ("" when the transport has no fake robot side)
-    fake_links: tuple[str, ...] = ()  # the fake robot's link items: the transport's and the fault topic's
 
 
 @dataclass(frozen=True)
@@ -101,12 +93,11 @@ def package_view(robots: Sequence[RobotModel]) -> PackageView:
     for r in robots:
         transport = transports.get(r.transport)
         deps = transport.dependencies
-        fake = (*deps, FAKE_ROBOT_DEPENDENCY) if transport.fake_robot_header else ()
-        used += (*deps, *fake)
+        used += deps
         targets.append(RobotTarget(robot=r, target=f"{PACKAGE_NAME}_{r.vendor}_{r.robot}",
                                    test=f"test_{r.robot}_hardware_interface",
-                                   depends=tuple(d.name for d in (fake or deps)), links=_links(deps),
-                                   fake_robot=f"{r.robot}_fake_robot" if fake else "", fake_links=_links(fake)))
+                                   depends=tuple(d.name for d in deps), links=_links(deps),
+                                   fake_robot=f"{r.robot}_fake_robot" if transport.fake_robot_header else ""))
     used = _unique(used)
     plain = tuple(d for d in used if d.source == PLAIN_CMAKE)
     ros = sorted(d.name for d in used if d.source != PLAIN_CMAKE)

@@ -20,7 +20,6 @@ from ..model.naming import suggest
 from .base import (
     COMMON_DEPENDENCIES,
     COMMON_MESSAGE_DEPENDENCIES,
-    FAKE_ROBOT_DEPENDENCY,
     PLAIN_CMAKE,
     ROSDISTRO,
     VENDOR_SOURCE,
@@ -45,7 +44,7 @@ TRANSPORTS: Mapping[str, Transport] = MappingProxyType({t.name: t for t in _ALL}
 NAMES: tuple[str, ...] = tuple(TRANSPORTS)
 DEFAULT = GENERIC_TOPICS.name  # for a vendor rhi-gen has no transport of its own for
 
-__all__ = ["COMMON_DEPENDENCIES", "COMMON_MESSAGE_DEPENDENCIES", "DEFAULT", "FAKE_ROBOT_DEPENDENCY", "NAMES",
+__all__ = ["COMMON_DEPENDENCIES", "COMMON_MESSAGE_DEPENDENCIES", "DEFAULT", "NAMES",
            "PLAIN_CMAKE", "ROSDISTRO", "TRANSPORTS", "VENDOR_SOURCE", "Dependency", "KnownRobot", "Transport",
            "for_vendor", "get", "known_robot", "suggest_order", "suggest_slots"]
 

@@ -48,10 +48,6 @@ class Dependency:
     package_xml_note: tuple[str, ...] = ()  # package.xml's comment in its place: why it is not declared
 
 
-# What a fake robot needs besides its transport's packages: its ~/fault topic's message.
-FAKE_ROBOT_DEPENDENCY = Dependency("std_msgs", ROSDISTRO)
-
-
 @dataclass(frozen=True)
 class KnownRobot:
     """A vendor robot whose SDK motor order rhi-gen knows (`rhi-gen new` and `inspect` suggest it)."""

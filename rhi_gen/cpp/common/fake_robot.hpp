@@ -9,8 +9,9 @@
 // A fake robot: the robot's side of its transport, for trying the real driver before the robot is
 // on the bench. FakeRobotRunner steps the joints (fake_joint_dynamics.hpp) at the robot's state
 // rate on one wall timer and hands them to the transport's fake side (transport/*_fake_robot.hpp),
-// which speaks exactly the driver's protocol. Faults are injected at run time on ~/fault
-// (std_msgs/String). Everything runs on the node's one executor thread: no locks.
+// which speaks exactly the driver's protocol. Faults are injected at run time through the node's
+// string parameter `fault` (`ros2 param set /<robot>_fake_robot fault silent`; a request it cannot
+// carry out is refused with the reason). Everything runs on the node's one executor thread.
 
 #include <algorithm>
 #include <array>
@@ -22,14 +23,16 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include <rcl_interfaces/msg/set_parameters_result.hpp>
 #include <rclcpp/logging.hpp>
 #include <rclcpp/node.hpp>
-#include <rclcpp/subscription.hpp>
+#include <rclcpp/parameter.hpp>
 #include <rclcpp/timer.hpp>
-#include <std_msgs/msg/string.hpp>
 
 #include "robot_hardware_interface/common/fake_joint_dynamics.hpp"
 
@@ -41,7 +44,7 @@ inline constexpr double kFakeAmbientTemperature = 35.0;
 // What the accelerometer of a robot at rest reads, upwards [m/s^2].
 inline constexpr double kStandardGravity = 9.80665;
 
-// What the user broke, on ~/fault. Every field is off / 0 until a fault is injected.
+// What the user broke (parameter `fault`). Every field is off until a fault is injected.
 struct FakeFaults
 {
   bool silent{false};   // publish nothing (a dead link)
@@ -132,14 +135,12 @@ public:
   virtual const char * network_interface() const = 0;
   virtual bool set_network_interface(const char * name) = 0;
   virtual double rate_hz() const = 0;
-  // Subscriptions, publishers and the ~/fault topic; then start() runs the loop at `rate_hz`.
+  // Subscriptions, publishers and the `fault` parameter; then start() runs the loop at `rate_hz`.
   virtual void configure(const rclcpp::Node::SharedPtr & node) = 0;
   virtual void start(double rate_hz) = 0;
   virtual void stop() = 0;
   // One loop iteration now (the wall timer's callback): physics, then publication.
   virtual void step() = 0;
-  // A fault request, as on ~/fault: false (and `why`) when it is not understood.
-  virtual bool inject(const char * request, std::string * why) = 0;
   virtual size_t joint_count() const = 0;
   virtual const FakeJointSpec & joint(size_t k) const = 0;
   virtual double position(size_t slot) const = 0;
@@ -175,9 +176,17 @@ public:
   {
     node_ = node;
     transport_->configure(node, model_);
-    fault_subscription_ = node->create_subscription<std_msgs::msg::String>(
-      "~/fault", rclcpp::QoS(rclcpp::KeepLast(10)).reliable(),
-      [this](const std_msgs::msg::String & msg) {on_fault(msg.data);});
+    // Declared before the callback exists (declaring runs the callbacks): a request given at
+    // start-up (--ros-args -p fault:=silent) is applied here, from the first step.
+    const std::string initial = node->declare_parameter<std::string>(kFaultParameter, "");
+    fault_callback_ = node->add_on_set_parameters_callback(
+      [this](const std::vector<rclcpp::Parameter> & parameters) {
+        return on_parameters(parameters);
+      });
+    std::string why;
+    if (!initial.empty() && !apply_fault(initial.c_str(), &why)) {
+      throw std::invalid_argument(std::string("parameter fault: ") + why);
+    }
   }
 
   void start(double rate_hz) override
@@ -209,11 +218,6 @@ public:
     }
   }
 
-  bool inject(const char * request, std::string * why) override
-  {
-    return apply_fault(request, why);
-  }
-
   size_t joint_count() const override {return model_.dynamics.joint_count();}
   const FakeJointSpec & joint(size_t k) const override {return model_.dynamics.joints()[k];}
   double position(size_t slot) const override {return model_.dynamics.position(slot);}
@@ -226,15 +230,33 @@ public:
   const FakeLoopStats & stats() const override {return stats_;}
 
 private:
-  void on_fault(const std::string & request)
+  static constexpr const char * kFaultParameter = "fault";
+
+  // `ros2 param set <node> fault <request>`: carried out, or refused with the reason.
+  rcl_interfaces::msg::SetParametersResult on_parameters(
+    const std::vector<rclcpp::Parameter> & parameters)
   {
-    std::string why;
-    if (apply_fault(request.c_str(), &why)) {
-      RCLCPP_WARN(node_->get_logger(), "fault injected: %s", request.c_str());
-    } else {
-      RCLCPP_ERROR(
-        node_->get_logger(), "fault request '%s' refused: %s", request.c_str(), why.c_str());
+    rcl_interfaces::msg::SetParametersResult result;
+    result.successful = true;
+    for (const rclcpp::Parameter & parameter : parameters) {
+      if (parameter.get_name() != kFaultParameter) {
+        continue;
+      }
+      const std::string & request = parameter.as_string();
+      if (request.empty()) {
+        continue;
+      }
+      std::string why;
+      if (apply_fault(request.c_str(), &why)) {
+        RCLCPP_WARN(node_->get_logger(), "fault injected: %s", request.c_str());
+      } else {
+        RCLCPP_ERROR(
+          node_->get_logger(), "fault request '%s' refused: %s", request.c_str(), why.c_str());
+        result.successful = false;
+        result.reason = why;
+      }
     }
+    return result;
   }
 
   // silent | corrupt | hot <joint> <deg C> | error <joint> <code> | clear
@@ -312,7 +334,7 @@ private:
   FakeRobotModel<N> model_;
   std::unique_ptr<FakeRobotTransport<N>> transport_;
   rclcpp::Node::SharedPtr node_;
-  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr fault_subscription_;
+  rclcpp::node_interfaces::OnSetParametersCallbackHandle::SharedPtr fault_callback_;
   rclcpp::TimerBase::SharedPtr timer_;
   FakeLoopStats stats_;
 };

@@ -23,6 +23,8 @@
 #include <mutex>
 #include <string>
 
+#include <rclcpp/logging.hpp>
+#include <rclcpp/node.hpp>
 #include <unitree/robot/channel/channel_factory.hpp>
 #include <unitree/robot/channel/channel_publisher.hpp>
 #include <unitree/robot/channel/channel_subscriber.hpp>
@@ -96,6 +98,15 @@ public:
   {
   }
 
+  // The SDK's thread may be in on_low_cmd(): close the channel (which waits for it) before the
+  // members it uses go.
+  ~UnitreeDdsFakeRobot() override
+  {
+    if (subscriber_) {
+      subscriber_->CloseChannel();
+    }
+  }
+
   const char * name() const override {return "unitree_dds";}
   const char * network_interface() const override {return network_interface_.c_str();}
   bool set_network_interface(const char * name) override
@@ -109,8 +120,14 @@ public:
     return UnitreeFakeFields::carries_error_codes(static_cast<const LowState *>(nullptr));
   }
 
-  void configure(const rclcpp::Node::SharedPtr & /*node*/, FakeRobotModel<N> & /*model*/) override
+  void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & /*model*/) override
   {
+    if (options_.release_motion_control) {
+      RCLCPP_WARN(
+        node->get_logger(), "transport_options.release_motion_control is true: the driver asks "
+        "the motion switcher service to release the built-in controller, which this fake robot "
+        "does not answer, so its activation fails (set it to false to use the fake robot)");
+    }
     state_ = LowState{};
     UnitreeFakeFields::init_state(state_);
     auto & imu = state_.imu_state();

@@ -97,7 +97,8 @@ def test_fake_robot_executable_guards_the_network(reference, cpp_builder):
         name = f"{rb.model.robot}_fake_robot"
 
         helped = run(binary, "--help")
-        assert helped.returncode == 0 and "--allow-network" in helped.stdout and f"/{name}/fault" in helped.stdout
+        assert helped.returncode == 0 and "--allow-network" in helped.stdout
+        assert f"ros2 param set /{name} fault" in helped.stdout
 
         sdk = rb.model.transport == "unitree_dds"
         if sdk:  # the SDK on lo: it starts whatever ROS 2 discovery does; another interface is refused

@@ -31,7 +31,7 @@ def test_update_rate_rounds_half_to_even_and_is_at_least_1(period, rate):
 
 def test_package_view_declares_only_the_transports_in_use():
     unitree = package_view([_robot("unitree_dds", "unitree", "g1")])
-    assert unitree.ros_deps == ("std_msgs",) and unitree.vendor_msgs == ""  # std_msgs: the fake robot's ~/fault
+    assert unitree.ros_deps == () and unitree.vendor_msgs == ""
     assert [d.name for d in unitree.plain_deps] == ["unitree_sdk2"]
     assert [(c.keyword, c.name, c.target_var) for c in unitree.plain_checks] == [
         ("if", "unitree_sdk2", "RHI_UNITREE_SDK2_TARGET")]
@@ -40,9 +40,9 @@ def test_package_view_declares_only_the_transports_in_use():
     assert unitree.robots[0].links == ("${RHI_UNITREE_SDK2_TARGET}",)
 
     mixed = package_view([_robot("agibot_topics", "agibot", "x2"), _robot("generic_topics", robot="b")])
-    assert mixed.ros_deps == ("aimdk_msgs", "sensor_msgs", "std_msgs") and mixed.vendor_msgs == "aimdk_msgs"
+    assert mixed.ros_deps == ("aimdk_msgs", "sensor_msgs") and mixed.vendor_msgs == "aimdk_msgs"
     assert mixed.plain_deps == () and mixed.found_keyword == "if" and mixed.plain_notes == ()
-    assert mixed.robots[0].depends == ("aimdk_msgs", "sensor_msgs", "std_msgs")
+    assert mixed.robots[0].depends == ("aimdk_msgs", "sensor_msgs")
     assert mixed.robots[0].links == ("${aimdk_msgs_TARGETS}", "${sensor_msgs_TARGETS}")
     assert mixed.description == "agibot/ArmHardwareInterface, acme/ArmHardwareInterface" and mixed.imu
 
@@ -95,8 +95,7 @@ def test_views_of_the_reference_robots():
     """The repository's own robots (generated/ is checked byte for byte by test_generated_is_current)."""
     models = [r.model for r in load_robots(find_project(REPO))]
     view = package_view(sorted(models, key=lambda m: (m.vendor, m.robot)))
-    # std_msgs: the fake robots (their ~/fault topic)
-    assert view.ros_deps == ("aimdk_msgs", "geometry_msgs", "interface_protocol", "sensor_msgs", "std_msgs")
+    assert view.ros_deps == ("aimdk_msgs", "geometry_msgs", "interface_protocol", "sensor_msgs")
     assert [t.fake_robot for t in view.robots] == ["x2_fake_robot", "pm01_fake_robot", "g1_fake_robot"]
     assert view.vendor_msgs == "aimdk_msgs, interface_protocol"
     assert [d.name for d in view.plain_deps] == ["unitree_sdk2"]

@@ -113,6 +113,9 @@ def render_package(models: Sequence[RobotModel],
     static = [*COMMON_FILES, *(TEST_FILES if robots else ())]
     if any(has_fake_robot(r) for r in robots):
         static += FAKE_ROBOT_FILES
+    elif any(r.transport == "custom" for r in robots):
+        # a custom bus rhi-gen does not know: the joints, the loop and the interface a bus implements
+        static += [f for f in FAKE_ROBOT_FILES if f[1].endswith(".hpp")]
     for name in sorted({r.transport for r in robots}):
         static += transports.TRANSPORTS[name].shared_files
     for source, out in static:

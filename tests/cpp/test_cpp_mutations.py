@@ -64,6 +64,7 @@ UNITREE_HG = TRANSPORT + "unitree_hg.hpp"
 UNITREE_GO = TRANSPORT + "unitree_go.hpp"
 AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
 PM01_FAKE_ROBOT = "src/engineai/pm01_fake_robot.cpp"
+G1_FAKE_ROBOT = "src/unitree/g1_fake_robot.cpp"
 
 # The seed's double buffer (also built by test_cpp_data_buffer.py): its namespace block, comments off.
 BROKEN_DOUBLE_BUFFER = code_of((REPO / "tests/cpp/harness/mutants/double_buffer.inc").read_text())
@@ -207,6 +208,9 @@ MUTATIONS = (
     Mutation("fake_robot_motor_map_wrong", "the fake robot drives the first joint on the second joint's motor",
              TokenEdit(PM01_FAKE_ROBOT, '{"J00_HIP_PITCH_L", 0,', '{"J00_HIP_PITCH_L", 1,'),
              ("fake_robot",), robots=("engineai/pm01",)),
+    Mutation("fake_robot_motor_map_wrong_sdk", "the G1's fake robot drives its first joint on the second joint's motor",
+             TokenEdit(G1_FAKE_ROBOT, '{"left_hip_pitch_joint", 0,', '{"left_hip_pitch_joint", 1,'),
+             ("fake_robot",), robots=("unitree/g1",)),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

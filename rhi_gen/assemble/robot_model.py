@@ -14,6 +14,7 @@ from pathlib import Path
 from .. import transports
 from ..errors import ConfigError, UrdfError
 from ..model.config import VendorConfig
+from ..model.motor_groups import is_leg
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
 from ..model.robot import InputProvenance, JointTransmission, MotorJoint, RobotModel
 from ..model.urdf import UrdfJoint, UrdfRobot, limits_problem, safe_position
@@ -109,10 +110,12 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         index = mapped[joint.name]
         group, position = config.transport_options.joint_group(index) or (None, None)
         mode = modes.get(joint.name, "velocity" if joint.type == "continuous" else "position")
-        stiffness, damping = gains.get(joint.name, (0.0, 0.0))
+        if config.authority == "upper_body" and is_leg(joint.name):
+            mode = "state"  # the robot's own controller keeps it: no command interfaces, no gains
+        stiffness, damping = gains.get(joint.name, (0.0, 0.0)) if mode != "state" else (0.0, 0.0)
         joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,
                                  group=group, group_position=position, command_mode=mode,
-                                 command_interfaces=transport.command_interfaces(mode),
+                                 command_interfaces=transport.command_interfaces(mode) if mode != "state" else (),
                                  state_interfaces=("position", "velocity", "effort",
                                                    *transport.motor_health(config.transport_options)),
                                  default_stiffness=stiffness if mode == "position" else 0.0,
@@ -120,6 +123,10 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),
                                  transmission=decided.joints.get(joint.name, JointTransmission()),
                                  **_simulated(dynamics.get(joint.name))))
+
+    if config.authority == "upper_body" and all(j.command_mode == "state" for j in joints):
+        raise err("authority", "upper_body leaves the legs (hip, knee, ankle joints) to the robot's own controller, "
+                  "and every joint of joint_map is a leg", "remove authority (the default is full)")
 
     imu = config.imu
     if imu.enabled:
@@ -149,7 +156,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         mimic_joints=tuple(j.name for j in urdf.mimic_joints),
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
         provenance=provenance, coupled_groups=decided.groups, urdf_name=urdf.name,
-        urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"),
+        urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"), authority=config.authority,
     )
 
 

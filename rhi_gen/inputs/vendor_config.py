@@ -13,7 +13,7 @@ from typing import Any
 
 from .. import transports
 from ..errors import ConfigError
-from ..model import FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
+from ..model import AUTHORITIES, FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
 from ..typed_yaml.validator import Validator
 from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
@@ -22,7 +22,7 @@ from .vendor_transmissions import read_coupled_joints, read_transmissions
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
             "unmapped_joints", "default_gains", "command_modes", "initial_positions", "transmissions",
-            "coupled_joints", "urdf_transmissions")
+            "coupled_joints", "urdf_transmissions", "authority")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
                   "state_decimation", "state_timeout_ms", "fault_timeout_ms", "diagnostics_period_ms",
@@ -184,6 +184,9 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         v, _joint_entries(v, data["transmissions"], "transmissions", mapped, "{knee_joint: {reduction: 50.0}}"),
         {joint: name for name, joints, _ in coupled for joint in joints}) if "transmissions" in data else ()
     urdf_transmissions = v.optional(data, "", "urdf_transmissions", v.boolean, True)
+    authority = v.optional(data, "", "authority", lambda x, q: v.choice(x, q, AUTHORITIES), "full")
+    options = transport.resolve_authority(v, authority, options, vendor=vendor, robot=robot,
+                                          mapped_slots=frozenset(mapped.values()))
 
     return VendorConfig(
         source=shown, vendor=vendor, robot=robot, urdf=str(urdf_path), urdf_relative=urdf_rel,
@@ -192,6 +195,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
         default_gains=default_gains, command_modes=command_modes, initial_positions=initial,
         transmissions=transmissions, coupled_joints=coupled, urdf_transmissions=urdf_transmissions,
+        authority=authority,
         content_sha256=content_sha256(data), key_lines=dict(lines),
     )
 

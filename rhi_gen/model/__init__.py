@@ -7,6 +7,7 @@
   the templates read only this.
 """
 from .config import (
+    AUTHORITIES,
     FLOAT_TYPES,
     MAX_MOTORS,
     ImuConfig,
@@ -29,6 +30,7 @@ from .urdf import (
 
 __all__ = [
     "ACTUATED_TYPES",
+    "AUTHORITIES",
     "FLOAT_TYPES",
     "MAX_MOTORS",
     "CoupledGroup",

@@ -9,6 +9,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 FLOAT_TYPES = ("float", "double")
+# Who commands the robot (vendor YAML `authority`): the driver alone, or the driver for everything above
+# the legs while the robot's own balance controller keeps the legs (Unitree's arm SDK).
+AUTHORITIES = ("full", "upper_body")
 MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the generated tables sane
 
 
@@ -90,6 +93,7 @@ class VendorConfig:
     # (group, joints, matrix): joint = matrix @ motor + offset, motor k in the slot of joints[k] (YAML coupled_joints)
     coupled_joints: tuple[tuple[str, tuple[str, ...], tuple[tuple[float, ...], ...]], ...] = ()
     urdf_transmissions: bool = True  # apply the URDF's <transmission>s (YAML urdf_transmissions)
+    authority: str = "full"  # AUTHORITIES: upper_body leaves the legs to the robot's own controller
     # sha256 of the parsed YAML content (typed_yaml/yaml_source.content_sha256): comments and layout do not count
     content_sha256: str = ""
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

@@ -52,6 +52,12 @@ def limb_of(joint_name: str) -> str:
     return " ".join(part for part in (side, limb) if part)
 
 
+def is_leg(joint_name: str) -> bool:
+    """Whether the name says leg (hip, knee, ankle, ...): the joints authority upper_body leaves to the
+    robot's own balance controller, which are exactly the arm SDK's uncommanded ones on the G1 and H1-2."""
+    return limb_of(joint_name).endswith("leg")
+
+
 def motor_groups(joints: Sequence[tuple[str, int]]) -> tuple[MotorGroup, ...]:
     """Groups of (joint name, SDK slot) pairs, in the order their first slot comes; one ``motors`` group
     when the names give fewer than two groups."""

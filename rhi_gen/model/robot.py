@@ -51,7 +51,8 @@ class MotorJoint:
     limits: JointLimits | None
     group: str | None = None           # AgiBot group name
     group_position: int | None = None  # position inside the group
-    command_mode: str = "position"     # position | velocity (wheels: continuous joints by default)
+    command_mode: str = "position"     # position | velocity (wheels: continuous joints by default) | state
+    #                                    (authority upper_body: a leg the robot's own controller keeps)
     command_interfaces: tuple[str, ...] = ("position", "velocity", "stiffness", "damping", "effort")
     state_interfaces: tuple[str, ...] = ("position", "velocity", "effort")  # + the transport's motor health
     default_stiffness: float = 0.0     # applied while no controller claims stiffness
@@ -95,6 +96,7 @@ class RobotModel:
     coupled_groups: tuple[CoupledGroup, ...] = ()  # joints driven through a matrix of motors
     urdf_name: str = ""
     urdf_xml: str = ""        # the expanded URDF (no xacro banner, no machine paths): urdf/<robot>.urdf
+    authority: str = "full"   # vendor YAML authority: full | upper_body (model/config.py AUTHORITIES)
 
     @property
     def cpp_namespace(self) -> str:
@@ -127,6 +129,11 @@ class RobotModel:
     def has_transmission(self) -> bool:
         """Whether any joint's motor is not the joint itself (the driver then converts in read/write)."""
         return bool(self.coupled_groups) or any(not j.transmission.is_identity for j in self.joints)
+
+    @property
+    def commanded_joints(self) -> tuple[MotorJoint, ...]:
+        """The joints this driver commands (all but the state-only legs of an upper_body robot)."""
+        return tuple(j for j in self.joints if j.command_mode != "state")
 
     @property
     def vendor_pascal(self) -> str:

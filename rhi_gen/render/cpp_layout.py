@@ -91,7 +91,10 @@ def _split(line: str, width: int, continuation: int) -> tuple[str | None, tuple[
         ch = line[pos]
         # "<" only as a template's opening bracket (Name<...), never inside "<=" or "<<"
         template_open = ch == "<" and line[pos - 1:pos].isidentifier() and line[pos + 1:pos + 2] not in ("=", "<")
-        if ch in "({" or template_open or (ch == "," and line[pos + 1:pos + 2] == " ") or \
+        # a comma between template arguments: uncrustify indents what follows it twice, so break
+        # at the template's "<" instead (found further left)
+        template_comma = ch == "," and _innermost_open(line[:pos], spans) == "<"
+        if ch in "({" or template_open or (ch == "," and line[pos + 1:pos + 2] == " " and not template_comma) or \
                 (ch == "=" and line[pos - 1:pos] == " " and line[pos + 1:pos + 2] == " "):
             best = pos
             break
@@ -113,6 +116,19 @@ def _split(line: str, width: int, continuation: int) -> tuple[str | None, tuple[
                 at_line_start = not line[:start].strip()
                 return line[:cut] + '"', ('"' + line[cut:], start if at_line_start else continuation)
     return None, (line, 0)
+
+
+def _innermost_open(text: str, spans: list[tuple[int, int]]) -> str:
+    """The innermost bracket ``text`` leaves open (outside string literals), "" for none."""
+    stack: list[str] = []
+    for pos, ch in enumerate(text):
+        if any(start <= pos <= end for start, end in spans):
+            continue
+        if ch in "({<[" and not (ch == "<" and not text[pos - 1:pos].isidentifier()):
+            stack.append(ch)
+        elif ch in ")}]>" and stack and not (ch == ">" and stack[-1] != "<"):
+            stack.pop()
+    return stack[-1] if stack else ""
 
 
 def _depth(text: str, spans: list[tuple[int, int]]) -> int:

@@ -20,6 +20,7 @@ from .. import transports
 from ..model import MotorJoint, RobotModel
 from ..project import PACKAGE_NAME
 from ..transports import COMMON_DEPENDENCIES, COMMON_MESSAGE_DEPENDENCIES, PLAIN_CMAKE, VENDOR_SOURCE, Dependency
+from .fake_robot_views import has_fake_robot
 
 # ---------------------------------------------------------------- package files
 
@@ -97,7 +98,7 @@ def package_view(robots: Sequence[RobotModel]) -> PackageView:
         targets.append(RobotTarget(robot=r, target=f"{PACKAGE_NAME}_{r.vendor}_{r.robot}",
                                    test=f"test_{r.robot}_hardware_interface",
                                    depends=tuple(d.name for d in deps), links=_links(deps),
-                                   fake_robot=f"{r.robot}_fake_robot" if transport.fake_robot_header else ""))
+                                   fake_robot=f"{r.robot}_fake_robot" if has_fake_robot(r) else ""))
     used = _unique(used)
     plain = tuple(d for d in used if d.source == PLAIN_CMAKE)
     ros = sorted(d.name for d in used if d.source != PLAIN_CMAKE)
@@ -154,7 +155,8 @@ def update_rate_hz(period_us: int) -> int:
 def controllers_view(robot: RobotModel) -> ControllersView:
     position = tuple(j for j in robot.joints if j.command_mode == "position")
     velocity = tuple(j for j in robot.joints if j.command_mode == "velocity")
-    gains = "damping" in robot.joints[0].command_interfaces
+    commanded = robot.commanded_joints
+    gains = "damping" in commanded[0].command_interfaces
     controllers = []
     if position:
         controllers.append(Controller("forward_position_controller", "position", position))
@@ -163,12 +165,12 @@ def controllers_view(robot: RobotModel) -> ControllersView:
     if gains and position:
         controllers.append(Controller("forward_stiffness_controller", "stiffness", position))
     if gains:
-        controllers.append(Controller("forward_damping_controller", "damping", robot.joints))
+        controllers.append(Controller("forward_damping_controller", "damping", commanded))
     period = robot.parameters.command_writer_period_us
     return ControllersView(
         update_rate=update_rate_hz(period), period_us=period, gains=gains, controllers=tuple(controllers),
-        limp_count=sum(1 for j in robot.joints if j.default_stiffness == 0.0 and j.default_damping == 0.0),
-        joint_count=len(robot.joints), velocity_count=len(velocity), health_gpio=health_gpio_name(robot))
+        limp_count=sum(1 for j in commanded if j.default_stiffness == 0.0 and j.default_damping == 0.0),
+        joint_count=len(commanded), velocity_count=len(velocity), health_gpio=health_gpio_name(robot))
 
 
 # ---------------------------------------------------------------- description/<robot>.ros2_control.xacro
@@ -259,7 +261,9 @@ def _comment(joint: MotorJoint) -> str:
     text = f"SDK slot {joint.index}"
     if joint.group is not None:  # "--" may not appear inside an XML comment
         text += f", group {joint.group.replace('-', ' -')}[{joint.group_position}]"
-    return text + (", velocity-commanded" if joint.command_mode == "velocity" else "")
+    return text + {"velocity": ", velocity-commanded",
+                   "state": ", state only: the robot's own controller keeps it (authority upper_body)"
+                   }.get(joint.command_mode, "")
 
 
 def xacro_view(robot: RobotModel) -> XacroView:

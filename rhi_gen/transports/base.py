@@ -118,6 +118,16 @@ class Transport(ABC):
         """Options that depend on which robot this is (a known robot's defaults); unchanged by default."""
         return options
 
+    def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
+                          robot: str, mapped_slots: frozenset[int]) -> TransportOptions:
+        """Options for the YAML's ``authority``. Only ``full`` by default: sharing the robot with its own
+        controller needs the vendor's protocol for it (Unitree's arm SDK is the one rhi-gen speaks)."""
+        if authority != "full":
+            raise v.error("authority", f"the {self.name} transport commands the whole robot; authority "
+                          f"{authority!r} is supported on Unitree hg robots (G1, H1-2) through the arm SDK",
+                          fix="remove authority (the default is full)")
+        return options
+
     def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
         """The per-joint health state interfaces the robot's state message carries (after position,
         velocity and effort), in MOTOR_HEALTH_INTERFACES order: none unless the transport says."""

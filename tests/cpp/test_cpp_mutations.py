@@ -42,7 +42,9 @@ from tests.support.repo import REPO
 ROBOTS = ("unitree/g1", "engineai/pm01")
 GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message family
 TRANSMISSION_ROBOTS = ("pal/talos_arm",)  # tests/cpp/harness/robots/: motors that are not joints
-CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS)  # every robot a mutation runs on passes unmodified
+ARM_SDK_ROBOTS = ("unitree/g1_upper_body",)  # tests/cpp/harness/robots/: authority upper_body
+# every robot a mutation runs on passes unmodified
+CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS)
 THREADS_MS = 100
 
 # Generated files, by their path in the package (what the edits change, wherever the source lives).
@@ -62,6 +64,8 @@ TRANSPORT = "include/robot_hardware_interface/transport/"
 UNITREE_CRC = TRANSPORT + "unitree_crc.hpp"
 UNITREE_HG = TRANSPORT + "unitree_hg.hpp"
 UNITREE_GO = TRANSPORT + "unitree_go.hpp"
+UNITREE_ARM_SDK = TRANSPORT + "unitree_arm_sdk.hpp"
+UNITREE_DDS = TRANSPORT + "unitree_dds.hpp"
 AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
 PM01_FAKE_ROBOT = "src/engineai/pm01_fake_robot.cpp"
 G1_FAKE_ROBOT = "src/unitree/g1_fake_robot.cpp"
@@ -211,6 +215,17 @@ MUTATIONS = (
     Mutation("fake_robot_motor_map_wrong_sdk", "the G1's fake robot drives its first joint on the second joint's motor",
              TokenEdit(G1_FAKE_ROBOT, '{"left_hip_pitch_joint", 0,', '{"left_hip_pitch_joint", 1,'),
              ("fake_robot",), robots=("unitree/g1",)),
+    Mutation("arm_sdk_weight_jumps", "the arm SDK blend weight jumps from 0 to 1 (and back) in one message",
+             TokenEdit(UNITREE_ARM_SDK, "step_(std::min(1.0, static_cast<double>(period_us) * 1e-6 / ramp_s))",
+                       "step_(1.0 + 0.0 * ramp_s * static_cast<double>(period_us))"),
+             ("arm_sdk",), robots=ARM_SDK_ROBOTS),
+    Mutation("arm_sdk_legs_commanded", "under the arm SDK the command writer fills the legs' slots too",
+             TokenEdit(UNITREE_DDS, "for (const size_t slot : core_->slots().commanded_slots()) {",
+                       "for (const size_t slot : core_->slots().mapped_slots()) {"),
+             ("arm_sdk",), robots=ARM_SDK_ROBOTS),
+    Mutation("arm_sdk_no_hand_back", "on_deactivate stops the arm SDK at the weight it had, without ramping to 0",
+             TokenEdit(UNITREE_DDS, "if (arm_sdk_ != nullptr) { hand_back_upper_body(); }", ""),
+             ("arm_sdk",), robots=ARM_SDK_ROBOTS),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

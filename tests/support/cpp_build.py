@@ -321,6 +321,27 @@ def yaml_modes_and_gains(yaml_path: Path) -> tuple[dict[str, str], dict[str, tup
     return modes, gains
 
 
+# Leg joints by name, the harness's own reading of "the legs" (authority upper_body leaves them to the robot).
+MODE_CODES = {"position": 0, "velocity": 1, "state": 2}  # kJoints' mode
+LEG_WORDS = ("hip", "thigh", "knee", "calf", "ankle", "foot")
+
+
+def yaml_arm_sdk(yaml_path: Path) -> tuple[int, float] | None:
+    """(blend weight slot, ramp seconds) of a vendor YAML with authority: upper_body, else None. The slot is
+    the YAML's arm_sdk_weight_slot, else the G1's kNotUsedJoint (29, unitree_sdk2 g1_arm7_sdk_dds_example)."""
+    import yaml
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    if data.get("authority") != "upper_body":
+        return None
+    options = data.get("transport_options") or {}
+    return int(options.get("arm_sdk_weight_slot", 29)), float(options.get("arm_sdk_ramp_s", 2.0))
+
+
+def is_leg_name(name: str) -> bool:
+    return any(word in name.lower().split("_") for word in LEG_WORDS)
+
+
 def yaml_unitree_family(yaml_path: Path, vendor: str, robot: str) -> tuple[str, tuple[int, ...]]:
     """unitree_dds message family and go motor modes as the vendor YAML writes them; a YAML that
     omits them gets the known robot's (SDK_FACTS.md: the family follows the robot), else hg / 0x01."""
@@ -356,7 +377,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     if model.transport == "agibot_topics":
         groups = [(g.name, g.offset, g.size, g.command_topic, g.state_topic) for g in opts.groups]
     elif model.transport == "unitree_dds":
-        groups = [("all", 0, model.motor_count, opts.lowcmd_topic, opts.lowstate_topic)]
+        arm_sdk = yaml_arm_sdk(loaded.yaml_path)
+        groups = [("all", 0, model.motor_count, "rt/arm_sdk" if arm_sdk else opts.lowcmd_topic, opts.lowstate_topic)]
     else:
         # custom carries no topics (its options are the base TransportOptions): the fake bus needs none
         groups = [("all", 0, model.motor_count, getattr(opts, "command_topic", ""), getattr(opts, "state_topic", ""))]
@@ -387,6 +409,9 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     if model.transport == "unitree_dds":
         family, motor_modes = yaml_unitree_family(loaded.yaml_path, model.vendor, model.robot)
         lines.append(f"#define RHI_UNITREE_FAMILY_{family.upper()} 1  // message family (transport_options.family)")
+    arm_sdk = yaml_arm_sdk(loaded.yaml_path)
+    if arm_sdk is not None:
+        lines.append("#define RHI_ARM_SDK 1  // authority upper_body: section arm_sdk")
     lines += [
         "namespace rhi_data {",
         f"using SdkFloat = {model.float_type};",
@@ -401,7 +426,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr char kHealthGpio[] = {_c_string(health_gpio)};",
         f"inline constexpr bool kHasGains = {'true' if has_gains else 'false'};  // stiffness/damping travel",
         "// mode: 0 position-commanded, 1 velocity-commanded (a continuous joint unless command_modes says",
-        "// otherwise); kp/kd: the YAML's default_gains (kp is 0 for a velocity-commanded joint)",
+        "// otherwise), 2 state-only (a leg under authority upper_body); kp/kd: the YAML's default_gains (kp is 0",
+        "// for a velocity-commanded joint, both are 0 for a state-only one)",
         ("struct Joint { const char* name; size_t slot; size_t group; double lower; double upper; double velocity;"
          " double effort; int mode; double kp; double kd; };"),
         "inline constexpr Joint kJoints[] = {",
@@ -412,11 +438,13 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         upper = limits.upper if limits else None
         mode = yaml_modes.get(name, "velocity" if by_name[name].type == "continuous" else "position")
         kp, kd = yaml_gains.get(name, (0.0, 0.0))
+        if arm_sdk is not None and is_leg_name(name):
+            mode, kp, kd = "state", 0.0, 0.0
         lines.append(
             f"    {{{_c_string(name)}, {slot}, {group_of(slot)}, "
             f"{_c_double(-math.inf if lower is None else lower)}, {_c_double(upper)}, "
             f"{_c_double(limits.velocity if limits else None)}, {_c_double(limits.effort if limits else None)}, "
-            f"{1 if mode == 'velocity' else 0}, {float(kp) if mode == 'position' else 0.0!r}, {float(kd)!r}}},")
+            f"{MODE_CODES.get(mode, 0)}, {float(kp) if mode == 'position' else 0.0!r}, {float(kd)!r}}},")
     lines += [
         "};",
         f"inline constexpr size_t kJointCount = {len(joint_map)};",
@@ -438,6 +466,9 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr char kImuTopic[] = {_c_string(getattr(opts, 'imu_topic', ''))};",
         f"inline constexpr char kMotorDebugTopic[] = {_c_string(getattr(opts, 'motor_debug_topic', ''))};",
         f"inline constexpr uint8_t kModePr = {getattr(opts, 'mode_pr', 0)};",
+        "// authority upper_body: the LowCmd_ slot of the arm SDK blend weight and its ramp time (0 / 0.0: none)",
+        f"inline constexpr size_t kArmSdkWeightSlot = {arm_sdk[0] if arm_sdk else 0};",
+        f"inline constexpr double kArmSdkRampS = {_c_double(arm_sdk[1] if arm_sdk else 0.0)};",
         f"inline constexpr uint8_t kParallelParserType = {getattr(opts, 'parallel_parser_type', 0)};",
         "// unitree go: MotorCmd_.mode of every LowCmd_ slot (the YAML's motor_modes, else the known robot's)",
         f"inline constexpr uint8_t kMotorModes[] = {{{', '.join(str(m) for m in motor_modes) or '0'}}};",

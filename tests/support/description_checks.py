@@ -82,8 +82,9 @@ def check_ros2_control(d: Description, model: RobotModel, yaml_path: Path, packa
     by_name = {j.name: j for j in model.joints}
     for j in d.joints:
         joint = by_name[j["name"]]
-        expected = (["position", "velocity", *gains, "effort"] if joint.command_mode == "position"
-                    else ["velocity", *gains[1:], "effort"])  # a velocity joint: no position, no stiffness
+        expected = {"position": ["position", "velocity", *gains, "effort"],
+                    "velocity": ["velocity", *gains[1:], "effort"],  # no position, no stiffness
+                    "state": []}[joint.command_mode]  # a leg under authority upper_body: state only
         assert [c for c, _ in j["command_interfaces"]] == expected, j["name"]
         assert j["state_interfaces"] == ["position", "velocity", "effort", *motor_health(model)], j["name"]
         if "initial_values" not in j:  # tests/support/cpp_build.py expand_description reads only the names

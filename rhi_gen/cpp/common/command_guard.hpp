@@ -78,6 +78,8 @@ public:
   // writer started holding because the state went stale (health GPIO).
   const HealthCounter & rejected_commands() const {return rejected_commands_;}
   const HealthCounter & stale_holds() const {return stale_holds_;}
+  // Writer thread: whether the last guard() held every joint (stale state, error or e-stop).
+  bool holding() const {return holding_;}
 
   // The frame to send for `cmd`; `stale`: no valid state for state_timeout_ms.
   const Command * guard(const Command & cmd, bool stale)

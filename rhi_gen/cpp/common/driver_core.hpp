@@ -288,6 +288,10 @@ public:
     return guard_.guard(*cmd, freshness_.stale(parameters_.state_timeout_ms));
   }
 
+  // Writer thread, after next_command(): whether that frame holds every joint damping-only (stale
+  // state, on_error or the e-stop) rather than carrying what the controllers command.
+  bool command_is_hold() const {return guard_.holding();}
+
   // ---------------------------------------------------------------- controller thread
   // read(): the newest state and IMU sample into the exported storage.
   void read_state()

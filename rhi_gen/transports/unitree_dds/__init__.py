@@ -23,6 +23,12 @@ FAMILIES = {"hg": 35, "go": 20}  # message family -> motor slots of its LowCmd_
 FAMILY_ROBOTS = {"hg": "G1, H1-2", "go": "H1, Go2, Go2-W, B2, B2-W"}
 GO_SERVO = 0x01   # MotorCmd_.mode of the go examples ("servo (PMSM) mode")
 GO_STRONG = 0x0A  # the H1's hip/knee/torso motors and the B2's motors in the C++ examples
+# The arm SDK (authority upper_body): LowCmd_ on rt/arm_sdk, the blend weight in the q of the first unused
+# slot, kNotUsedJoint of unitree_sdk2's example/g1/high_level/g1_arm7_sdk_dds_example.cpp (G1: 29) and
+# example/h1/high_level/h1_2_arm_sdk_dds_example.cpp (H1-2: 27). Both examples publish hg messages.
+ARM_SDK_TOPIC = "rt/arm_sdk"
+ARM_SDK_WEIGHT_SLOT = {"g1": 29, "h1_2": 27}
+ARM_SDK_RAMP_S = 2.0  # the examples' arm initialisation time (init_time = 2.0 s)
 
 
 # unitree_sdk2 is a plain CMake package: no package.xml, no rosdep key, a non-namespaced target.
@@ -57,6 +63,10 @@ class UnitreeDdsOptions(TransportOptions):
     domain_id: int = 0
     mode_pr: int = 0
     release_motion_control: bool = False
+    upper_body: bool = False           # authority upper_body: arm SDK commands, the legs left to the robot
+    arm_sdk_topic: str = ARM_SDK_TOPIC
+    arm_sdk_weight_slot: int = -1      # the LowCmd_ slot whose q carries the blend weight (-1: the robot's)
+    arm_sdk_ramp_s: float = ARM_SDK_RAMP_S  # seconds for the blend weight from 0 to 1 (and back)
 
 # G1 29-DoF motor order, unitree_sdk2 enum G1JointIndex.
 G1_ORDER = (
@@ -140,11 +150,13 @@ class UnitreeDds(Transport):
     name = NAME
     summary = "unitree_sdk2 DDS: LowCmd_/LowState_ with CRC32, hg (35 motor slots) or go (20) messages"
     option_keys = ("family", "lowcmd_topic", "lowstate_topic", "sdk_slots", "domain_id", "mode_pr",
-                   "motor_modes", "release_motion_control", "verify_state_crc")
+                   "motor_modes", "release_motion_control", "verify_state_crc", "arm_sdk_topic",
+                   "arm_sdk_weight_slot", "arm_sdk_ramp_s")
     default_float_type = "float"
     dependencies = (UNITREE_SDK2,)
     shared_files = tuple(transport_header(NAME, name) for name in
-                         ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp",
+                         ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_arm_sdk.hpp",
+                          "unitree_dds.hpp",
                           "unitree_dds_fake_robot.hpp"))
     fake_robot_header = "robot_hardware_interface/transport/unitree_dds_fake_robot.hpp"
     fake_state_rate_hz = 500.0  # LowState_ at 500 Hz (unitree_ros2 "HIGH_FREQ" lowstate)
@@ -175,7 +187,50 @@ class UnitreeDds(Transport):
             domain_id=v.optional(options, p, "domain_id", v.integer_in(0, 232), 0),
             mode_pr=v.optional(options, p, "mode_pr", v.integer_in(0, 1), 0),
             release_motion_control=v.optional(options, p, "release_motion_control", v.boolean, False),
+            arm_sdk_topic=v.optional(options, p, "arm_sdk_topic", v.topic, ARM_SDK_TOPIC),
+            arm_sdk_weight_slot=v.optional(options, p, "arm_sdk_weight_slot", v.integer_in(0, FAMILIES["hg"] - 1),
+                                           -1),
+            arm_sdk_ramp_s=v.optional(options, p, "arm_sdk_ramp_s", self._ramp_seconds(v), ARM_SDK_RAMP_S),
         )
+
+    @staticmethod
+    def _ramp_seconds(v: Validator) -> Any:
+        def read(raw: Any, path: str) -> float:
+            fix = "write the blend weight's ramp time in seconds, from 0.1 to 60, e.g. 2.0"
+            value = v.finite_number(raw, path, fix, "a number of seconds")
+            if not 0.1 <= value <= 60.0:
+                raise v.error(path, f"must be from 0.1 to 60 seconds, got {value:g}", fix=fix)
+            return value
+        return read
+
+    def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
+                          robot: str, mapped_slots: frozenset[int]) -> UnitreeDdsOptions:
+        """upper_body speaks the arm SDK: hg messages only, the blend weight in a slot no joint drives."""
+        assert isinstance(options, UnitreeDdsOptions)
+        p = "transport_options"
+        arm_keys = [k for k in ("arm_sdk_topic", "arm_sdk_weight_slot", "arm_sdk_ramp_s") if f"{p}.{k}" in v.lines]
+        if authority == "full":
+            if arm_keys:
+                raise v.error(f"{p}.{arm_keys[0]}", "is an arm SDK option, used only with authority: upper_body",
+                              fix=f"remove {arm_keys[0]}, or set authority: upper_body")
+            return options
+        if options.family != "hg":
+            raise v.error("authority", f"upper_body speaks Unitree's arm SDK, which takes hg messages ("
+                          f"{FAMILY_ROBOTS['hg']}); {vendor}/{robot} speaks {options.family}",
+                          fix="remove authority (the default is full)")
+        known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
+        slot = options.arm_sdk_weight_slot
+        if slot < 0:
+            slot = ARM_SDK_WEIGHT_SLOT.get(known.robot, -1) if known is not None else -1
+        if slot < 0:
+            raise v.error("authority", f"rhi-gen does not know which LowCmd_ slot carries {vendor}/{robot}'s "
+                          "arm SDK blend weight", fix="set transport_options.arm_sdk_weight_slot (the "
+                          "kNotUsedJoint of unitree_sdk2's arm SDK example for the robot)")
+        if slot in mapped_slots:
+            where = f"{p}.arm_sdk_weight_slot" if f"{p}.arm_sdk_weight_slot" in v.lines else "authority"
+            raise v.error(where, f"slot {slot} carries the arm SDK blend weight, but joint_map drives a joint "
+                          "with it", fix="give arm_sdk_weight_slot the robot's unused slot (kNotUsedJoint)")
+        return replace(options, upper_body=True, arm_sdk_weight_slot=slot)
 
     @staticmethod
     def _motor_modes(v: Validator, raw: Any, path: str) -> tuple[int, ...]:

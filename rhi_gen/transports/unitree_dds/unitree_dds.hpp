@@ -32,6 +32,7 @@
 #include "robot_hardware_interface/common/driver_core.hpp"
 #include "robot_hardware_interface/common/monitor.hpp"
 #include "robot_hardware_interface/common/system_driver.hpp"
+#include "robot_hardware_interface/transport/unitree_arm_sdk.hpp"
 
 namespace robot_hardware_interface
 {
@@ -58,8 +59,10 @@ class UnitreeDdsTransport final : public DriverTransport<N, T>
   static constexpr int64_t kStateQueueLength = 1;  // only the newest LowState_ matters
 
 public:
-  explicit UnitreeDdsTransport(const UnitreeDdsOptions & options)
-  : options_(options)
+  // `arm_sdk`: authority upper_body (the arm SDK), nullptr: the whole robot on lowcmd_topic.
+  explicit UnitreeDdsTransport(
+    const UnitreeDdsOptions & options, const UnitreeArmSdkOptions * arm_sdk = nullptr)
+  : options_(options), arm_sdk_(arm_sdk)
   {
   }
 
@@ -72,11 +75,15 @@ public:
     const std::string & network_interface = core.parameters().network_interface;
     // One DDS participant per process, bound to the robot's network interface.
     ::unitree::robot::ChannelFactory::Instance()->Init(options_.domain_id, network_interface);
-    // The command message is reused for every send: fill the constant parts once.
+    // The command message is reused for every send: fill the constant parts once. Only commanded
+    // slots are enabled: under the arm SDK the legs' slots stay all zero.
     Family::init_command(
-      low_cmd_, core.slots().mapped_slots(), options_.mode_pr, options_.motor_modes);
-    publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowCmd>>(
-      options_.lowcmd_topic);
+      low_cmd_, core.slots().commanded_slots(), options_.mode_pr, options_.motor_modes);
+    const char * command_topic = arm_sdk_ != nullptr ? arm_sdk_->topic : options_.lowcmd_topic;
+    if (arm_sdk_ != nullptr) {  // hg messages (the vendor YAML's validation)
+      blend_ = BlendWeight(arm_sdk_->ramp_s, core.parameters().command_writer_period_us);
+    }
+    publisher_ = std::make_shared<::unitree::robot::ChannelPublisher<LowCmd>>(command_topic);
     publisher_->InitChannel();
     // State flows from now on, also while inactive, so read() reports the real robot early.
     subscriber_ = std::make_shared<::unitree::robot::ChannelSubscriber<LowState>>(
@@ -87,7 +94,7 @@ public:
     RCLCPP_INFO(
       core.logger(), "unitree_sdk2 DDS (%s messages) on '%s', domain %d: publishing %s, "
       "subscribed to %s", Family::kName, network_interface.c_str(),
-      static_cast<int>(options_.domain_id), options_.lowcmd_topic, options_.lowstate_topic);
+      static_cast<int>(options_.domain_id), command_topic, options_.lowstate_topic);
     return true;
   }
 
@@ -95,6 +102,14 @@ public:
   {
     if (options_.release_motion_control && !release_motion_control()) {
       return false;
+    }
+    if (arm_sdk_ != nullptr) {
+      blend_.reset();
+      RCLCPP_INFO(
+        core_->logger(), "arm SDK (authority upper_body): %zu joints commanded on %s, the legs "
+        "stay with the robot's own controller; the blend weight (LowCmd_ slot %zu) ramps to 1 "
+        "over %.2f s once a controller drives them", core_->slots().commanded_slots().size(),
+        arm_sdk_->topic, arm_sdk_->weight_slot, arm_sdk_->ramp_s);
     }
     writer_thread_ = ::unitree::common::CreateRecurrentThreadEx(
       "command_writer", UT_CPU_ID_NONE, core_->parameters().command_writer_period_us,
@@ -112,6 +127,9 @@ public:
     // what guarantees write_command() has returned for good.
     writer_thread_->Wait();
     writer_thread_.reset();
+    if (arm_sdk_ != nullptr) {
+      hand_back_upper_body();
+    }
   }
 
   void shutdown() noexcept override
@@ -216,7 +234,14 @@ private:
       return;
     }
     Family::apply_state_tag(low_cmd_, state_tag_.load(std::memory_order_relaxed));
-    for (const size_t slot : core_->slots().mapped_slots()) {
+    if (arm_sdk_ != nullptr) {
+      // Towards 1 only while the controllers drive the upper body: never on a hold, never while
+      // no controller commands it (the arms would fall).
+      const bool engage = !core_->command_is_hold() &&
+        BlendWeight::drives_any(*cmd, core_->slots().commanded_slots());
+      set_blend_weight(blend_.next(engage));
+    }
+    for (const size_t slot : core_->slots().commanded_slots()) {
       auto & motor = low_cmd_.motor_cmd()[slot];
       motor.q() = static_cast<float>(cmd->q_target[slot]);
       motor.dq() = static_cast<float>(cmd->dq_target[slot]);
@@ -227,6 +252,34 @@ private:
     low_cmd_.crc() = Family::command_crc(low_cmd_);
     publisher_->Write(low_cmd_);
     core_->monitor().check_writer_latency(start);
+  }
+
+  void set_blend_weight(double weight)
+  {
+    low_cmd_.motor_cmd()[arm_sdk_->weight_slot].q() = static_cast<float>(weight);
+  }
+
+  // stop() of the arm SDK, once the writer has stopped: the blend weight back to 0 at the writer's
+  // pace, one step per command, over the last command sent (the robot's controller takes over
+  // from where the arms are). Blocks for at most arm_sdk_ramp_s.
+  void hand_back_upper_body()
+  {
+    if (blend_.value() <= 0.0) {
+      return;
+    }
+    RCLCPP_INFO(
+      core_->logger(), "arm SDK: handing the upper body back to the robot's controller (blend "
+      "weight %.2f to 0)", blend_.value());
+    const auto period = std::chrono::microseconds(core_->parameters().command_writer_period_us);
+    auto next = std::chrono::steady_clock::now();
+    while (blend_.value() > 0.0) {
+      set_blend_weight(blend_.next(false));
+      low_cmd_.crc() = Family::command_crc(low_cmd_);
+      publisher_->Write(low_cmd_);
+      next += period;
+      std::this_thread::sleep_until(next);
+    }
+    RCLCPP_INFO(core_->logger(), "arm SDK: blend weight 0, the robot's controller has the body");
   }
 
   // Unitree robots boot into a built-in motion controller (sport / locomotion mode) that also
@@ -266,6 +319,8 @@ private:
   }
 
   const UnitreeDdsOptions options_;
+  const UnitreeArmSdkOptions * const arm_sdk_;  // nullptr: the whole robot on lowcmd_topic
+  BlendWeight blend_;  // arm SDK: writer thread, then stop() once the writer has stopped
   DriverCore<N, T> * core_{nullptr};
   LowCmd low_cmd_;  // writer thread: the message sent (constant parts filled in configure())
   ::unitree::robot::ChannelPublisherPtr<LowCmd> publisher_;

@@ -2442,6 +2442,9 @@ void test_unfilled_refuses_activation() {
 #if defined(RHI_FAKE_ROBOT)
 #include "fake_robot_checks.inc"
 #endif
+#if defined(RHI_ARM_SDK)
+#include "arm_sdk_checks.inc"
+#endif
 
 static bool selected(const std::string& only, const char* name) {
   if (only.empty()) {
@@ -2468,6 +2471,13 @@ int main(int argc, char** argv) {
     test_unfilled_refuses_activation();
     only = "none";  // the other scenarios need a filled transport
 #endif
+#if defined(RHI_ARM_SDK)
+    if (only.empty()) {
+      // The legs are state-only: the scenarios that command every joint do not apply.
+      std::printf("authority upper_body (arm SDK): sections interfaces, crc, arm_sdk\n");
+      only = "interfaces,crc,arm_sdk";
+    }
+#endif
     if (kHasTransmission && only.empty()) {
       // The main scenario, decimation and parameters compare exact motor values with joint values.
       std::printf("motors that are not joints: sections interfaces, transmission, faults, health, diagnostics, "
@@ -2487,6 +2497,9 @@ int main(int argc, char** argv) {
 #endif
 #if defined(RHI_FAKE_ROBOT)
     if (selected(only, "fake_robot")) test_fake_robot();
+#endif
+#if defined(RHI_ARM_SDK)
+    if (selected(only, "arm_sdk")) test_arm_sdk();
 #endif
     if (selected(only, "threads")) test_threads(threads_ms);
   } catch (const std::exception& e) {

@@ -214,6 +214,7 @@ inline std::vector<std::string> joint_commands(size_t k) {
   std::vector<std::string> out;
   for (const char* name : kJointCommands) {
     const std::string n = name;
+    if (kJoints[k].mode == 2) continue;  // state-only: no command interface at all
     if ((n == "position" || n == "stiffness") && kJoints[k].mode != 0) continue;
     if ((n == "stiffness" || n == "damping") && !kHasGains) continue;
     out.push_back(n);
@@ -317,13 +318,22 @@ struct Interfaces {
   bool complete() const {
     for (size_t k = 0; k < kJointCount; ++k) {
       const bool position_mode = kJoints[k].mode == 0;
-      if (!pos[k] || !vel[k] || !eff[k] || !cvel[k] || !cff[k]) {
+      if (!pos[k] || !vel[k] || !eff[k]) {
         return false;
       }
       for (size_t h = 0; h < kMotorHealthNames.size(); ++h) {
         if ((motor_health[k][h] != nullptr) != kMotorHealth[h]) {
           return false;
         }
+      }
+      if (kJoints[k].mode == 2) {  // state-only: no command interface
+        if (cpos[k] || cvel[k] || ckp[k] || ckd[k] || cff[k]) {
+          return false;
+        }
+        continue;
+      }
+      if (!cvel[k] || !cff[k]) {
+        return false;
       }
       if ((cpos[k] != nullptr) != position_mode || (ckp[k] != nullptr) != (position_mode && kHasGains) ||
           (ckd[k] != nullptr) != kHasGains) {

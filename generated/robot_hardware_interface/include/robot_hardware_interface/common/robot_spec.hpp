@@ -22,11 +22,14 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 // How ros2_control commands a joint: a position-commanded joint takes the motor's whole PD command
 // (position, velocity, stiffness, damping, effort); a velocity-commanded one (a wheel) velocity,
-// damping and effort, never a position target or stiffness.
+// damping and effort, never a position target or stiffness. A state-only joint takes no command:
+// the robot's own controller keeps it (authority upper_body: the legs under the vendor's balance
+// controller), so it exports state interfaces only and its motor never hears from this driver.
 enum class CommandMode : uint8_t
 {
   kPosition,
   kVelocity,
+  kStateOnly,
 };
 
 // One URDF joint driven by one SDK motor slot, with the URDF limits write() clamps to and the

@@ -43,6 +43,7 @@ public:
     default_stiffness_.fill(0.0);
     default_damping_.fill(0.0);
     mapped_slots_.reserve(spec.joint_count);
+    commanded_slots_.reserve(spec.joint_count);
     for (size_t i = 0; i < spec.joint_count; ++i) {
       const JointSpec & joint = spec.joints[i];
       limits_[joint.slot] = SlotLimits{
@@ -52,15 +53,21 @@ public:
       default_stiffness_[joint.slot] = joint.default_stiffness;
       default_damping_[joint.slot] = joint.default_damping;
       mapped_slots_.push_back(joint.slot);
+      if (joint.mode != CommandMode::kStateOnly) {
+        commanded_slots_.push_back(joint.slot);
+      }
       if (joint.mode == CommandMode::kVelocity) {
         velocity_slots_[velocity_slot_count_++] = joint.slot;
       }
     }
     std::sort(mapped_slots_.begin(), mapped_slots_.end());
+    std::sort(commanded_slots_.begin(), commanded_slots_.end());
   }
 
   // SDK slots that drive a URDF joint, ascending.
   const std::vector<size_t> & mapped_slots() const {return mapped_slots_;}
+  // SDK slots whose joint this driver commands (all mapped slots but state-only ones), ascending.
+  const std::vector<size_t> & commanded_slots() const {return commanded_slots_;}
   // URDF joint name of every slot ("" where the slot drives no joint).
   const std::array<const char *, N> & slot_joint_names() const {return joint_names_;}
   const SlotLimits & limits(size_t slot) const {return limits_[slot];}
@@ -101,6 +108,7 @@ private:
   std::array<double, N> default_stiffness_{};
   std::array<double, N> default_damping_{};
   std::vector<size_t> mapped_slots_;
+  std::vector<size_t> commanded_slots_;
   std::array<size_t, N> velocity_slots_{};
   size_t velocity_slot_count_{0};
 };

@@ -650,9 +650,11 @@ private:
       return prefix == health_gpio_ && name == kEstopCommandInterface ?
              &core_.health().estop_command : nullptr;
     }
-    if (core_.slots().mode_of(static_cast<size_t>(slot)) == CommandMode::kVelocity &&
-      (name == "position" || name == "stiffness"))
-    {
+    const CommandMode mode = core_.slots().mode_of(static_cast<size_t>(slot));
+    if (mode == CommandMode::kStateOnly) {
+      return nullptr;  // the robot's own controller keeps this joint
+    }
+    if (mode == CommandMode::kVelocity && (name == "position" || name == "stiffness")) {
       return nullptr;  // a velocity-commanded joint has no position target and no stiffness
     }
     if (!transport_->carries_gains() && (name == "stiffness" || name == "damping")) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -110,6 +111,24 @@ inline std::uint64_t write_count(std::string_view channel)
   }
   std::lock_guard<std::mutex> lock(slot->mutex);
   return slot->write_count;
+}
+
+/// Call `observer` with every message written on `channel` from now on (as `const void*`, on the
+/// writing thread, under the channel's lock: it must not write to the channel); an empty function
+/// stops observing. False when no publisher has opened the channel yet. The call allocates nothing.
+inline bool observe_writes(std::string_view channel, std::function<void(const void *)> observer)
+{
+  std::shared_ptr<::rhi_fake::detail::ChannelSlotBase> slot;
+  {
+    auto & reg = ::rhi_fake::detail::unitree_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    auto it = reg.channels.find(channel);
+    if (it == reg.channels.end() || !it->second.slot) {return false;}
+    slot = it->second.slot;
+  }
+  std::lock_guard<std::mutex> lock(slot->mutex);
+  slot->observer = std::move(observer);
+  return true;
 }
 
 struct ChannelInfo

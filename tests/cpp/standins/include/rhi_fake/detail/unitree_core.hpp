@@ -38,6 +38,8 @@ struct ChannelSlotBase
   std::mutex mutex;
   std::uint64_t write_count = 0;   // under mutex
   bool has_value = false;          // under mutex
+  // Test hook (rhi_fake::unitree::observe_writes): called with every message written, under mutex.
+  std::function<void(const void *)> observer;
 };
 
 template<typename MSG>

@@ -58,6 +58,9 @@ public:
     slot_->last = message;
     slot_->write_count++;
     slot_->has_value = true;
+    if (slot_->observer) {
+      slot_->observer(static_cast<const void *>(&message));
+    }
     return true;
   }
 

@@ -67,19 +67,22 @@ std::size_t deliver(std::string_view channel, const MSG & msg)
   return reached;
 }
 
+/// The written side of `channel` (nullptr while no publisher has opened it).
+inline std::shared_ptr<::rhi_fake::detail::ChannelSlotBase> written_slot(std::string_view channel)
+{
+  auto & reg = ::rhi_fake::detail::unitree_registry();
+  std::lock_guard<std::mutex> lock(reg.mutex);
+  auto it = reg.channels.find(channel);
+  return it == reg.channels.end() ? nullptr : it->second.slot;
+}
+
 /// Copy of the last message written on `channel`; false if none. Throws std::logic_error if the
 /// channel's writers use another type.
 template<typename MSG>
 bool last_written(std::string_view channel, MSG & out)
 {
-  std::shared_ptr<::rhi_fake::detail::ChannelSlotBase> slot;
-  {
-    auto & reg = ::rhi_fake::detail::unitree_registry();
-    std::lock_guard<std::mutex> lock(reg.mutex);
-    auto it = reg.channels.find(channel);
-    if (it == reg.channels.end() || !it->second.slot) {return false;}
-    slot = it->second.slot;
-  }
+  const auto slot = written_slot(channel);
+  if (!slot) {return false;}
   if (slot->type != std::type_index(typeid(MSG))) {
     throw std::logic_error("rhi_fake: channel '" + std::string(channel) + "' carries another type");
   }
@@ -101,14 +104,8 @@ std::optional<MSG> last_written(std::string_view channel)
 /// Number of successful Write() calls on `channel` (all publishers together).
 inline std::uint64_t write_count(std::string_view channel)
 {
-  std::shared_ptr<::rhi_fake::detail::ChannelSlotBase> slot;
-  {
-    auto & reg = ::rhi_fake::detail::unitree_registry();
-    std::lock_guard<std::mutex> lock(reg.mutex);
-    auto it = reg.channels.find(channel);
-    if (it == reg.channels.end() || !it->second.slot) {return 0;}
-    slot = it->second.slot;
-  }
+  const auto slot = written_slot(channel);
+  if (!slot) {return 0;}
   std::lock_guard<std::mutex> lock(slot->mutex);
   return slot->write_count;
 }
@@ -118,14 +115,8 @@ inline std::uint64_t write_count(std::string_view channel)
 /// stops observing. False when no publisher has opened the channel yet. The call allocates nothing.
 inline bool observe_writes(std::string_view channel, std::function<void(const void *)> observer)
 {
-  std::shared_ptr<::rhi_fake::detail::ChannelSlotBase> slot;
-  {
-    auto & reg = ::rhi_fake::detail::unitree_registry();
-    std::lock_guard<std::mutex> lock(reg.mutex);
-    auto it = reg.channels.find(channel);
-    if (it == reg.channels.end() || !it->second.slot) {return false;}
-    slot = it->second.slot;
-  }
+  const auto slot = written_slot(channel);
+  if (!slot) {return false;}
   std::lock_guard<std::mutex> lock(slot->mutex);
   slot->observer = std::move(observer);
   return true;

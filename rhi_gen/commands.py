@@ -72,6 +72,7 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
         transport_option: Sequence[str] | None, project: Path | None) -> int:
     """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
     from .pipeline.new_robot import bringup_commands, plan_new_robot
+    from .render.fake_robot_views import has_fake_robot
     from .write.transaction import apply
 
     proj = _project(project)
@@ -93,10 +94,9 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
     if plan.robot.urdf.transmissions:
         _out(_transmissions_line(plan.robot.config, plan.robot.urdf, plan.yaml_relpath))
     _out(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
-    mock, real = bringup_commands(m.robot)
     _out("then build the package in a ROS 2 workspace (README: Try it without the robot) and bring it up:")
-    _out(f"  without the robot: {mock}")
-    _out(f"  on the robot:      {real}")
+    for label, command in bringup_commands(m.robot, fake_robot=has_fake_robot(m)):
+        _out(f"  {label + ':':<19}{command}")
     _warn(plan.warnings)
     return 0
 

@@ -30,10 +30,12 @@ class NewRobotPlan:
     copy: DescriptionCopy | None = None      # the description lay (or read files) outside the project
 
 
-def bringup_commands(robot: str) -> tuple[str, str]:
-    """The two commands that start the robot once the package is built: mock hardware, then the robot."""
+def bringup_commands(robot: str, *, fake_robot: bool) -> tuple[tuple[str, str], ...]:
+    """(label, command) of each way to start the robot once the package is built: mock hardware, the
+    generated fake robot where the robot has one, then the robot."""
     launch = f"ros2 launch {PACKAGE_NAME} {robot}.launch.py"
-    return f"{launch} use_mock_hardware:=true", launch
+    fake = (("with a fake robot", f"{launch} use_fake_robot:=true"),) if fake_robot else ()
+    return (("without the robot", f"{launch} use_mock_hardware:=true"), *fake, ("on the robot", launch))
 
 
 def clash_error(project: Project, clash: Clash, *, class_prefix: str | None) -> ProjectError:

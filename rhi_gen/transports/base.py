@@ -128,6 +128,10 @@ class Transport(ABC):
                           fix="remove authority (the default is full)")
         return options
 
+    def suggest_authority(self, known: KnownRobot | None) -> list[str]:
+        """The top-level YAML lines `rhi-gen new` writes about ``authority`` (none: only full exists)."""
+        return []
+
     def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
         """The per-joint health state interfaces the robot's state message carries (after position,
         velocity and effort), in MOTOR_HEALTH_INTERFACES order: none unless the transport says."""

@@ -282,7 +282,7 @@ def test_launch_standin_rejects_what_the_real_api_rejects(package, tmp_path) -> 
 
 
 # ---------------------------------------------------------------- the commands around it
-def test_new_writes_a_safe_pose_and_prints_the_two_bringup_commands(tmp_path):
+def test_new_writes_a_safe_pose_and_prints_the_bringup_commands(tmp_path):
     urdf = tmp_path / "arm.urdf"
     urdf.write_text((URDF_FIXTURES / "simple_arm.urdf").read_text().replace('lower="-2.5" upper="2.5"',
                                                                             'lower="0.2" upper="2.5"'))
@@ -293,7 +293,8 @@ def test_new_writes_a_safe_pose_and_prints_the_two_bringup_commands(tmp_path):
     assert data["initial_positions"] == {"shoulder_pan": 0.0, "shoulder_lift": 0.0, "elbow": 0.2}
     lines = result.out.splitlines()
     launch_command = "ros2 launch robot_hardware_interface arm.launch.py"
-    assert lines[-2:] == [f"  without the robot: {launch_command} use_mock_hardware:=true",
+    assert lines[-3:] == [f"  without the robot: {launch_command} use_mock_hardware:=true",
+                          f"  with a fake robot: {launch_command} use_fake_robot:=true",
                           f"  on the robot:      {launch_command}"]
     package_dir = tmp_path / "p/generated" / PACKAGE
     launched = launch(package_dir / "launch" / "arm.launch.py", {PACKAGE: package_dir}, {"use_mock_hardware": "true"})

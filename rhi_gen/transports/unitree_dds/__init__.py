@@ -165,6 +165,16 @@ class UnitreeDds(Transport):
     motor_slots = FAMILIES["hg"]
     slots_holder = "a unitree hg LowCmd_"
 
+    def suggest_authority(self, known: KnownRobot | None) -> list[str]:
+        """A robot whose arm SDK rhi-gen knows gets the choice spelled out (full stays the default)."""
+        if known is None or known.robot not in ARM_SDK_WEIGHT_SLOT:
+            return []
+        return ["# authority: full commands every joint (release the robot's motion controller first);",
+                "# upper_body leaves the legs to the robot's balance controller and commands the waist and",
+                f"# arms through the arm SDK ({ARM_SDK_TOPIC}): see the README, Sharing the robot with its own",
+                "# controller.",
+                "authority: full"]
+
     def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
         """hg MotorState_: temperature[0], vol and motorstate; go MotorState_: one temperature (SDK_FACTS.md)."""
         assert isinstance(options, UnitreeDdsOptions)

@@ -111,3 +111,24 @@ def test_a_template_argument_list_folds_at_its_bracket():
     assert fold_cpp(line).split("\n") == [
         "using G1UpperBodyMotorCommand = robot_hardware_interface::MotorCommand<",
         "  G1_UPPER_BODY_NUM_MOTOR, float>;"]
+
+
+@pytest.mark.parametrize(("robot", "suggested"), [("g1", True), ("h1_2", True), ("go2", False), ("my_g1", False)])
+def test_new_spells_out_authority_where_the_arm_sdk_is_known(robot, suggested):
+    from rhi_gen import transports
+
+    lines = transports.get("unitree_dds").suggest_authority(transports.known_robot("unitree", robot))
+    assert ("authority: full" in lines) == suggested
+    assert all(line.startswith("#") or line == "authority: full" for line in lines)
+
+
+def test_new_writes_a_g1_yaml_that_loads_with_full_authority(tmp_path):
+    from rhi_gen.inputs.scaffold import suggest_yaml
+
+    text = suggest_yaml(vendor="unitree", robot="g1", urdf=load_urdf(REPO / "robots/unitree/g1.urdf"),
+                        urdf_relative=str(REPO / "robots/unitree/g1.urdf"))
+    path = tmp_path / "g1.yaml"
+    path.write_text(text, encoding="utf-8")
+    assert "authority: full" in text.splitlines() and load_config(path).authority == "full"
+    path.write_text(text.replace("authority: full", "authority: upper_body"), encoding="utf-8")
+    assert model_of(path).authority == "upper_body"

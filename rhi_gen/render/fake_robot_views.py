@@ -69,9 +69,8 @@ def _line(joint: MotorJoint, coupled: bool) -> FakeJointLine:
 
 
 def has_fake_robot(robot: RobotModel) -> bool:
-    """Whether the robot's transport has a fake robot side (the package then builds <robot>_fake_robot).
-    An upper_body robot has none yet: its fake would have to play the vendor's balance controller too."""
-    return bool(transports.get(robot.transport).fake_robot_header) and robot.authority == "full"
+    """Whether the robot's transport has a fake robot side (the package then builds <robot>_fake_robot)."""
+    return bool(transports.get(robot.transport).fake_robot_header)
 
 
 def fake_robot_view(robot: RobotModel) -> FakeRobotView:

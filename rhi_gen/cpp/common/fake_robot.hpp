@@ -87,6 +87,9 @@ public:
   virtual void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) = 0;
   // Before each physics step: commands received on another thread (an SDK's) into the model.
   virtual void take_commands(FakeRobotModel<N> & /*model*/) {}
+  // A joint was put at rest at `q` (FakeRobot::place): a side that plays the robot's own
+  // controller holds it there from now on.
+  virtual void placed(size_t /*slot*/, double /*q*/) {}
   // One state (and IMU, health) publication after a physics step.
   virtual void publish(const FakeRobotModel<N> & model) = 0;
 };
@@ -222,7 +225,11 @@ public:
   const FakeJointSpec & joint(size_t k) const override {return model_.dynamics.joints()[k];}
   double position(size_t slot) const override {return model_.dynamics.position(slot);}
   double velocity(size_t slot) const override {return model_.dynamics.velocity(slot);}
-  void place(size_t slot, double q) override {model_.dynamics.place(slot, q);}
+  void place(size_t slot, double q) override
+  {
+    model_.dynamics.place(slot, q);
+    transport_->placed(slot, model_.dynamics.position(slot));
+  }
   const FakeMotorCommand & last_command(size_t slot) const override
   {
     return model_.dynamics.last_command(slot);

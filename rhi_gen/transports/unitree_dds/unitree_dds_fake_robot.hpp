@@ -85,6 +85,36 @@ struct UnitreeFakeFields
   }
 };
 
+// The robot's own controller as the fake robot plays it under the arm SDK (authority
+// upper_body): every motor held where it started, stiff and critically damped, and the arm SDK's
+// command mixed in by its blend weight, tau = w tau_sdk + (1 - w) tau_own, which is again a PD law.
+struct FakeBalanceController
+{
+  static constexpr double kStiffness = 400.0;  // per kg m^2 of the joint's inertia: about 3 Hz
+  static constexpr double kDamping = 40.0;     // critical damping at that stiffness
+
+  static FakeMotorCommand hold(const FakeJointSpec & joint)
+  {
+    const double inertia = joint.inertia > 0.0 ? joint.inertia : 1.0;
+    return FakeMotorCommand{joint.initial_position, 0.0, 0.0, kStiffness * inertia,
+      kDamping * inertia};
+  }
+
+  // w * sdk + (1 - w) * own, as one PD command: gains blend linearly, the targets by their gains.
+  static FakeMotorCommand blend(
+    double weight, const FakeMotorCommand & sdk, const FakeMotorCommand & own)
+  {
+    const double w = std::isfinite(weight) ? std::clamp(weight, 0.0, 1.0) : 0.0;
+    FakeMotorCommand c;
+    c.kp = w * sdk.kp + (1.0 - w) * own.kp;
+    c.kd = w * sdk.kd + (1.0 - w) * own.kd;
+    c.q = c.kp > 0.0 ? (w * sdk.kp * sdk.q + (1.0 - w) * own.kp * own.q) / c.kp : own.q;
+    c.dq = c.kd > 0.0 ? (w * sdk.kd * sdk.dq + (1.0 - w) * own.kd * own.dq) / c.kd : 0.0;
+    c.tau_ff = w * sdk.tau_ff + (1.0 - w) * own.tau_ff;
+    return c;
+  }
+};
+
 template<size_t N, typename Family>
 class UnitreeDdsFakeRobot final : public FakeRobotTransport<N>
 {
@@ -93,8 +123,11 @@ class UnitreeDdsFakeRobot final : public FakeRobotTransport<N>
   static_assert(N <= Family::kMotorSlots, "more motors than LowState_ slots");
 
 public:
-  explicit UnitreeDdsFakeRobot(const UnitreeDdsOptions & options)
-  : options_(options)
+  // `arm_sdk`: authority upper_body (the driver speaks the arm SDK, the fake robot also plays the
+  // robot's balance controller), nullptr: the driver commands every motor on lowcmd_topic.
+  explicit UnitreeDdsFakeRobot(
+    const UnitreeDdsOptions & options, const UnitreeArmSdkOptions * arm_sdk = nullptr)
+  : options_(options), arm_sdk_(arm_sdk)
   {
   }
 
@@ -120,8 +153,20 @@ public:
     return UnitreeFakeFields::carries_error_codes(static_cast<const LowState *>(nullptr));
   }
 
-  void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & /*model*/) override
+  void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) override
   {
+    if (arm_sdk_ != nullptr) {
+      // The robot's own controller holds everything until the arm SDK's weight says otherwise.
+      std::lock_guard<std::mutex> lock(mutex_);
+      const FakeJointSpec * joints = model.dynamics.joints();
+      for (size_t k = 0; k < model.dynamics.joint_count(); ++k) {
+        if (joints[k].slot < N) {
+          holds_[joints[k].slot] = FakeBalanceController::hold(joints[k]);
+        }
+      }
+      commands_ = holds_;
+      pending_ = true;
+    }
     if (options_.release_motion_control) {
       RCLCPP_WARN(
         node->get_logger(), "transport_options.release_motion_control is true: the driver asks "
@@ -138,7 +183,7 @@ public:
       options_.lowstate_topic);
     publisher_->InitChannel();
     subscriber_ = std::make_shared<::unitree::robot::ChannelSubscriber<LowCmd>>(
-      options_.lowcmd_topic);
+      arm_sdk_ != nullptr ? arm_sdk_->topic : options_.lowcmd_topic);
     subscriber_->InitChannel(
       [this](const void * message) {on_low_cmd(*static_cast<const LowCmd *>(message));}, 1);
   }
@@ -153,6 +198,17 @@ public:
     for (size_t slot = 0; slot < N; ++slot) {
       model.dynamics.command(slot, commands_[slot]);
     }
+  }
+
+  void placed(size_t slot, double q) override
+  {
+    if (arm_sdk_ == nullptr || slot >= N) {
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    holds_[slot].q = q;  // the robot's controller keeps it where it was put
+    commands_[slot] = holds_[slot];
+    pending_ = true;
   }
 
   void publish(const FakeRobotModel<N> & model) override
@@ -187,23 +243,34 @@ private:
       ++bad_crc_commands_;
       return;
     }
+    const double weight = arm_sdk_ != nullptr ?
+      static_cast<double>(cmd.motor_cmd()[arm_sdk_->weight_slot].q()) : 1.0;
     for (size_t slot = 0; slot < N; ++slot) {
       const auto & motor = cmd.motor_cmd()[slot];
-      commands_[slot] = motor.mode() == 0U ? FakeMotorCommand{} : FakeMotorCommand{
+      const FakeMotorCommand sdk{
         static_cast<double>(motor.q()), static_cast<double>(motor.dq()),
         static_cast<double>(motor.tau()), static_cast<double>(motor.kp()),
         static_cast<double>(motor.kd())};
+      if (arm_sdk_ == nullptr) {
+        commands_[slot] = motor.mode() == 0U ? FakeMotorCommand{} : sdk;  // disabled: passive
+      } else {  // the arm SDK's slots blended in; the others (the legs) the robot's own
+        commands_[slot] = motor.mode() == 0U ? holds_[slot] :
+          FakeBalanceController::blend(weight, sdk, holds_[slot]);
+      }
     }
     pending_ = true;
   }
 
   const UnitreeDdsOptions options_;
+  const UnitreeArmSdkOptions * const arm_sdk_;  // nullptr: no balance controller to play
   std::string network_interface_{"lo"};
   LowState state_;  // the constant parts filled once: no allocation per step
   ::unitree::robot::ChannelPublisherPtr<LowState> publisher_;
   ::unitree::robot::ChannelSubscriberPtr<LowCmd> subscriber_;
-  mutable std::mutex mutex_;  // commands_, pending_, bad_crc_commands_: SDK thread and loop
+  // commands_, holds_, pending_, bad_crc_commands_: SDK thread and loop
+  mutable std::mutex mutex_;
   std::array<FakeMotorCommand, N> commands_{};
+  std::array<FakeMotorCommand, N> holds_{};  // arm SDK: the robot's own controller, per motor
   bool pending_{false};
   uint64_t bad_crc_commands_{0};
 };

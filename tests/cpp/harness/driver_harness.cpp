@@ -2474,8 +2474,8 @@ int main(int argc, char** argv) {
 #if defined(RHI_ARM_SDK)
     if (only.empty()) {
       // The legs are state-only: the scenarios that command every joint do not apply.
-      std::printf("authority upper_body (arm SDK): sections interfaces, crc, arm_sdk\n");
-      only = "interfaces,crc,arm_sdk";
+      std::printf("authority upper_body (arm SDK): sections interfaces, crc, arm_sdk, fake_robot\n");
+      only = "interfaces,crc,arm_sdk,fake_robot";
     }
 #endif
     if (kHasTransmission && only.empty()) {

@@ -89,6 +89,9 @@ class RobotRecord:
     joints: tuple[JointRecord, ...]   # sorted by index
     transmissions: tuple[TransmissionRecord, ...] = ()  # joints that are not their motor, by joint name
     coupled_groups: tuple[GroupRecord, ...] = ()        # by name
+    # (joint, mode) of every joint not position-commanded ("velocity", "state"), by joint name; None: a
+    # manifest from before rhi-gen recorded them (their changes cannot be told)
+    command_modes: tuple[tuple[str, str], ...] | None = ()
 
 
 @dataclass(frozen=True)
@@ -130,8 +133,9 @@ def robot_record(model: RobotModel) -> RobotRecord:
          for j in model.joints if not j.transmission.is_identity), key=lambda t: t.joint))
     groups = tuple(sorted((GroupRecord(g.name, g.joints, g.matrix) for g in model.coupled_groups),
                           key=lambda g: g.name))
+    modes = tuple(sorted((j.name, j.command_mode) for j in model.joints if j.command_mode != "position"))
     return RobotRecord(robot_key(model), p.yaml_path, p.yaml_sha256, p.urdf_path, p.urdf_sha256,
-                       model.motor_count, model.float_type, tuple(joints), transmissions, groups)
+                       model.motor_count, model.float_type, tuple(joints), transmissions, groups, modes)
 
 
 # ---------------------------------------------------------------- text form
@@ -172,6 +176,7 @@ def _to_data(manifest: Manifest) -> dict[str, Any]:
         if r.transmissions:
             robots[key]["transmissions"] = {t.joint: [t.direction, _num(t.reduction), _num(t.offset)]
                                             for t in r.transmissions}
+        robots[key]["command_modes"] = dict(r.command_modes or ())  # joints not position-commanded
         if r.coupled_groups:
             robots[key]["coupled_groups"] = {g.name: {"joints": list(g.joints),
                                                       "matrix": [[_num(x) for x in row] for row in g.matrix]}
@@ -260,7 +265,8 @@ def _from_data(data: Any) -> Manifest:
             _str(r["urdf"]["path"], "urdf.path"), _str(r["urdf"]["sha256"], "urdf.sha256"), motor_count,
             _str(r["float_type"], "float_type"), tuple(sorted(joints, key=lambda j: j.index)),
             _transmissions(r.get("transmissions", {}), f"robots.{key}.transmissions"),
-            _groups(r.get("coupled_groups", {}), f"robots.{key}.coupled_groups"))
+            _groups(r.get("coupled_groups", {}), f"robots.{key}.coupled_groups"),
+            _modes(r["command_modes"], f"robots.{key}.command_modes") if "command_modes" in r else None)
     files = {_str(k, "files"): _str(v, f"files.{k}") for k, v in data["files"].items()}
     return Manifest(_str(data["generator_version"], "generator_version"), robots, files, fmt)
 
@@ -280,6 +286,13 @@ def _transmissions(data: Any, where: str) -> tuple[TransmissionRecord, ...]:
             raise ValueError(f"{where}.{joint}: expected [direction, reduction, offset]")
         out.append(TransmissionRecord(_str(joint, where), int(row[0]), _float(row[1], where), _float(row[2], where)))
     return tuple(sorted(out, key=lambda t: t.joint))
+
+
+def _modes(data: Any, where: str) -> tuple[tuple[str, str], ...]:
+    """{joint: mode} of the joints that are not position-commanded."""
+    if not isinstance(data, dict):
+        raise ValueError(f"{where}: expected {{joint: mode}}")
+    return tuple(sorted((_str(joint, where), _str(mode, f"{where}.{joint}")) for joint, mode in data.items()))
 
 
 def _groups(data: Any, where: str) -> tuple[GroupRecord, ...]:

@@ -11,7 +11,10 @@ the last `generate` (manifest.RobotRecord). Definitions:
 - transmission: a joint of the new table whose direction, reduction or offset differs (a joint the
   manifest has no transmission for is the identity: manifests before transmissions, and every
   joint that is its own motor);
-- coupled group: added, removed (by name), or its joints or matrix changed.
+- coupled group: added, removed (by name), or its joints or matrix changed;
+- mode: a joint present in both whose command mode differs (position, velocity, or state: a leg the
+  robot's own controller keeps under authority upper_body); not told against a manifest that did not
+  record modes.
 """
 from __future__ import annotations
 
@@ -37,13 +40,15 @@ class RobotDiff:
     float_type: tuple[str, str] | None = None
     transmissions: tuple[tuple[str, str], ...] = ()           # (joint, what changed, in words)
     coupled_groups: tuple[tuple[str, str], ...] = ()          # (group, what changed, in words)
+    modes: tuple[tuple[str, int, str, str], ...] = ()         # (name, index, old mode, new mode)
     new_record: RobotRecord | None = field(default=None, compare=False)
     old_record: RobotRecord | None = field(default=None, compare=False)
 
     @property
     def robot_changed(self) -> bool:
         return bool(self.renamed or self.remapped or self.added or self.removed or self.limits or self.types
-                    or self.motor_count or self.float_type or self.transmissions or self.coupled_groups)
+                    or self.motor_count or self.float_type or self.transmissions or self.coupled_groups
+                    or self.modes)
 
     @property
     def stale(self) -> bool:
@@ -73,6 +78,8 @@ class RobotDiff:
             out.append(f"  removed     joint {j.index}: {j.name}")
         for name, index, old_t, new_t in self.types:
             out.append(f"  type        joint {index} {name}: {old_t} -> {new_t}")
+        for name, index, old_m, new_m in self.modes:
+            out.append(f"  mode        joint {index} {name}: {old_m} -> {new_m}")
         for name, index, fields in self.limits:
             what = ", ".join(f"{k} {_num(a)} -> {_num(b)}" for k, a, b in fields)
             out.append(f"  limits      joint {index} {name}: {what}")
@@ -85,7 +92,8 @@ class RobotDiff:
         for name, what in self.coupled_groups:
             out.append(f"  coupled group {name}: {what}")
         if not self.robot_changed:
-            out.append("  no joint, limit, transmission, motor count or float type change (see the file diff)")
+            out.append("  no joint, limit, command mode, transmission, motor count or float type change (see the "
+                       "file diff)")
         return out
 
 
@@ -207,6 +215,14 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None, *, yaml_compara
         if fields:
             limits.append((n.name, n.index, fields))
 
+    modes = []
+    if old.command_modes is not None:  # recorded: a joint absent from the map is position-commanded
+        old_modes, new_modes = dict(old.command_modes), dict(new.command_modes or ())
+        for o, n in pairs:
+            before, after = old_modes.get(o.name, "position"), new_modes.get(n.name, "position")
+            if before != after:
+                modes.append((n.name, n.index, before, after))
+
     inputs = _inputs(old, new, yaml_comparable)
     diff = RobotDiff(
         new.key, "changed" if inputs else "unchanged", inputs,
@@ -215,7 +231,7 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None, *, yaml_compara
         motor_count=(old.motor_count, new.motor_count) if old.motor_count != new.motor_count else None,
         float_type=(old.float_type, new.float_type) if old.float_type != new.float_type else None,
         transmissions=_transmission_changes(old, new), coupled_groups=_group_changes(old, new),
-        new_record=new, old_record=old)
+        modes=tuple(modes), new_record=new, old_record=old)
     if diff.status == "unchanged" and diff.robot_changed:  # the same hashes cannot give a new table
         diff = replace(diff, status="changed", inputs=("manifest out of date",))
     return diff

@@ -51,6 +51,15 @@ def test_round_trip_and_layout():
     assert dumps(loads(text)) == text
 
 
+def test_command_modes_round_trip_and_an_old_manifest_has_none():
+    record = replace(_record(), command_modes=(("hip", "state"), ("wheel", "velocity")))
+    text = dumps(Manifest("0.1.0", {"unitree/g1": record}, {}))
+    assert loads(text).robots["unitree/g1"].command_modes == (("hip", "state"), ("wheel", "velocity"))
+    data = json.loads(text)
+    del data["robots"]["unitree/g1"]["command_modes"]  # a manifest from before they were recorded
+    assert loads(json.dumps(data)).robots["unitree/g1"].command_modes is None
+
+
 def test_generated_hash_ignores_region_bodies_only():
     base = f"a\n// {REGION_BEGIN} r\n// {REGION_END} r\nb\n"
     assert generated_hash(base.replace("r\n//", "r\nuser();\n//", 1)) == generated_hash(base)

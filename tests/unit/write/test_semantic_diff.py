@@ -82,7 +82,8 @@ def test_inputs_changed_without_robot_change_says_so():
     d = diff_robot(BASE, replace(BASE, yaml_sha256="z" * 64))
     assert d.stale and not d.robot_changed
     assert d.lines() == ["acme/arm: robots/acme/arm.yaml changed",
-                         "  no joint, limit, transmission, motor count or float type change (see the file diff)"]
+                         ("  no joint, limit, command mode, transmission, motor count or float type change (see "
+                          "the file diff)")]
 
 
 def test_format_1_yaml_fingerprints_are_not_compared():
@@ -122,3 +123,23 @@ def test_transmission_changes_in_robot_terms():
 
 def test_a_manifest_without_transmissions_is_the_identity():
     assert not diff_robot(BASE, replace(BASE, transmissions=(TransmissionRecord("knee"),))).robot_changed
+
+
+def test_command_mode_changes_in_robot_terms():
+    """authority: upper_body makes the legs state-only: each is one `mode` line."""
+    new = replace(BASE, yaml_sha256="z" * 64, command_modes=(("ankle", "state"), ("hip", "state"), ("knee", "state")))
+    d = diff_robot(BASE, new)
+    assert d.modes == (("hip", 0, "position", "state"), ("knee", 1, "position", "state"),
+                       ("ankle", 2, "position", "state"))
+    assert d.robot_changed
+    assert d.lines()[1:] == ["  mode        joint 0 hip: position -> state",
+                             "  mode        joint 1 knee: position -> state",
+                             "  mode        joint 2 ankle: position -> state"]
+    assert diff_robot(new, replace(BASE, yaml_sha256="w" * 64)).modes[0] == ("hip", 0, "state", "position")
+
+
+def test_a_manifest_that_did_not_record_modes_tells_no_mode_change():
+    old = replace(BASE, command_modes=None)  # written before rhi-gen recorded command modes
+    new = replace(BASE, yaml_sha256="z" * 64, command_modes=(("wrist", "velocity"),))
+    d = diff_robot(old, new)
+    assert d.modes == () and not d.robot_changed

@@ -228,6 +228,10 @@ class UnitreeDds(Transport):
             raise v.error("authority", f"upper_body speaks Unitree's arm SDK, which takes hg messages ("
                           f"{FAMILY_ROBOTS['hg']}); {vendor}/{robot} speaks {options.family}",
                           fix="remove authority (the default is full)")
+        if options.release_motion_control:
+            raise v.error(f"{p}.release_motion_control", "release_motion_control would stop the robot's own "
+                          "controller, which keeps the legs under authority upper_body",
+                          fix="set release_motion_control: false (the arm SDK needs the controller running)")
         known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
         slot = options.arm_sdk_weight_slot
         if slot < 0:

@@ -78,10 +78,14 @@ def test_options_are_read(tmp_path):
     ("authority: upper_body\n", "  arm_sdk_weight_slot: 35\n", "g1", "arm_sdk_weight_slot"),
     ("", "  arm_sdk_ramp_s: 1.0\n", "g1", "used only with authority: upper_body"),
     ("authority: arms\n", "", "g1", "'arms' is not supported"),
+    ("authority: upper_body\n", "", "g1-release", "would stop the robot's own controller"),
 ])
 def test_bad_authority_is_one_line_naming_the_fix(tmp_path, head, options, robot, words):
+    path = g1_yaml(tmp_path, head=head, options=options, robot=robot.removesuffix("-release"))
+    if robot.endswith("-release"):
+        path.write_text(path.read_text().replace("release_motion_control: false", "release_motion_control: true"))
     with pytest.raises(ConfigError) as info:
-        load_config(g1_yaml(tmp_path, head=head, options=options, robot=robot))
+        load_config(path)
     message = str(info.value)
     assert words in message and "g1.yaml:" in message and "\n" not in message and "->" in message
 

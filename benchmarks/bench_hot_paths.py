@@ -77,7 +77,11 @@ from tests.support import cpp_build, vendor_msgs  # noqa: E402
 
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
 ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
-TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics"}
+# Measured only when asked for (--robot g1_upper_body): the harness's test robot under authority upper_body
+# (tests/cpp/harness/robots/unitree/), whose writer also steps the arm SDK's blend weight.
+ON_REQUEST = ("unitree/g1_upper_body",)
+TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics",
+                "unitree/g1_upper_body": "unitree_dds"}
 DRIVER_PATHS = ("state", "state_dec4", "health_msg", "writer", "readwrite_pos", "readwrite_all", "readwrite_cal")
 READWRITE_PATHS = ("readwrite_pos", "readwrite_all", "readwrite_cal")
 FLOOR_OF = {"state": "state", "state_dec4": "state", "health_msg": "state", "writer": "writer",
@@ -163,7 +167,8 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--iterations", type=int, default=200_000, help="timed calls per path")
     ap.add_argument("--count-iterations", type=int, default=2_000, help="calls per path under callgrind")
-    ap.add_argument("--robot", action="append", help="only this robot (g1, x2, pm01); repeatable")
+    ap.add_argument("--robot", action="append",
+                    help="only this robot (g1, x2, pm01; g1_upper_body only when named); repeatable")
     ap.add_argument("--distro", action="append", choices=sorted(cpp_build.DISTROS),
                     help="the ros2_control stand-ins compiled against (repeatable; default humble, jazzy, rolling); "
                          "changes read() + write() only (see the docstring)")
@@ -171,9 +176,11 @@ def main() -> None:
     args = ap.parse_args()
 
     robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
-    unknown = sorted(set(args.robot or ()) - {r.split("/")[1] for r in ROBOTS})
+    robots += [r for r in ON_REQUEST if args.robot and r.split("/")[1] in args.robot]
+    known = {r.split("/")[1] for r in (*ROBOTS, *ON_REQUEST)}
+    unknown = sorted(set(args.robot or ()) - known)
     if unknown:
-        ap.error(f"unknown --robot {', '.join(unknown)} (choose from {', '.join(r.split('/')[1] for r in ROBOTS)})")
+        ap.error(f"unknown --robot {', '.join(unknown)} (choose from {', '.join(sorted(known))})")
     for label in list(robots):
         reason = vendor_msgs.skip_reason(TRANSPORT_OF[label])
         if reason:
@@ -187,7 +194,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory(prefix="rhi_bench_") as tmp:
         root = Path(tmp)
         print(f"rendering {', '.join(robots)} into {root} ...", flush=True)
-        package = cpp_build.render_test_package(root, only=robots, extra_robots=False)
+        package = cpp_build.render_test_package(root, only=robots,
+                                                extra_robots=any(r in ON_REQUEST for r in robots))
         digest = hashlib.sha256(BENCH_SOURCE.read_bytes()).hexdigest()[:12]
         distros = list(dict.fromkeys(args.distro or DEFAULT_DISTROS))
         print(f"compiling with {' '.join(FLAGS)} against the {', '.join(distros)} stand-ins (bench source "

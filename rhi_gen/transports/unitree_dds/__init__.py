@@ -232,7 +232,7 @@ class UnitreeDds(Transport):
             raise v.error(f"{p}.release_motion_control", "release_motion_control would stop the robot's own "
                           "controller, which keeps the legs under authority upper_body",
                           fix="set release_motion_control: false (the arm SDK needs the controller running)")
-        known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
+        known = _known(vendor, robot)
         slot = options.arm_sdk_weight_slot
         if slot < 0:
             slot = ARM_SDK_WEIGHT_SLOT.get(known.robot, -1) if known is not None else -1
@@ -258,7 +258,7 @@ class UnitreeDds(Transport):
         """The message family (a known robot's, else the YAML must name it), its slot count and motor modes."""
         assert isinstance(options, UnitreeDdsOptions)  # made by read_options
         p = "transport_options"
-        known = next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
+        known = _known(vendor, robot)
         family = options.family or (known.family if known else "")
         if not family:
             raise v.error(f"{p}.family" if f"{p}.family" in v.lines else p,
@@ -317,6 +317,11 @@ class UnitreeDds(Transport):
         lines += ["  release_motion_control: false  # true: release the built-in motion controller first",
                   "  verify_state_crc: true"]
         return lines
+
+
+def _known(vendor: str, robot: str) -> KnownRobot | None:
+    """The Unitree robot rhi-gen knows by this name (its family, motor modes, arm SDK weight slot)."""
+    return next((k for k in KNOWN_ROBOTS if k.vendor == vendor and k.named(robot)), None)
 
 
 def _new_family(known: KnownRobot | None, given: Mapping[str, str]) -> str:

@@ -48,7 +48,6 @@ public:
     return weight_;
   }
   double value() const {return weight_;}
-  double step() const {return step_;}
   void reset() {weight_ = 0.0;}
 
   // Whether a command drives any of `slots` (a stiffness, a damping or a feed-forward effort):

@@ -43,6 +43,7 @@ from tests.support.cpp_build import (
     build_driver_object,
     build_harness,
     expand_description,
+    label_yaml,
     message_include_flags,
     project_robot_labels,
     render_test_package,
@@ -50,6 +51,7 @@ from tests.support.cpp_build import (
     run_binary_retrying,
     run_parallel,
     standin_flags,
+    yaml_arm_sdk,
 )
 from tests.support.description_checks import check_ros2_control
 
@@ -218,7 +220,8 @@ def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
 
 
 # The threaded scenario commands every joint; an upper_body robot's real-thread checks are in its arm_sdk section.
-THREAD_CELLS = [c for c in RUN_CELLS if c[2] != "plain" and not c[0].endswith("_upper_body")]
+ARM_SDK_LABELS = {label for label in ROBOTS if yaml_arm_sdk(label_yaml(label)) is not None}
+THREAD_CELLS = [c for c in RUN_CELLS if c[2] != "plain" and c[0] not in ARM_SDK_LABELS]
 
 
 @pytest.mark.parametrize(("label", "distro", "flavour"), THREAD_CELLS,

@@ -907,6 +907,12 @@ def session_reference_package(tmp_path_factory) -> RenderedPackage:
         return _SESSION["reference"]  # type: ignore[return-value]
 
 
+def label_yaml(label: str) -> Path:
+    """The vendor YAML of "vendor/robot": robots/, else the harness's test robots."""
+    path = REPO / "robots" / f"{label}.yaml"
+    return path if path.is_file() else HARNESS_ROBOTS / f"{label}.yaml"
+
+
 def project_robot_labels(extra_robots: bool = True) -> list[str]:
     """vendor/robot of every vendor YAML (known at collection time, before anything is generated)."""
     folders = [REPO / "robots"] + ([HARNESS_ROBOTS] if extra_robots and HARNESS_ROBOTS.is_dir() else [])

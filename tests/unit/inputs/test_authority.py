@@ -27,10 +27,12 @@ ARM_SDK_JOINTS = {f"{side}_{part}_joint" for side in ("left", "right") for part 
     "waist_yaw_joint", "waist_roll_joint", "waist_pitch_joint"}
 
 
-def g1_yaml(tmp_path: Path, *, head: str = "authority: upper_body\n", options: str = "", robot: str = "g1") -> Path:
+def g1_yaml(tmp_path: Path, *, head: str = "authority: upper_body\n", options: str = "", robot: str = "g1",
+            release: bool = False) -> Path:
     text = G1_YAML.replace("urdf: g1.urdf", f"urdf: {REPO / 'robots/unitree/g1.urdf'}")
     text = text.replace("robot: g1\n", f"robot: {robot}\n{head}")
-    text = text.replace("  release_motion_control: false\n", "  release_motion_control: false\n" + options)
+    text = text.replace("  release_motion_control: false\n", f"  release_motion_control: {str(release).lower()}\n"
+                        + options)
     path = tmp_path / "g1.yaml"
     path.write_text(text, encoding="utf-8")
     return path
@@ -71,21 +73,18 @@ def test_options_are_read(tmp_path):
     assert options.arm_sdk_topic == "rt/my_arm_sdk" and options.arm_sdk_ramp_s == 0.5
 
 
-@pytest.mark.parametrize(("head", "options", "robot", "words"), [
-    ("authority: upper_body\n", "", "my_g1", "does not know which LowCmd_ slot"),
-    ("authority: upper_body\n", "  arm_sdk_weight_slot: 3\n", "g1", "joint_map drives a joint"),
-    ("authority: upper_body\n", "  arm_sdk_ramp_s: 0.0\n", "g1", "from 0.1 to 60 seconds"),
-    ("authority: upper_body\n", "  arm_sdk_weight_slot: 35\n", "g1", "arm_sdk_weight_slot"),
-    ("", "  arm_sdk_ramp_s: 1.0\n", "g1", "used only with authority: upper_body"),
-    ("authority: arms\n", "", "g1", "'arms' is not supported"),
-    ("authority: upper_body\n", "", "g1-release", "would stop the robot's own controller"),
+@pytest.mark.parametrize(("head", "options", "robot", "release", "words"), [
+    ("authority: upper_body\n", "", "my_g1", False, "does not know which LowCmd_ slot"),
+    ("authority: upper_body\n", "  arm_sdk_weight_slot: 3\n", "g1", False, "joint_map drives a joint"),
+    ("authority: upper_body\n", "  arm_sdk_ramp_s: 0.0\n", "g1", False, "from 0.1 to 60 seconds"),
+    ("authority: upper_body\n", "  arm_sdk_weight_slot: 35\n", "g1", False, "arm_sdk_weight_slot"),
+    ("", "  arm_sdk_ramp_s: 1.0\n", "g1", False, "used only with authority: upper_body"),
+    ("authority: arms\n", "", "g1", False, "'arms' is not supported"),
+    ("authority: upper_body\n", "", "g1", True, "would stop the robot's own controller"),
 ])
-def test_bad_authority_is_one_line_naming_the_fix(tmp_path, head, options, robot, words):
-    path = g1_yaml(tmp_path, head=head, options=options, robot=robot.removesuffix("-release"))
-    if robot.endswith("-release"):
-        path.write_text(path.read_text().replace("release_motion_control: false", "release_motion_control: true"))
+def test_bad_authority_is_one_line_naming_the_fix(tmp_path, head, options, robot, release, words):
     with pytest.raises(ConfigError) as info:
-        load_config(path)
+        load_config(g1_yaml(tmp_path, head=head, options=options, robot=robot, release=release))
     message = str(info.value)
     assert words in message and "g1.yaml:" in message and "\n" not in message and "->" in message
 

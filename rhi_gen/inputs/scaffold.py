@@ -89,6 +89,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         f"motor_count: {motor_count}",
         f"float_type: {chosen.default_float_type}",
     ]
+    lines += chosen.suggest_hands(known)
     lines += chosen.suggest_authority(known)
     if class_prefix is not None:
         lines.append(f"class_prefix: {class_prefix}")

@@ -13,7 +13,7 @@ from typing import Any
 
 from .. import transports
 from ..errors import ConfigError
-from ..model import AUTHORITIES, FLOAT_TYPES, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
+from ..model import AUTHORITIES, FLOAT_TYPES, HANDS, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
 from ..typed_yaml.validator import Validator
 from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
@@ -22,7 +22,7 @@ from .vendor_transmissions import read_coupled_joints, read_transmissions
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
             "unmapped_joints", "default_gains", "command_modes", "initial_positions", "transmissions",
-            "coupled_joints", "urdf_transmissions", "authority")
+            "coupled_joints", "urdf_transmissions", "authority", "hands")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
                   "state_decimation", "state_timeout_ms", "fault_timeout_ms", "diagnostics_period_ms",
@@ -150,6 +150,8 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     options = transport.read_options(
         v, v.mapping(raw_options, "transport_options", transport.option_keys) if raw_options is not None else {},
         motor_count)
+    hands = v.optional(data, "", "hands", lambda x, q: v.choice(x, q, HANDS), "none")
+    options = transport.resolve_hands(v, hands, options, vendor=vendor, robot=robot)
     options = transport.resolve_options(v, options, vendor=vendor, robot=robot, motor_count=motor_count)
     if params.motor_error_fault_mask and "error_code" not in transport.motor_health(options):
         raise v.error("parameters.motor_error_fault_mask", f"the {transport.name} state carries no motor error "
@@ -157,6 +159,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
                       fix="remove motor_error_fault_mask (Unitree hg and AgiBot robots report error codes)")
 
     joint_map = _joint_map(v, data["joint_map"], motor_count)
+    transport.check_hand_map(v, options, joint_map)
     unmapped: tuple[str, ...] = ()
     if "unmapped_joints" in data:
         raw = data["unmapped_joints"]
@@ -195,7 +198,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
         default_gains=default_gains, command_modes=command_modes, initial_positions=initial,
         transmissions=transmissions, coupled_joints=coupled, urdf_transmissions=urdf_transmissions,
-        authority=authority,
+        authority=authority, hands=hands,
         content_sha256=content_sha256(data), key_lines=dict(lines),
     )
 

@@ -9,6 +9,7 @@
 from .config import (
     AUTHORITIES,
     FLOAT_TYPES,
+    HANDS,
     MAX_MOTORS,
     ImuConfig,
     PackageInfo,
@@ -32,6 +33,7 @@ __all__ = [
     "ACTUATED_TYPES",
     "AUTHORITIES",
     "FLOAT_TYPES",
+    "HANDS",
     "MAX_MOTORS",
     "CoupledGroup",
     "ImuConfig",

@@ -12,6 +12,9 @@ FLOAT_TYPES = ("float", "double")
 # Who commands the robot (vendor YAML `authority`): the driver alone, or the driver for everything above
 # the legs while the robot's own balance controller keeps the legs (Unitree's arm SDK).
 AUTHORITIES = ("full", "upper_body")
+# The robot's hands (vendor YAML `hands`): none, or a hand its transport drives beside the body (the G1's
+# Dex3-1 over unitree_sdk2, hand motors in the joint_map slots after the body's).
+HANDS = ("none", "dex3")
 MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the generated tables sane
 
 
@@ -62,6 +65,10 @@ class TransportOptions:
         slots (AgiBot); None by default."""
         return None
 
+    def hand_slots(self) -> range:
+        """The joint_map slots the transport drives as hand motors (their own messages); none by default."""
+        return range(0)
+
 
 @dataclass(frozen=True)
 class VendorConfig:
@@ -94,6 +101,7 @@ class VendorConfig:
     coupled_joints: tuple[tuple[str, tuple[str, ...], tuple[tuple[float, ...], ...]], ...] = ()
     urdf_transmissions: bool = True  # apply the URDF's <transmission>s (YAML urdf_transmissions)
     authority: str = "full"  # AUTHORITIES: upper_body leaves the legs to the robot's own controller
+    hands: str = "none"      # HANDS: the hands the transport drives beside the body
     # sha256 of the parsed YAML content (typed_yaml/yaml_source.content_sha256): comments and layout do not count
     content_sha256: str = ""
     key_lines: dict[str, int] = field(default_factory=dict, compare=False, hash=False)

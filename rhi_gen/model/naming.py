@@ -48,10 +48,11 @@ RESERVED_VENDOR_FOLDERS = frozenset({"common", "transport"})
 # would be that namespace (its names mixed with the driver's) or clash with that function.
 # tests/cli/test_hostile_inputs.py checks that every such name of rhi_gen/cpp and rhi_gen/transports is here.
 PACKAGE_SCOPE_NAMES = frozenset({
-    "unitree_crc", "unitree_go", "unitree_hg",                     # namespaces
+    "unitree_crc", "unitree_dex3", "unitree_go", "unitree_hg",     # namespaces
     # functions (snake_case, ROS 2 style, so a vendor name could redeclare one)
     "all_finite", "bound_command_block", "bounded", "components_initialized", "copy_state_block",
-    "cpu_has_clmul", "elapsed_us", "estop_pressed", "for_each_slot_block", "health_state_value", "load_word",
+    "cpu_has_clmul", "elapsed_us", "estop_pressed", "first_slot", "motor_mode",
+    "for_each_slot_block", "health_state_value", "load_word",
     "low_cmd_crc", "low_state_crc",
     "make_joint_index_map", "make_qos", "make_resource_manager", "make_tables", "masked_crc",
     "masked_crc_clmul", "masked_crc_portable", "message_crc", "parse_bool", "parse_unsigned",

@@ -97,6 +97,7 @@ class RobotModel:
     urdf_name: str = ""
     urdf_xml: str = ""        # the expanded URDF (no xacro banner, no machine paths): urdf/<robot>.urdf
     authority: str = "full"   # vendor YAML authority: full | upper_body (model/config.py AUTHORITIES)
+    hands: str = "none"       # vendor YAML hands: none | dex3 (model/config.py HANDS)
 
     @property
     def cpp_namespace(self) -> str:
@@ -129,6 +130,12 @@ class RobotModel:
     def has_transmission(self) -> bool:
         """Whether any joint's motor is not the joint itself (the driver then converts in read/write)."""
         return bool(self.coupled_groups) or any(not j.transmission.is_identity for j in self.joints)
+
+    @property
+    def hand_joints(self) -> tuple[MotorJoint, ...]:
+        """The joints of the hands the transport drives in their own messages (hands: dex3), URDF order."""
+        slots = self.transport_options.hand_slots()
+        return tuple(j for j in self.joints if j.index in slots)
 
     @property
     def commanded_joints(self) -> tuple[MotorJoint, ...]:

@@ -104,13 +104,14 @@ class LaunchView:
 def start_controllers(robot: RobotModel) -> tuple[tuple[str, ...], tuple[str, ...]]:
     """(active, inactive) controllers of config/<robot>_controllers.yaml: the joint state broadcaster, the
     IMU broadcaster, the health controller (the driver's health and its e-stop, ready from the start) and
-    the position controller (the velocity controller when no joint is position-commanded) start active;
-    the other forward controllers are loaded inactive."""
+    the position controller (the velocity controller when no joint is position-commanded) and the hands'
+    position controller start active; the other forward controllers are loaded inactive."""
     forward = [c.name for c in controllers_view(robot).controllers]
     main = "forward_position_controller" if "forward_position_controller" in forward else forward[0]
+    hands = tuple(name for name in forward if name == "hand_position_controller" and name != main)
     active = ("joint_state_broadcaster", *(("imu_sensor_broadcaster",) if robot.imu.enabled else ()),
-              HEALTH_CONTROLLER, main)
-    return active, tuple(name for name in forward if name != main)
+              HEALTH_CONTROLLER, main, *hands)
+    return active, tuple(name for name in forward if name != main and name not in hands)
 
 
 def launch_view(robot: RobotModel) -> LaunchView:

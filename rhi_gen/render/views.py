@@ -157,9 +157,15 @@ def controllers_view(robot: RobotModel) -> ControllersView:
     velocity = tuple(j for j in robot.joints if j.command_mode == "velocity")
     commanded = robot.commanded_joints
     gains = "damping" in commanded[0].command_interfaces
+    # The hands get a position controller of their own: a grasp runs beside the arms' controller.
+    hands = {j.index for j in robot.hand_joints}
+    body_position = tuple(j for j in position if j.index not in hands)
     controllers = []
-    if position:
-        controllers.append(Controller("forward_position_controller", "position", position))
+    if body_position:
+        controllers.append(Controller("forward_position_controller", "position", body_position))
+    if hands:
+        controllers.append(Controller("hand_position_controller", "position",
+                                      tuple(j for j in position if j.index in hands)))
     if velocity:
         controllers.append(Controller("forward_velocity_controller", "velocity", velocity))
     if gains and position:

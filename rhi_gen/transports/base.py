@@ -128,6 +128,25 @@ class Transport(ABC):
                           fix="remove authority (the default is full)")
         return options
 
+    def resolve_hands(self, v: Validator, hands: str, options: TransportOptions, *, vendor: str,
+                      robot: str) -> TransportOptions:
+        """Options for the YAML's ``hands`` (before resolve_options). Only ``none`` by default: a hand needs
+        its vendor's protocol (the G1's Dex3-1 over unitree_sdk2 is the one rhi-gen speaks)."""
+        if hands != "none":
+            raise v.error("hands", f"the {self.name} transport drives no hands; hands {hands!r} is the G1's "
+                          "Dex3-1 over unitree_sdk2 (transport unitree_dds)",
+                          fix="remove hands (the default is none), or map the hand joints as body motors")
+        return options
+
+    def check_hand_map(self, v: Validator, options: TransportOptions,
+                       joint_map: tuple[tuple[str, int], ...]) -> None:
+        """Refuse a joint_map that leaves out a hand motor of ``options.hand_slots()`` (none by default)."""
+        return None
+
+    def suggest_hands(self, known: KnownRobot | None) -> list[str]:
+        """The top-level YAML lines `rhi-gen new` writes about ``hands`` (none: the transport drives none)."""
+        return []
+
     def suggest_authority(self, known: KnownRobot | None) -> list[str]:
         """The top-level YAML lines `rhi-gen new` writes about ``authority`` (none: only full exists)."""
         return []

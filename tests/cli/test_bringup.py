@@ -207,7 +207,9 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
     assert active == ["joint_state_broadcaster", *(["imu_sensor_broadcaster"] if m.imu.enabled else []),
                       "health_controller",
                       "forward_position_controller" if any(j.command_mode == "position" for j in m.joints)
-                      else "forward_velocity_controller"]
+                      else "forward_velocity_controller",
+                      # hands: their own position controller, beside the body's
+                      *(["hand_position_controller"] if m.hands != "none" else [])]
     check_controllers(launched, d, controllers_file, m)
 
 

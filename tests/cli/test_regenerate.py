@@ -297,7 +297,7 @@ def test_removed_robot_with_user_code_is_refused(project, capsys):
 def test_removed_robot_without_user_code_is_removed(project, capsys):
     (project / "robots/unitree/g1.yaml").unlink()
     code, out, _ = cli(capsys, project, "generate")
-    assert code == 0 and "15 removed" in out  # 9 robot files + the 6 unitree transport headers
+    assert code == 0 and "16 removed" in out  # 9 robot files + the 7 unitree transport headers
     assert not any((project / rel).exists() for rel in G1_FILES)
     assert not (project / f"{PKG}/src/unitree").exists()
     for header in ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_dds.hpp"):

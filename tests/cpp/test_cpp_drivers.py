@@ -52,6 +52,7 @@ from tests.support.cpp_build import (
     run_parallel,
     standin_flags,
     yaml_arm_sdk,
+    yaml_dex3_topics,
 )
 from tests.support.description_checks import check_ros2_control
 
@@ -201,6 +202,8 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
         expected.add("fake_robot")
     if model.authority == "upper_body":  # the legs are state-only: the arm SDK's own scenarios
         expected = {"interfaces", "crc", "arm_sdk"} | ({"fake_robot"} if has_fake_robot(model) else set())
+    if yaml_dex3_topics(label_yaml(label)) is not None:  # hands: dex3, the hands' own section
+        expected.add("hands")
     missing = expected - set(run.sections)
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 

@@ -43,6 +43,7 @@ ROBOTS = ("unitree/g1", "engineai/pm01")
 GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message family
 TRANSMISSION_ROBOTS = ("pal/talos_arm",)  # tests/cpp/harness/robots/: motors that are not joints
 ARM_SDK_ROBOTS = ("unitree/g1_upper_body",)  # tests/cpp/harness/robots/: authority upper_body
+DEX3_ROBOTS = ("unitree/g1_dex3",)  # tests/cpp/harness/robots/: hands: dex3
 # every robot a mutation runs on passes unmodified
 CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS)
 THREADS_MS = 100
@@ -66,6 +67,7 @@ UNITREE_HG = TRANSPORT + "unitree_hg.hpp"
 UNITREE_GO = TRANSPORT + "unitree_go.hpp"
 UNITREE_ARM_SDK = TRANSPORT + "unitree_arm_sdk.hpp"
 UNITREE_DDS = TRANSPORT + "unitree_dds.hpp"
+UNITREE_DEX3 = TRANSPORT + "unitree_dex3.hpp"
 AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
 PM01_FAKE_ROBOT = "src/engineai/pm01_fake_robot.cpp"
 G1_FAKE_ROBOT = "src/unitree/g1_fake_robot.cpp"
@@ -220,12 +222,22 @@ MUTATIONS = (
                        "step_(1.0 + 0.0 * ramp_s * static_cast<double>(period_us))"),
              ("arm_sdk",), robots=ARM_SDK_ROBOTS),
     Mutation("arm_sdk_legs_commanded", "under the arm SDK the command writer fills the legs' slots too",
-             TokenEdit(UNITREE_DDS, "for (const size_t slot : core_->slots().commanded_slots()) {",
-                       "for (const size_t slot : core_->slots().mapped_slots()) {"),
+             TokenEdit(UNITREE_DDS, "for (const size_t slot : core.slots().commanded_slots()) {",
+                       "for (const size_t slot : core.slots().mapped_slots()) {"),
              ("arm_sdk",), robots=ARM_SDK_ROBOTS),
     Mutation("arm_sdk_no_hand_back", "on_deactivate stops the arm SDK at the weight it had, without ramping to 0",
              TokenEdit(UNITREE_DDS, "if (arm_sdk_ != nullptr) { hand_back_upper_body(); }", ""),
              ("arm_sdk",), robots=ARM_SDK_ROBOTS),
+    Mutation("dex3_mode_timeout", "every Dex3-1 motor's mode byte carries the timeout bit (the SDK's stop)",
+             TokenEdit(UNITREE_DEX3, "(kStatusRun << 4U)", "(kStatusRun << 4U) | 0x80U"),
+             ("hands",), robots=DEX3_ROBOTS),
+    Mutation("dex3_hands_swapped", "the left hand's HandState_ feeds the right hand's joints and back",
+             TokenEdit(UNITREE_DEX3, "on_hand_state(side, *static_cast<const HandState *>(message));",
+                       "on_hand_state(1 - side, *static_cast<const HandState *>(message));"),
+             ("hands",), robots=DEX3_ROBOTS),
+    Mutation("dex3_state_without_hands", "the body's state counts as complete before both hands have reported",
+             TokenEdit(UNITREE_DEX3, "return complete;", "return true || complete;"),
+             ("hands",), robots=DEX3_ROBOTS),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

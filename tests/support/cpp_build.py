@@ -338,6 +338,24 @@ def yaml_arm_sdk(yaml_path: Path) -> tuple[int, float] | None:
     return int(options.get("arm_sdk_weight_slot", 29)), float(options.get("arm_sdk_ramp_s", 2.0))
 
 
+def yaml_dex3_topics(yaml_path: Path) -> tuple[tuple[str, str], tuple[str, str]] | None:
+    """((left, right) command topics, (left, right) state topics) of a vendor YAML with hands: dex3, else None.
+    The defaults are unitree_sdk2's g1_dex3_example topics (tests/support/dex3_facts.py)."""
+    import yaml
+
+    from tests.support import dex3_facts
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    if data.get("hands") != "dex3":
+        return None
+    options = data.get("transport_options") or {}
+    command = str(options.get("hand_command_topic", dex3_facts.COMMAND_TOPIC))
+    state = str(options.get("hand_state_topic", dex3_facts.STATE_TOPIC))
+    sides = dex3_facts.SIDES
+    return (tuple(command.replace("{side}", s) for s in sides),  # type: ignore[return-value]
+            tuple(state.replace("{side}", s) for s in sides))
+
+
 def is_leg_name(name: str) -> bool:
     return any(word in name.lower().split("_") for word in LEG_WORDS)
 
@@ -412,6 +430,9 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     arm_sdk = yaml_arm_sdk(loaded.yaml_path)
     if arm_sdk is not None:
         lines.append("#define RHI_ARM_SDK 1  // authority upper_body: section arm_sdk")
+    dex3 = yaml_dex3_topics(loaded.yaml_path)
+    if dex3 is not None:
+        lines.append("#define RHI_DEX3 1  // hands: dex3 (HandCmd_ / HandState_ per hand): section hands")
     lines += [
         "namespace rhi_data {",
         f"using SdkFloat = {model.float_type};",
@@ -462,6 +483,9 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr size_t kGroupCount = {len(groups)};",
         f"inline constexpr char kCommandTopic[] = {_c_string(groups[0][3])};",
         f"inline constexpr char kStateTopic[] = {_c_string(groups[0][4])};",
+        *([f"inline constexpr const char * kHandCommandTopics[2] = {{{', '.join(map(_c_string, dex3[0]))}}};",
+           f"inline constexpr const char * kHandStateTopics[2] = {{{', '.join(map(_c_string, dex3[1]))}}};"]
+          if dex3 is not None else []),
         # each transport's options carry only its own fields (transports/<name>/): the others are unused
         f"inline constexpr char kImuTopic[] = {_c_string(getattr(opts, 'imu_topic', ''))};",
         f"inline constexpr char kMotorDebugTopic[] = {_c_string(getattr(opts, 'motor_debug_topic', ''))};",

@@ -1,5 +1,8 @@
-"""Small RobotModels built directly (no URDF, no YAML) for the view-model tests of tests/unit/render/."""
+"""RobotModels for tests: small ones built directly (no URDF, no YAML) for the view-model tests of tests/unit/render/,
+and the one a vendor YAML makes (model_of_yaml)."""
 from __future__ import annotations
+
+from pathlib import Path
 
 from rhi_gen import transports
 from rhi_gen.model import (
@@ -30,3 +33,13 @@ def robot_model(transport: str, vendor: str = "acme", robot: str = "arm", *, imu
                       imu=ImuConfig(enabled=imu), parameters=Parameters(command_writer_period_us=period),
                       transport_options=TransportOptions(sdk_slots=len(joints)),
                       provenance=InputProvenance("robots/a.yaml", "robots/a.urdf", "", ""))
+
+
+def model_of_yaml(path: Path) -> RobotModel:
+    """The RobotModel `rhi-gen generate` builds from the vendor YAML at ``path`` (its URDF as the YAML names it)."""
+    from rhi_gen.assemble.robot_model import build_model
+    from rhi_gen.inputs.urdf_loader import load_urdf
+    from rhi_gen.inputs.vendor_config import load_config
+
+    config = load_config(path)
+    return build_model(config, load_urdf(config.urdf), project_root=path.parent, yaml_path=path)

@@ -15,7 +15,7 @@ from typing import Any
 
 from ...errors import ConfigError
 from ...model import TransportOptions
-from ...typed_yaml.validator import Validator
+from ...typed_yaml.validator import TOPIC_RE, Validator
 from ..base import PLAIN_CMAKE, Dependency, KnownRobot, Transport, transport_header
 
 NAME = "unitree_dds"
@@ -29,6 +29,16 @@ GO_STRONG = 0x0A  # the H1's hip/knee/torso motors and the B2's motors in the C+
 ARM_SDK_TOPIC = "rt/arm_sdk"
 ARM_SDK_WEIGHT_SLOT = {"g1": 29, "h1_2": 27}
 ARM_SDK_RAMP_S = 2.0  # the examples' arm initialisation time (init_time = 2.0 s)
+# The G1's Dex3-1 hands (hands: dex3), from unitree_sdk2's example/g1/dex3/g1_dex3_example.cpp: HandCmd_ on
+# rt/dex3/<side>/cmd, HandState_ on rt/lf/dex3/<side>/state (Unitree's teleoperation app reads
+# rt/dex3/<side>/state: hand_state_topic changes it), 7 motors per hand in the order of Unitree's G1
+# documentation. The hand motors take the joint_map slots after the 35 LowCmd_ slots: left, then right.
+DEX3_SIDES = ("left", "right")
+DEX3_ORDER = ("thumb_0", "thumb_1", "thumb_2", "middle_0", "middle_1", "index_0", "index_1")
+DEX3_COMMAND_TOPIC = "rt/dex3/{side}/cmd"
+DEX3_STATE_TOPIC = "rt/lf/dex3/{side}/state"
+DEX3_FIRST_SLOT = 35  # = FAMILIES["hg"]
+DEX3_MOTORS = len(DEX3_SIDES) * len(DEX3_ORDER)
 
 
 # unitree_sdk2 is a plain CMake package: no package.xml, no rosdep key, a non-namespaced target.
@@ -67,6 +77,17 @@ class UnitreeDdsOptions(TransportOptions):
     arm_sdk_topic: str = ARM_SDK_TOPIC
     arm_sdk_weight_slot: int = -1      # the LowCmd_ slot whose q carries the blend weight (-1: the robot's)
     arm_sdk_ramp_s: float = ARM_SDK_RAMP_S  # seconds for the blend weight from 0 to 1 (and back)
+    hands: str = "none"                # dex3: the G1's Dex3-1 hands in slots 35..48 (HandCmd_/HandState_)
+    hand_command_topic: str = DEX3_COMMAND_TOPIC  # "{side}" is left or right
+    hand_state_topic: str = DEX3_STATE_TOPIC
+
+    def hand_slots(self) -> range:
+        """Dex3-1: the 14 slots after the 35 of a LowCmd_, the left hand's 7 motors then the right's."""
+        return range(DEX3_FIRST_SLOT, DEX3_FIRST_SLOT + DEX3_MOTORS) if self.hands == "dex3" else range(0)
+
+    def hand_topics(self, side: str) -> tuple[str, str]:
+        """(command, state) topic of one hand."""
+        return self.hand_command_topic.replace("{side}", side), self.hand_state_topic.replace("{side}", side)
 
 # G1 29-DoF motor order, unitree_sdk2 enum G1JointIndex.
 G1_ORDER = (
@@ -151,12 +172,12 @@ class UnitreeDds(Transport):
     summary = "unitree_sdk2 DDS: LowCmd_/LowState_ with CRC32, hg (35 motor slots) or go (20) messages"
     option_keys = ("family", "lowcmd_topic", "lowstate_topic", "sdk_slots", "domain_id", "mode_pr",
                    "motor_modes", "release_motion_control", "verify_state_crc", "arm_sdk_topic",
-                   "arm_sdk_weight_slot", "arm_sdk_ramp_s")
+                   "arm_sdk_weight_slot", "arm_sdk_ramp_s", "hand_command_topic", "hand_state_topic")
     default_float_type = "float"
     dependencies = (UNITREE_SDK2,)
     shared_files = tuple(transport_header(NAME, name) for name in
                          ("unitree_crc.hpp", "unitree_hg.hpp", "unitree_go.hpp", "unitree_arm_sdk.hpp",
-                          "unitree_dds.hpp",
+                          "unitree_dds.hpp", "unitree_dex3.hpp",
                           "unitree_dds_fake_robot.hpp"))
     fake_robot_header = "robot_hardware_interface/transport/unitree_dds_fake_robot.hpp"
     fake_state_rate_hz = 500.0  # LowState_ at 500 Hz (unitree_ros2 "HIGH_FREQ" lowstate)
@@ -164,6 +185,15 @@ class UnitreeDds(Transport):
     known_robots = KNOWN_ROBOTS
     motor_slots = FAMILIES["hg"]
     slots_holder = "a unitree hg LowCmd_"
+
+    def suggest_hands(self, known: KnownRobot | None) -> list[str]:
+        """The G1 can carry Dex3-1 hands: say how to drive them (none stays the default)."""
+        if known is None or known.robot != "g1":
+            return []
+        return ["# hands: none drives the body only; dex3 drives the Dex3-1 hands too (motor_count 49, the",
+                "# hand joints in slots 35..41 left and 42..48 right, in the order " + ", ".join(DEX3_ORDER) + ";",
+                "# use the URDF with hands): see the README, Hands.",
+                "hands: none"]
 
     def suggest_authority(self, known: KnownRobot | None) -> list[str]:
         """A robot whose arm SDK rhi-gen knows gets the choice spelled out (full stays the default)."""
@@ -201,7 +231,51 @@ class UnitreeDds(Transport):
             arm_sdk_weight_slot=v.optional(options, p, "arm_sdk_weight_slot", v.integer_in(0, FAMILIES["hg"] - 1),
                                            -1),
             arm_sdk_ramp_s=v.optional(options, p, "arm_sdk_ramp_s", self._ramp_seconds(v), ARM_SDK_RAMP_S),
+            hand_command_topic=v.optional(options, p, "hand_command_topic", self._hand_topic(v),
+                                          DEX3_COMMAND_TOPIC),
+            hand_state_topic=v.optional(options, p, "hand_state_topic", self._hand_topic(v), DEX3_STATE_TOPIC),
         )
+
+    @staticmethod
+    def _hand_topic(v: Validator) -> Any:
+        """A hand topic pattern: "{side}" stands for left and right, and each must be a topic name."""
+        def read(raw: Any, path: str) -> str:
+            pattern = v.string(raw, path)
+            fix = "e.g. rt/dex3/{side}/cmd"
+            if pattern.count("{side}") != 1:
+                raise v.error(path, f"{pattern!r} must contain {{side}} once (it stands for left and right)", fix=fix)
+            if not TOPIC_RE.match(pattern.replace("{side}", "left")):
+                raise v.error(path, f"{pattern!r} is not a ROS topic name once {{side}} is left or right (letters, "
+                              "digits, _ and / separators)", fix=fix)
+            return pattern
+        return read
+
+    def resolve_hands(self, v: Validator, hands: str, options: TransportOptions, *, vendor: str,
+                      robot: str) -> UnitreeDdsOptions:
+        """dex3: the hand motors become slots 35..48 (resolve_options then checks the family and motor_count)."""
+        assert isinstance(options, UnitreeDdsOptions)
+        p = "transport_options"
+        hand_keys = [k for k in ("hand_command_topic", "hand_state_topic") if f"{p}.{k}" in v.lines]
+        if hands == "none" and hand_keys:
+            raise v.error(f"{p}.{hand_keys[0]}", "is a hand option, used only with hands: dex3",
+                          fix=f"remove {hand_keys[0]}, or set hands: dex3")
+        return replace(options, hands=hands)
+
+    def check_hand_map(self, v: Validator, options: TransportOptions,
+                       joint_map: tuple[tuple[str, int], ...]) -> None:
+        """Every Dex3-1 motor drives a joint: a HandCmd_ carries all 7 of a hand, and an unmapped one would be
+        commanded to 0 with zero gains forever."""
+        assert isinstance(options, UnitreeDdsOptions)
+        mapped = {slot for _, slot in joint_map}
+        missing = [slot for slot in options.hand_slots() if slot not in mapped]
+        if missing:
+            side = DEX3_SIDES[(missing[0] - DEX3_FIRST_SLOT) // len(DEX3_ORDER)]
+            motor = DEX3_ORDER[(missing[0] - DEX3_FIRST_SLOT) % len(DEX3_ORDER)]
+            last = DEX3_FIRST_SLOT + DEX3_MOTORS - 1
+            raise v.error("joint_map", f"hands: dex3 drives slots {DEX3_FIRST_SLOT}..{last}, and no joint has "
+                          f"slot {missing[0]} (the {side} hand's {motor} motor)",
+                          fix=f"map {side}_hand_{motor}_joint: {missing[0]} (left hand 35..41, right 42..48, "
+                              f"in the order {', '.join(DEX3_ORDER)})")
 
     @staticmethod
     def _ramp_seconds(v: Validator) -> Any:
@@ -269,7 +343,16 @@ class UnitreeDds(Transport):
         if options.sdk_slots not in (0, slots):
             raise v.error(f"{p}.sdk_slots", f"unitree {family} messages have exactly {slots} motor slots, "
                           f"not {options.sdk_slots}", fix=f"remove sdk_slots or set it to {slots}")
-        if motor_count > slots:
+        if options.hands == "dex3":
+            if family != "hg":
+                raise v.error("hands", f"the Dex3-1 hands speak hg messages ({FAMILY_ROBOTS['hg']}); "
+                              f"{vendor}/{robot} speaks {family}", fix="remove hands (the default is none)")
+            if motor_count != DEX3_FIRST_SLOT + DEX3_MOTORS:
+                raise v.error("motor_count", f"with hands: dex3 the hand motors take slots {DEX3_FIRST_SLOT}.."
+                              f"{DEX3_FIRST_SLOT + DEX3_MOTORS - 1} after the {slots} of a LowCmd_, so "
+                              f"motor_count is {DEX3_FIRST_SLOT + DEX3_MOTORS}, not {motor_count}",
+                              fix=f"set motor_count: {DEX3_FIRST_SLOT + DEX3_MOTORS}")
+        elif motor_count > slots:
             raise ConfigError(f"motor_count {motor_count} exceeds the {slots} motor slots of the unitree {family} "
                               "LowCmd_", file=v.source, line=v.lines.get("motor_count"), key="motor_count",
                               fix=f"use at most {slots} motors, or check transport_options.family")

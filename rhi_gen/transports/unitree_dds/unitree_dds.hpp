@@ -19,6 +19,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <rclcpp/logging.hpp>
 #include <rclcpp/node.hpp>
@@ -49,20 +50,43 @@ struct UnitreeDdsOptions
   bool verify_state_crc;        // drop LowState_ frames whose crc does not match
 };
 
-template<size_t N, typename T, typename Family>
+// A robot without hands that travel on their own topics (the default `Hands` of the transport).
+template<size_t N, typename T>
+struct UnitreeNoHands
+{
+  struct Options {};
+  static constexpr size_t kSlots = 0;
+
+  explicit UnitreeNoHands(const Options * /*options*/) {}
+  void configure(DriverCore<N, T> & /*core*/) {}
+  void start() {}
+  void shutdown() {}
+  bool merge(
+    typename DriverCore<N, T>::State & /*state*/, MotorHealthFrame<N> * /*health*/,
+    int64_t & /*oldest_ns*/)
+  {
+    return true;
+  }
+  void write(const typename DriverCore<N, T>::Command & /*cmd*/) {}
+};
+
+// `Hands`: the hands on their own topics after the LowCmd_ slots (UnitreeDex3Hands), if any.
+template<size_t N, typename T, typename Family, typename Hands = UnitreeNoHands<N, T>>
 class UnitreeDdsTransport final : public DriverTransport<N, T>
 {
   using LowCmd = typename Family::LowCmd;
   using LowState = typename Family::LowState;
-  static_assert(N <= Family::kMotorSlots, "more motors than LowCmd_ slots");
+  static_assert(N <= Family::kMotorSlots + Hands::kSlots, "more motors than LowCmd_ slots");
 
   static constexpr int64_t kStateQueueLength = 1;  // only the newest LowState_ matters
 
 public:
   // `arm_sdk`: authority upper_body (the arm SDK), nullptr: the whole robot on lowcmd_topic.
+  // `hands`: the options of `Hands` (nullptr without hands).
   explicit UnitreeDdsTransport(
-    const UnitreeDdsOptions & options, const UnitreeArmSdkOptions * arm_sdk = nullptr)
-  : options_(options), arm_sdk_(arm_sdk)
+    const UnitreeDdsOptions & options, const UnitreeArmSdkOptions * arm_sdk = nullptr,
+    const typename Hands::Options * hands = nullptr)
+  : options_(options), arm_sdk_(arm_sdk), hands_(hands)
   {
   }
 
@@ -75,10 +99,22 @@ public:
     const std::string & network_interface = core.parameters().network_interface;
     // One DDS participant per process, bound to the robot's network interface.
     ::unitree::robot::ChannelFactory::Instance()->Init(options_.domain_id, network_interface);
+    // The LowCmd_ / LowState_ slots: the mapped ones before the hands' (which travel on their own).
+    body_mapped_.clear();
+    body_commanded_.clear();
+    for (const size_t slot : core.slots().mapped_slots()) {
+      if (slot < Family::kMotorSlots) {
+        body_mapped_.push_back(slot);
+      }
+    }
+    for (const size_t slot : core.slots().commanded_slots()) {
+      if (slot < Family::kMotorSlots) {
+        body_commanded_.push_back(slot);
+      }
+    }
     // The command message is reused for every send: fill the constant parts once. Only commanded
     // slots are enabled: under the arm SDK the legs' slots stay all zero.
-    Family::init_command(
-      low_cmd_, core.slots().commanded_slots(), options_.mode_pr, options_.motor_modes);
+    Family::init_command(low_cmd_, body_commanded_, options_.mode_pr, options_.motor_modes);
     const char * command_topic = arm_sdk_ != nullptr ? arm_sdk_->topic : options_.lowcmd_topic;
     if (arm_sdk_ != nullptr) {  // hg messages (the vendor YAML's validation)
       blend_ = BlendWeight(arm_sdk_->ramp_s, core.parameters().command_writer_period_us);
@@ -91,6 +127,7 @@ public:
     subscriber_->InitChannel(
       [this](const void * message) {on_low_state(*static_cast<const LowState *>(message));},
       kStateQueueLength);
+    hands_.configure(core);  // on the same DDS participant
     RCLCPP_INFO(
       core.logger(), "unitree_sdk2 DDS (%s messages) on '%s', domain %d: publishing %s, "
       "subscribed to %s", Family::kName, network_interface.c_str(),
@@ -103,6 +140,7 @@ public:
     if (options_.release_motion_control && !release_motion_control()) {
       return false;
     }
+    hands_.start();
     if (arm_sdk_ != nullptr) {
       blend_.reset();
       RCLCPP_INFO(
@@ -142,6 +180,7 @@ public:
       if (publisher_) {
         publisher_->CloseChannel();
       }
+      hands_.shutdown();
     } catch (const std::exception & e) {
       RCLCPP_ERROR(core_->logger(), "shutting down unitree_sdk2 channels failed: %s", e.what());
     }
@@ -169,7 +208,7 @@ private:
     }
     auto & state = core_->state_frame();
     const auto & motors = low_state.motor_state();
-    for (const size_t slot : core_->slots().mapped_slots()) {
+    for (const size_t slot : body_mapped_) {
       const auto & motor = motors[slot];
       if (!all_finite(motor.q(), motor.dq(), motor.tau_est())) {
         const uint64_t dropped = core_->reject_state();
@@ -187,14 +226,21 @@ private:
       publish_imu(low_state.imu_state());
     }
     const int64_t now_ns = steady_ns(start);
-    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_->motor_health_due(now_ns))) {
+    const bool health_due = core_->motor_health_due(now_ns);
+    // The hands' newest states: the state is as old as its oldest stream, and complete only once
+    // every hand has reported in this activation.
+    int64_t state_time_ns = now_ns;
+    if (!hands_.merge(state, health_due ? &core_->motor_health_frame() : nullptr, state_time_ns)) {
+      return;
+    }
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(health_due)) {
       auto & health = core_->motor_health_frame();
-      for (const size_t slot : core_->slots().mapped_slots()) {
+      for (const size_t slot : body_mapped_) {
         Family::read_motor_health(motors[slot], health, slot);
       }
       core_->publish_motor_health(now_ns);
     }
-    core_->publish_state(now_ns);
+    core_->publish_state(state_time_ns);
     core_->monitor().check_state_latency(start);
   }
 
@@ -238,10 +284,10 @@ private:
       // Towards 1 only while the controllers drive the upper body: never on a hold, never while
       // no controller commands it (the arms would fall).
       const bool engage = !core_->command_is_hold() &&
-        BlendWeight::drives_any(*cmd, core_->slots().commanded_slots());
+        BlendWeight::drives_any(*cmd, body_commanded_);
       set_blend_weight(blend_.next(engage));
     }
-    for (const size_t slot : core_->slots().commanded_slots()) {
+    for (const size_t slot : body_commanded_) {
       auto & motor = low_cmd_.motor_cmd()[slot];
       motor.q() = static_cast<float>(cmd->q_target[slot]);
       motor.dq() = static_cast<float>(cmd->dq_target[slot]);
@@ -251,6 +297,7 @@ private:
     }
     low_cmd_.crc() = Family::command_crc(low_cmd_);
     publisher_->Write(low_cmd_);
+    hands_.write(*cmd);
     core_->monitor().check_writer_latency(start);
   }
 
@@ -320,6 +367,9 @@ private:
 
   const UnitreeDdsOptions options_;
   const UnitreeArmSdkOptions * const arm_sdk_;  // nullptr: the whole robot on lowcmd_topic
+  Hands hands_;  // the hands on their own topics (none by default)
+  std::vector<size_t> body_mapped_;     // mapped slots of LowCmd_ / LowState_ (configure())
+  std::vector<size_t> body_commanded_;  // commanded slots of LowCmd_ (configure())
   BlendWeight blend_;  // arm SDK: writer thread, then stop() once the writer has stopped
   DriverCore<N, T> * core_{nullptr};
   LowCmd low_cmd_;  // writer thread: the message sent (constant parts filled in configure())

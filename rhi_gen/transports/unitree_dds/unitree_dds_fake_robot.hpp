@@ -31,6 +31,7 @@
 
 #include "robot_hardware_interface/common/fake_robot.hpp"
 #include "robot_hardware_interface/transport/unitree_dds.hpp"
+#include "robot_hardware_interface/transport/unitree_dex3.hpp"
 #include "robot_hardware_interface/transport/unitree_go.hpp"
 #include "robot_hardware_interface/transport/unitree_hg.hpp"
 
@@ -115,19 +116,145 @@ struct FakeBalanceController
   }
 };
 
-template<size_t N, typename Family>
+// A fake robot without hands on their own topics (the default `Hands` of UnitreeDdsFakeRobot).
+template<size_t N>
+struct UnitreeNoFakeHands
+{
+  using Options = typename UnitreeNoHands<N, float>::Options;
+  static constexpr size_t kSlots = 0;
+
+  explicit UnitreeNoFakeHands(const Options * /*options*/) {}
+  void configure() {}
+  void close() {}
+  void take_commands(FakeRobotModel<N> & /*model*/) {}
+  void publish(const FakeRobotModel<N> & /*model*/) {}
+};
+
+// The Dex3-1 hands' side (hands: dex3): HandCmd_ in per hand (a motor runs only when its mode
+// byte carries its own id and status 1 without the timeout bit, as the hand's firmware addresses
+// it; otherwise it is passive), HandState_ out per hand with 7 motors and 9 pressure sensors.
+template<size_t N>
+class UnitreeDex3FakeHands
+{
+  using HandCmd = unitree_dex3::HandCmd;
+  using HandState = unitree_dex3::HandState;
+  static constexpr size_t kMotors = unitree_dex3::kMotorsPerHand;
+  static constexpr size_t kPressureSensors = 9;  // SENSOR_MAX of unitree_sdk2's g1_dex3_example
+
+public:
+  using Options = UnitreeDex3Options;
+  static constexpr size_t kSlots = unitree_dex3::kHands * kMotors;
+
+  explicit UnitreeDex3FakeHands(const Options * options)
+  : options_(*options)
+  {
+  }
+
+  // After ChannelFactory::Init.
+  void configure()
+  {
+    for (size_t side = 0; side < unitree_dex3::kHands; ++side) {
+      HandState & state = states_[side];
+      state.motor_state().resize(kMotors);
+      state.press_sensor_state().resize(kPressureSensors);
+      state.imu_state().quaternion()[0] = 1.0F;
+      state.power_v() = UnitreeFakeFields::kHgSupplyVolts;
+      publishers_[side] = std::make_shared<::unitree::robot::ChannelPublisher<HandState>>(
+        options_.state_topics[side]);
+      publishers_[side]->InitChannel();
+      subscribers_[side] = std::make_shared<::unitree::robot::ChannelSubscriber<HandCmd>>(
+        options_.command_topics[side]);
+      subscribers_[side]->InitChannel(
+        [this, side](const void * message) {
+          on_hand_cmd(side, *static_cast<const HandCmd *>(message));
+        }, 1);
+    }
+  }
+
+  // Before the members the SDK's threads use go.
+  void close()
+  {
+    for (auto & subscriber : subscribers_) {
+      if (subscriber) {
+        subscriber->CloseChannel();
+      }
+    }
+  }
+
+  void take_commands(FakeRobotModel<N> & model)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!pending_) {
+      return;
+    }
+    pending_ = false;
+    for (size_t k = 0; k < kSlots; ++k) {
+      model.dynamics.command(unitree_dex3::kFirstSlot + k, commands_[k]);
+    }
+  }
+
+  void publish(const FakeRobotModel<N> & model)
+  {
+    for (size_t side = 0; side < unitree_dex3::kHands; ++side) {
+      auto & motors = states_[side].motor_state();
+      for (size_t id = 0; id < kMotors; ++id) {
+        const size_t slot = unitree_dex3::first_slot(side) + id;
+        auto & motor = motors[id];
+        motor.mode() = unitree_dex3::motor_mode(id);
+        motor.q() = static_cast<float>(model.dynamics.position(slot));
+        motor.dq() = static_cast<float>(model.dynamics.velocity(slot));
+        motor.tau_est() = static_cast<float>(model.dynamics.effort(slot));
+        UnitreeFakeFields::write_health(motor, model.temperature[slot], model.error_code[slot]);
+      }
+      publishers_[side]->Write(states_[side]);
+    }
+  }
+
+private:
+  void on_hand_cmd(size_t side, const HandCmd & cmd)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto & motors = cmd.motor_cmd();
+    for (size_t id = 0; id < kMotors; ++id) {
+      FakeMotorCommand & command = commands_[side * kMotors + id];
+      if (id >= motors.size() || motors[id].mode() != unitree_dex3::motor_mode(id)) {
+        command = FakeMotorCommand{};  // not addressed to this motor, or stopped: passive
+        continue;
+      }
+      const auto & motor = motors[id];
+      command = FakeMotorCommand{
+        static_cast<double>(motor.q()), static_cast<double>(motor.dq()),
+        static_cast<double>(motor.tau()), static_cast<double>(motor.kp()),
+        static_cast<double>(motor.kd())};
+    }
+    pending_ = true;
+  }
+
+  const Options options_;
+  std::array<HandState, unitree_dex3::kHands> states_;  // loop thread (sized in configure())
+  std::array<::unitree::robot::ChannelPublisherPtr<HandState>, unitree_dex3::kHands> publishers_;
+  std::array<::unitree::robot::ChannelSubscriberPtr<HandCmd>, unitree_dex3::kHands> subscribers_;
+  std::mutex mutex_;  // commands_, pending_: the SDK's threads and the loop
+  std::array<FakeMotorCommand, kSlots> commands_{};
+  bool pending_{false};
+};
+
+template<size_t N, typename Family, typename Hands = UnitreeNoFakeHands<N>>
 class UnitreeDdsFakeRobot final : public FakeRobotTransport<N>
 {
   using LowCmd = typename Family::LowCmd;
   using LowState = typename Family::LowState;
-  static_assert(N <= Family::kMotorSlots, "more motors than LowState_ slots");
+  static_assert(N <= Family::kMotorSlots + Hands::kSlots, "more motors than LowState_ slots");
+  static constexpr size_t kBodySlots = N < Family::kMotorSlots ? N : Family::kMotorSlots;
 
 public:
   // `arm_sdk`: authority upper_body (the driver speaks the arm SDK, the fake robot also plays the
   // robot's balance controller), nullptr: the driver commands every motor on lowcmd_topic.
+  // `hands`: the options of `Hands` (nullptr without hands).
   explicit UnitreeDdsFakeRobot(
-    const UnitreeDdsOptions & options, const UnitreeArmSdkOptions * arm_sdk = nullptr)
-  : options_(options), arm_sdk_(arm_sdk)
+    const UnitreeDdsOptions & options, const UnitreeArmSdkOptions * arm_sdk = nullptr,
+    const typename Hands::Options * hands = nullptr)
+  : options_(options), arm_sdk_(arm_sdk), hands_(hands)
   {
   }
 
@@ -138,6 +265,7 @@ public:
     if (subscriber_) {
       subscriber_->CloseChannel();
     }
+    hands_.close();
   }
 
   const char * name() const override {return "unitree_dds";}
@@ -160,7 +288,7 @@ public:
       std::lock_guard<std::mutex> lock(mutex_);
       const FakeJointSpec * joints = model.dynamics.joints();
       for (size_t k = 0; k < model.dynamics.joint_count(); ++k) {
-        if (joints[k].slot < N) {
+        if (joints[k].slot < kBodySlots) {
           holds_[joints[k].slot] = FakeBalanceController::hold(joints[k]);
         }
       }
@@ -186,23 +314,25 @@ public:
       arm_sdk_ != nullptr ? arm_sdk_->topic : options_.lowcmd_topic);
     subscriber_->InitChannel(
       [this](const void * message) {on_low_cmd(*static_cast<const LowCmd *>(message));}, 1);
+    hands_.configure();
   }
 
   void take_commands(FakeRobotModel<N> & model) override
   {
+    hands_.take_commands(model);
     std::lock_guard<std::mutex> lock(mutex_);
     if (!pending_) {
       return;
     }
     pending_ = false;
-    for (size_t slot = 0; slot < N; ++slot) {
+    for (size_t slot = 0; slot < kBodySlots; ++slot) {
       model.dynamics.command(slot, commands_[slot]);
     }
   }
 
   void placed(size_t slot, double q) override
   {
-    if (arm_sdk_ == nullptr || slot >= N) {
+    if (arm_sdk_ == nullptr || slot >= kBodySlots) {
       return;
     }
     std::lock_guard<std::mutex> lock(mutex_);
@@ -214,7 +344,7 @@ public:
   void publish(const FakeRobotModel<N> & model) override
   {
     const auto & joints = model.dynamics;
-    for (size_t slot = 0; slot < N; ++slot) {
+    for (size_t slot = 0; slot < kBodySlots; ++slot) {
       auto & motor = state_.motor_state()[slot];
       motor.q() = static_cast<float>(joints.position(slot));
       motor.dq() = static_cast<float>(joints.velocity(slot));
@@ -224,6 +354,7 @@ public:
     state_.tick() = static_cast<uint32_t>(model.steps * 2U);  // ms at 500 Hz
     state_.crc() = Family::state_crc(state_) ^ (model.faults.corrupt ? 1U : 0U);
     publisher_->Write(state_);
+    hands_.publish(model);
   }
 
   // Commands dropped for a wrong CRC (tests).
@@ -245,7 +376,7 @@ private:
     }
     const double weight = arm_sdk_ != nullptr ?
       static_cast<double>(cmd.motor_cmd()[arm_sdk_->weight_slot].q()) : 1.0;
-    for (size_t slot = 0; slot < N; ++slot) {
+    for (size_t slot = 0; slot < kBodySlots; ++slot) {
       const auto & motor = cmd.motor_cmd()[slot];
       const FakeMotorCommand sdk{
         static_cast<double>(motor.q()), static_cast<double>(motor.dq()),
@@ -263,14 +394,15 @@ private:
 
   const UnitreeDdsOptions options_;
   const UnitreeArmSdkOptions * const arm_sdk_;  // nullptr: no balance controller to play
+  Hands hands_;  // the hands on their own topics (none by default)
   std::string network_interface_{"lo"};
   LowState state_;  // the constant parts filled once: no allocation per step
   ::unitree::robot::ChannelPublisherPtr<LowState> publisher_;
   ::unitree::robot::ChannelSubscriberPtr<LowCmd> subscriber_;
   // commands_, holds_, pending_, bad_crc_commands_: SDK thread and loop
   mutable std::mutex mutex_;
-  std::array<FakeMotorCommand, N> commands_{};
-  std::array<FakeMotorCommand, N> holds_{};  // arm SDK: the robot's own controller, per motor
+  std::array<FakeMotorCommand, kBodySlots> commands_{};
+  std::array<FakeMotorCommand, kBodySlots> holds_{};  // arm SDK: the robot's own controller
   bool pending_{false};
   uint64_t bad_crc_commands_{0};
 };

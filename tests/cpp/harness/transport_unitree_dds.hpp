@@ -4,6 +4,7 @@
 // fake (transport_unitree_go.hpp, selected by RHI_UNITREE_FAMILY_GO) with the same interface.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <random>
@@ -13,6 +14,10 @@
 
 #include <unitree/idl/hg/LowCmd_.hpp>
 #include <unitree/idl/hg/LowState_.hpp>
+#if defined(RHI_DEX3)
+#include <unitree/idl/hg/HandCmd_.hpp>
+#include <unitree/idl/hg/HandState_.hpp>
+#endif
 
 #include "check.hpp"
 #include "crc_checks.hpp"
@@ -40,7 +45,21 @@ public:
   static constexpr bool kHasGains = true;
   static constexpr bool kEchoesModeMachine = true;  // LowCmd_.mode_machine echoes LowState_'s
   static constexpr size_t kSdkSlots = 35;
-  static_assert(N <= kSdkSlots, "more motors than LowCmd_ slots");
+#if defined(RHI_DEX3)
+  // hands: dex3, each hand's 7 motors on its own HandCmd_ / HandState_ after the LowCmd_ slots
+  // (the harness's own reading of unitree_sdk2's g1_dex3_example: left 35..41, right 42..48)
+  using HandCmd = unitree_hg::msg::dds_::HandCmd_;
+  using HandState = unitree_hg::msg::dds_::HandState_;
+  static constexpr size_t kHandMotors = 7;
+  static constexpr size_t kHandSlots = 2 * kHandMotors;
+  static constexpr size_t hand_slot(size_t side, size_t id) { return kSdkSlots + side * kHandMotors + id; }
+  // MotorCmd_.mode of hand motor `id`: id | status 1 << 4, timeout bit 0
+  static constexpr uint8_t hand_mode(size_t id) { return static_cast<uint8_t>(id | (1U << 4)); }
+#else
+  static constexpr size_t kHandSlots = 0;
+#endif
+  static constexpr size_t kBodySlots = N < kSdkSlots ? N : kSdkSlots;
+  static_assert(N <= kSdkSlots + kHandSlots, "more motors than LowCmd_ slots");
 
   // Fill the member LowState_ (no allocation): padding bytes garbage, every field non-zero, so a
   // CRC that skips any field, or hashes the padding, disagrees with the reference.
@@ -62,6 +81,9 @@ public:
       imu.rpy()[i] = 0.0625F * static_cast<float>(i + 1);
     }
     imu.temperature() = 37;
+#if defined(RHI_DEX3)
+    prepare_hands(f);
+#endif
     for (size_t i = 0; i < kSdkSlots; ++i) {
       auto& ms = m.motor_state()[i];
       ms.mode() = 1;
@@ -99,7 +121,59 @@ public:
   }
 
   LowState& prepared() { return state_msg_; }
-  size_t deliver_prepared() { return rhi_fake::unitree::deliver<LowState>(kStateTopic, state_msg_); }
+  // The hands' states first (when the robot has hands), then the body's, which carries them to read().
+  size_t deliver_prepared() {
+#if defined(RHI_DEX3)
+    for (size_t side = 0; side < 2; ++side) {
+      rhi_fake::unitree::deliver<HandState>(rhi_data::kHandStateTopics[side], hand_state_msgs_[side]);
+    }
+#endif
+    return rhi_fake::unitree::deliver<LowState>(kStateTopic, state_msg_);
+  }
+#if defined(RHI_DEX3)
+  // Each hand's HandState_ from the frame's hand slots: 7 motors, 9 pressure sensors (SENSOR_MAX of
+  // the SDK example), every other field non-zero.
+  void prepare_hands(const StateFrame& f) {
+    for (size_t side = 0; side < 2; ++side) {
+      HandState& h = hand_state_msgs_[side];
+      h.motor_state().resize(kHandMotors);
+      h.press_sensor_state().resize(9);
+      for (size_t id = 0; id < kHandMotors; ++id) {
+        const size_t slot = hand_slot(side, id);
+        auto& ms = h.motor_state()[id];
+        ms.mode() = hand_mode(id);
+        ms.q() = static_cast<float>(f.q[slot]);
+        ms.dq() = static_cast<float>(f.dq[slot]);
+        ms.tau_est() = static_cast<float>(f.tau[slot]);
+        ms.ddq() = 0.25F;
+        ms.temperature()[0] = static_cast<int16_t>(f.temperature[slot]);
+        ms.temperature()[1] = 21;
+        ms.vol() = static_cast<float>(f.voltage[slot]);
+        ms.motorstate() = static_cast<uint32_t>(f.error_code[slot]);
+      }
+      for (auto& sensor : h.press_sensor_state()) {
+        sensor.pressure().fill(1.5F);
+        sensor.temperature().fill(30.0F);
+      }
+      h.imu_state().quaternion()[0] = 1.0F;
+      h.power_v() = 24.0F;
+      h.power_a() = 0.5F;
+      h.system_v() = 24.0F;
+      h.device_v() = 5.0F;
+    }
+  }
+  HandState& prepared_hand(size_t side) { return hand_state_msgs_[side]; }
+  size_t deliver_prepared_hand(size_t side) {
+    return rhi_fake::unitree::deliver<HandState>(rhi_data::kHandStateTopics[side], hand_state_msgs_[side]);
+  }
+  // The last HandCmd_ hand `side` received (false before the first).
+  bool last_hand_command(size_t side, HandCmd& out) const {
+    return rhi_fake::unitree::last_written<HandCmd>(rhi_data::kHandCommandTopics[side], out);
+  }
+  uint64_t sent_hand_messages(size_t side) const {
+    return rhi_fake::unitree::write_count(rhi_data::kHandCommandTopics[side]);
+  }
+#endif
   size_t deliver_state(const StateFrame& f) {
     prepare_state(f);
     return deliver_prepared();
@@ -126,7 +200,7 @@ public:
       return false;
     }
     out.has_gains = true;
-    for (size_t i = 0; i < N; ++i) {
+    for (size_t i = 0; i < kBodySlots; ++i) {
       const auto& mc = cmd_msg_.motor_cmd()[i];
       out.q[i] = mc.q();
       out.dq[i] = mc.dq();
@@ -135,6 +209,23 @@ public:
       out.kd[i] = mc.kd();
       out.present[i] = true;
     }
+#if defined(RHI_DEX3)
+    for (size_t side = 0; side < 2; ++side) {
+      if (!last_hand_command(side, hand_cmd_msgs_[side]) || hand_cmd_msgs_[side].motor_cmd().size() != kHandMotors) {
+        return false;
+      }
+      for (size_t id = 0; id < kHandMotors; ++id) {
+        const auto& mc = hand_cmd_msgs_[side].motor_cmd()[id];
+        const size_t slot = hand_slot(side, id);
+        out.q[slot] = mc.q();
+        out.dq[slot] = mc.dq();
+        out.tau[slot] = mc.tau();
+        out.kp[slot] = mc.kp();
+        out.kd[slot] = mc.kd();
+        out.present[slot] = true;
+      }
+    }
+#endif
     return true;
   }
   // The last LowCmd_ the robot received (fetched again on every call).
@@ -160,6 +251,19 @@ public:
         CHECK(zero, "LowCmd_.motor_cmd[%zu] of an unused slot is all zero", slot);
       }
     }
+#if defined(RHI_DEX3)
+    // Each HandCmd_: 7 motors, motor i's mode = i | status 1 << 4 (timeout bit clear), reserve 0.
+    for (size_t side = 0; side < 2; ++side) {
+      CHECK(last_hand_command(side, hand_cmd_msgs_[side]), "hand %zu received a HandCmd_", side);
+      const HandCmd& hand = hand_cmd_msgs_[side];
+      CHECK_EQ(hand.motor_cmd().size(), kHandMotors, "HandCmd_ %zu carries the hand's 7 motors", side);
+      for (size_t id = 0; id < hand.motor_cmd().size() && id < kHandMotors; ++id) {
+        CHECK_EQ(hand.motor_cmd()[id].mode(), hand_mode(id), "HandCmd_ %zu motor %zu mode byte", side, id);
+        CHECK_EQ(hand.motor_cmd()[id].reserve(), 0U, "HandCmd_ %zu motor %zu reserve", side, id);
+      }
+      CHECK(hand.reserve()[0] == 0U && hand.reserve()[3] == 0U, "HandCmd_ %zu reserve is zero", side);
+    }
+#endif
   }
 
   // Fields changed after the CRC was computed (one per field class): the driver must drop the frame.
@@ -167,7 +271,7 @@ public:
     return {
         {"tick", [](LowState& m) { m.tick() += 1; }},
         {"motor_state[0].q", [](LowState& m) { m.motor_state()[0].q() += 0.25F; }},
-        {"motor_state[N-1].tau_est", [](LowState& m) { m.motor_state()[N - 1].tau_est() += 1.0F; }},
+        {"motor_state[N-1].tau_est", [](LowState& m) { m.motor_state()[kBodySlots - 1].tau_est() += 1.0F; }},
         {"motor_state[34].reserve[3]", [](LowState& m) { m.motor_state()[34].reserve()[3] ^= 1U; }},
         {"imu_state.quaternion[0]", [](LowState& m) { m.imu_state().quaternion()[0] = 0.0F; }},
         {"wireless_remote[39]", [](LowState& m) { m.wireless_remote()[39] ^= 1U; }},
@@ -191,6 +295,10 @@ public:
 private:
   LowState state_msg_{};
   LowCmd cmd_msg_{};
+#if defined(RHI_DEX3)
+  std::array<HandState, 2> hand_state_msgs_{};
+  std::array<HandCmd, 2> hand_cmd_msgs_{};
+#endif
 };
 
 // Section crc (no driver): the reference reproduces SDK_FACTS.md's hg vectors, the generated

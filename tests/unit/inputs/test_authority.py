@@ -10,7 +10,6 @@ from pathlib import Path
 
 import pytest
 
-from rhi_gen.assemble.robot_model import build_model
 from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.urdf_loader import load_urdf
 from rhi_gen.inputs.vendor_config import load_config
@@ -18,6 +17,7 @@ from rhi_gen.render.cpp_layout import fold_cpp
 from rhi_gen.render.fake_robot_views import has_fake_robot
 from rhi_gen.render.views import controllers_view
 from rhi_gen.transports.unitree_dds import ARM_SDK_TOPIC, ARM_SDK_WEIGHT_SLOT, UnitreeDdsOptions
+from tests.support.models import model_of_yaml
 from tests.support.repo import REPO
 
 G1_YAML = (REPO / "robots/unitree/g1.yaml").read_text(encoding="utf-8")
@@ -38,13 +38,10 @@ def g1_yaml(tmp_path: Path, *, head: str = "authority: upper_body\n", options: s
     return path
 
 
-def model_of(path: Path):
-    config = load_config(path)
-    return build_model(config, load_urdf(config.urdf), project_root=path.parent, yaml_path=path)
 
 
 def test_upper_body_g1_commands_exactly_the_arm_sdk_joints(tmp_path):
-    model = model_of(g1_yaml(tmp_path))
+    model = model_of_yaml(g1_yaml(tmp_path))
     assert model.authority == "upper_body"
     assert {j.name for j in model.commanded_joints} == ARM_SDK_JOINTS
     legs = [j for j in model.joints if j.command_mode == "state"]
@@ -61,9 +58,10 @@ def test_upper_body_g1_commands_exactly_the_arm_sdk_joints(tmp_path):
 
 
 def test_full_authority_keeps_every_joint_commanded(tmp_path):
-    model = model_of(g1_yaml(tmp_path, head=""))
+    model = model_of_yaml(g1_yaml(tmp_path, head=""))
     assert model.authority == "full" and len(model.commanded_joints) == 29
-    assert not model.transport_options.upper_body
+    options = model.transport_options
+    assert isinstance(options, UnitreeDdsOptions) and not options.upper_body
 
 
 def test_options_are_read(tmp_path):
@@ -134,4 +132,4 @@ def test_new_writes_a_g1_yaml_that_loads_with_full_authority(tmp_path):
     path.write_text(text, encoding="utf-8")
     assert "authority: full" in text.splitlines() and load_config(path).authority == "full"
     path.write_text(text.replace("authority: full", "authority: upper_body"), encoding="utf-8")
-    assert model_of(path).authority == "upper_body"
+    assert model_of_yaml(path).authority == "upper_body"

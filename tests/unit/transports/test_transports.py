@@ -36,8 +36,10 @@ def test_every_transport_has_its_templates(name):
 
 
 # Options that apply to one message family only: a robot of the other family is not offered them.
-# Options `new` leaves out: the other family's, and the arm SDK's (authority upper_body only).
-FAMILY_SPECIFIC = {"unitree_dds": {"mode_pr", "motor_modes", "arm_sdk_topic", "arm_sdk_weight_slot", "arm_sdk_ramp_s"}}
+# Options `new` leaves out: the other family's, the arm SDK's (authority upper_body only) and the hands' (hands:
+# dex3 only).
+FAMILY_SPECIFIC = {"unitree_dds": {"mode_pr", "motor_modes", "arm_sdk_topic", "arm_sdk_weight_slot", "arm_sdk_ramp_s",
+                                   "hand_command_topic", "hand_state_topic"}}
 SUGGESTION_CASES = [(name, known) for name in transports.NAMES
                     for known in (None, *transports.get(name).known_robots)]
 

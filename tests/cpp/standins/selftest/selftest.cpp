@@ -52,11 +52,14 @@
 #include <std_msgs/msg/header.hpp>
 #include <unitree/common/thread/recurrent_thread.hpp>
 #include <unitree/common/thread/thread.hpp>
+#include <unitree/idl/hg/HandCmd_.hpp>
+#include <unitree/idl/hg/HandState_.hpp>
 #include <unitree/idl/hg/IMUState_.hpp>
 #include <unitree/idl/hg/LowCmd_.hpp>
 #include <unitree/idl/hg/LowState_.hpp>
 #include <unitree/idl/hg/MotorCmd_.hpp>
 #include <unitree/idl/hg/MotorState_.hpp>
+#include <unitree/idl/hg/PressSensorState_.hpp>
 #include <unitree/idl/go2/BmsCmd_.hpp>
 #include <unitree/idl/go2/BmsState_.hpp>
 #include <unitree/idl/go2/IMUState_.hpp>
@@ -785,6 +788,17 @@ static void test_unitree()
   MotorCmd_ mc(1, 0.5f, 0.0f, 0.0f, 10.0f, 1.0f, 0u);
   CHECK(mc.mode() == 1 && mc.q() == 0.5f && mc.kd() == 1.0f && mc.dq() == 0.0f && mc.tau() == 0.0f && mc.reserve() == 0u);
   CHECK(LowCmd_() == LowCmd_() && cmd != LowCmd_());
+  // Dex3-1 hand messages: IDL sequences (empty until sized), no crc
+  static_assert(sizeof(PressSensorState_) == 104, "PressSensorState_");
+  HandCmd_ hand_cmd;
+  CHECK(hand_cmd.motor_cmd().empty() && hand_cmd.reserve().size() == 4);
+  hand_cmd.motor_cmd().resize(7);
+  hand_cmd.motor_cmd()[6].mode() = 0x16;
+  HandState_ hand_state;
+  CHECK(hand_state.motor_state().empty() && hand_state.press_sensor_state().empty() && hand_state.error().size() == 2);
+  hand_state.press_sensor_state().resize(9);
+  CHECK(hand_state.press_sensor_state()[8].pressure().size() == 12 && hand_state.power_v() == 0.0f);
+  CHECK(hand_cmd != HandCmd_() && hand_cmd.motor_cmd()[6].mode() == 0x16);
 
   // channels before ChannelFactory::Init: Write false, InitChannel throws (the SDK would crash)
   unitree::robot::ChannelPublisher<LowCmd_> early("rt/lowcmd");

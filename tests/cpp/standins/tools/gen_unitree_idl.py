@@ -39,6 +39,17 @@ HG_TYPES = {
                    (f"std::array<{NS}MotorState_, 35>", "motor_state"),
                    ("std::array<uint8_t, 40>", "wireless_remote"), ("std::array<uint32_t, 4>", "reserve"),
                    ("uint32_t", "crc")], ["IMUState_", "MotorState_"], 2092),
+    # Dex3-1 hands (unitree_sdk2 include/unitree/idl/hg/HandCmd_.hpp, HandState_.hpp, PressSensorState_.hpp):
+    # IDL sequences (std::vector), no crc; size None = no fixed layout.
+    "PressSensorState_": ([("std::array<float, 12>", "pressure"), ("std::array<float, 12>", "temperature"),
+                           ("uint32_t", "lost"), ("uint32_t", "reserve")], [], 104),
+    "HandCmd_": ([(f"std::vector<{NS}MotorCmd_>", "motor_cmd"), ("std::array<uint32_t, 4>", "reserve")],
+                 ["MotorCmd_"], None),
+    "HandState_": ([(f"std::vector<{NS}MotorState_>", "motor_state"),
+                    (f"std::vector<{NS}PressSensorState_>", "press_sensor_state"), (f"{NS}IMUState_", "imu_state"),
+                    ("float", "power_v"), ("float", "power_a"), ("float", "system_v"), ("float", "device_v"),
+                    ("std::array<uint32_t, 2>", "error"), ("std::array<uint32_t, 2>", "reserve")],
+                   ["MotorState_", "PressSensorState_", "IMUState_"], None),
 }
 
 GO_HEADER = [("std::array<uint8_t, 2>", "head"), ("uint8_t", "level_flag"), ("uint8_t", "frame_reserve"),
@@ -74,7 +85,7 @@ GO_TYPES = {
 FAMILIES = (("hg", "unitree_hg", "hg", HG_TYPES), ("go", "unitree_go", "go2", GO_TYPES))
 
 
-def render(name: str, members, deps, size: int, namespace: str = "unitree_hg", folder: str = "hg") -> str:
+def render(name: str, members, deps, size: int | None, namespace: str = "unitree_hg", folder: str = "hg") -> str:
     guard = f"DDSCXX_UNITREE_IDL_{folder.upper()}_{name.upper()}_HPP"
     out = [
         "// rhi-gen test stand-in (not the real unitree_sdk2): Cyclone-DDS-style C++ class of the",
@@ -88,6 +99,8 @@ def render(name: str, members, deps, size: int, namespace: str = "unitree_hg", f
         "#include <type_traits>",
         "#include <utility>",
     ]
+    if any(t.startswith("std::vector") for t, _ in members):
+        out.append("#include <vector>")
     out += [f'#include "unitree/idl/{folder}/{d}.hpp"' for d in deps]
     out += ["", f"namespace {namespace}", "{", "namespace msg", "{", "namespace dds_", "{",
             f"class {name}", "{", "private:"]
@@ -123,6 +136,9 @@ def render(name: str, members, deps, size: int, namespace: str = "unitree_hg", f
     out.append("    return " + " &&\n      ".join(f"{m}_ == _other.{m}_" for _, m in members) + ";")
     out += ["  }", "", f"  bool operator!=(const {name}& _other) const", "  {",
             "    return !(*this == _other);", "  }", "", "};", "", "}", "", "}", "", "}", ""]
+    if size is None:  # holds a sequence: no fixed layout, no CRC
+        out += [f"#endif  // {guard}", ""]
+        return "\n".join(out)
     out += [
         "// Layout checks (x86-64 g++): the CRC of the SDK is computed over the raw bytes.",
         (f"static_assert(sizeof(::{namespace}::msg::dds_::{name}) == {size}, "

@@ -6,7 +6,8 @@ Run (from the repository root):
                                                       [--distro jazzy] [--no-callgrind]
 
 It renders the package of the reference robots of robots/ (Unitree G1 unitree_dds, AgiBot X2
-agibot_topics, EngineAI PM01 engineai_topics) into a temporary folder, compiles
+agibot_topics, EngineAI PM01 engineai_topics) and the G1 with its Dex3-1 hands (the harness's g1_dex3) into a
+temporary folder, compiles
 benchmarks/cpp/bench_hot_paths.cpp per robot (-O2, like the harness's `plain` flavour) against the
 C++ stand-ins and the real ROS message headers (tests/support/cpp_build.py), and drives each driver's REAL
 code through the harness's fake robot (tests/cpp/harness/transport_<transport>.hpp):
@@ -76,12 +77,15 @@ sys.path.insert(0, str(REPO))
 from tests.support import cpp_build, vendor_msgs  # noqa: E402
 
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_hot_paths.cpp"
-ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
+# The G1 with its Dex3-1 hands (hands: dex3) is the harness's test robot tests/cpp/harness/robots/unitree/g1_dex3:
+# its state path also carries both hands' HandState_, its writer both HandCmd_.
+ROBOTS = ("unitree/g1", "unitree/g1_dex3", "agibot/x2", "engineai/pm01")
+HARNESS_ROBOTS = ("unitree/g1_dex3", "unitree/g1_upper_body")  # tests/cpp/harness/robots/, not robots/
 # Measured only when asked for (--robot g1_upper_body): the harness's test robot under authority upper_body
 # (tests/cpp/harness/robots/unitree/), whose writer also steps the arm SDK's blend weight.
 ON_REQUEST = ("unitree/g1_upper_body",)
 TRANSPORT_OF = {"unitree/g1": "unitree_dds", "agibot/x2": "agibot_topics", "engineai/pm01": "engineai_topics",
-                "unitree/g1_upper_body": "unitree_dds"}
+                "unitree/g1_upper_body": "unitree_dds", "unitree/g1_dex3": "unitree_dds"}
 DRIVER_PATHS = ("state", "state_dec4", "health_msg", "writer", "readwrite_pos", "readwrite_all", "readwrite_cal")
 READWRITE_PATHS = ("readwrite_pos", "readwrite_all", "readwrite_cal")
 FLOOR_OF = {"state": "state", "state_dec4": "state", "health_msg": "state", "writer": "writer",
@@ -168,7 +172,7 @@ def main() -> None:
     ap.add_argument("--iterations", type=int, default=200_000, help="timed calls per path")
     ap.add_argument("--count-iterations", type=int, default=2_000, help="calls per path under callgrind")
     ap.add_argument("--robot", action="append",
-                    help="only this robot (g1, x2, pm01; g1_upper_body only when named); repeatable")
+                    help="only this robot (g1, g1_dex3, x2, pm01; g1_upper_body only when named); repeatable")
     ap.add_argument("--distro", action="append", choices=sorted(cpp_build.DISTROS),
                     help="the ros2_control stand-ins compiled against (repeatable; default humble, jazzy, rolling); "
                          "changes read() + write() only (see the docstring)")
@@ -195,7 +199,7 @@ def main() -> None:
         root = Path(tmp)
         print(f"rendering {', '.join(robots)} into {root} ...", flush=True)
         package = cpp_build.render_test_package(root, only=robots,
-                                                extra_robots=any(r in ON_REQUEST for r in robots))
+                                                extra_robots=any(r in HARNESS_ROBOTS for r in robots))
         digest = hashlib.sha256(BENCH_SOURCE.read_bytes()).hexdigest()[:12]
         distros = list(dict.fromkeys(args.distro or DEFAULT_DISTROS))
         print(f"compiling with {' '.join(FLAGS)} against the {', '.join(distros)} stand-ins (bench source "

@@ -15,7 +15,7 @@ from ..errors import ConfigError, UrdfError
 from ..model import MAX_MOTORS, UrdfJoint, UrdfRobot
 from ..model.naming import joint_name_problem
 from ..model.urdf import safe_position
-from ..transports import KnownRobot
+from ..transports import HandSuggestion, KnownRobot
 from ..typed_yaml.yaml_source import yaml_string
 from .urdf_transmissions import describe
 
@@ -61,10 +61,15 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
                           fix="split the robot into several descriptions, or make the joints that no motor "
                               "drives fixed")
     by_name = {j.name: j for j in actuated}
-    slots = transports.suggest_slots([j.name for j in actuated], known)
+    hands = chosen.detect_hands(known, [j.name for j in actuated])
+    in_hands = {name for name, _ in hands.slots}
+    slots = transports.suggest_slots([j.name for j in actuated if j.name not in in_hands], known)
+    slots += list(hands.slots)  # on the hands' own slots, after the body's
     order = [name for name, _ in slots]
     motor_count = max(slot for _, slot in slots) + 1
     slots_count, holder = chosen.slots_for(known, given)
+    if slots_count is not None and hands.slots:
+        slots_count = max(slots_count, motor_count)
     if slots_count is not None and motor_count > slots_count:
         raise ConfigError(f"has {motor_count} actuated joints but {holder} has {slots_count} "
                           "motor slots", file=urdf.source,
@@ -89,7 +94,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         f"motor_count: {motor_count}",
         f"float_type: {chosen.default_float_type}",
     ]
-    lines += chosen.suggest_hands(known)
+    lines += chosen.suggest_hands(known, hands)
     lines += chosen.suggest_authority(known)
     if class_prefix is not None:
         lines.append(f"class_prefix: {class_prefix}")
@@ -122,7 +127,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
     lines.append("unmapped_joints: []")
     lines += _transmission_lines(urdf)
     if chosen.carries_gains:
-        lines += _default_gains_lines(vendor, robot, known, order)
+        lines += _default_gains_lines(vendor, robot, known, order, hands)
     lines += ["# Where the joints start in the description (mock hardware starts there; the launch file's",
               "# joint states show it until the robot reports). Suggested: zero, clamped into the URDF limits.",
               "initial_positions:"]
@@ -171,11 +176,15 @@ def _scalar(value: str) -> str:
     return value if plain else yaml_string(value)
 
 
-def _default_gains_lines(vendor: str, robot: str, known: KnownRobot | None, mapped: Sequence[str]) -> list[str]:
+def _default_gains_lines(vendor: str, robot: str, known: KnownRobot | None, mapped: Sequence[str],
+                         hands: HandSuggestion | None = None) -> list[str]:
     """default_gains: a known robot's (from the vendor's own examples), or a statement that there are none."""
     head = ["# Gains while a controller claims a joint's position or velocity but not its stiffness /",
             "# damping (joint_trajectory_controller, forward_position_controller)."]
     gains = [g for g in known.default_gains if g[0] in mapped] if known is not None else []
+    if gains and hands is not None and hands.gains:
+        head.append(f"# The hands': {hands.gains_note}.")
+        gains += list(hands.gains)
     if known is None or not gains:
         why = known.gains_note if known is not None and known.gains_note else \
             f"rhi-gen knows no gains for {vendor}/{robot}"

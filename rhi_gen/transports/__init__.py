@@ -24,6 +24,7 @@ from .base import (
     ROSDISTRO,
     VENDOR_SOURCE,
     Dependency,
+    HandSuggestion,
     KnownRobot,
     Transport,
     suggest_order,
@@ -45,7 +46,8 @@ NAMES: tuple[str, ...] = tuple(TRANSPORTS)
 DEFAULT = GENERIC_TOPICS.name  # for a vendor rhi-gen has no transport of its own for
 
 __all__ = ["COMMON_DEPENDENCIES", "COMMON_MESSAGE_DEPENDENCIES", "DEFAULT", "NAMES",
-           "PLAIN_CMAKE", "ROSDISTRO", "TRANSPORTS", "VENDOR_SOURCE", "Dependency", "KnownRobot", "Transport",
+           "PLAIN_CMAKE", "ROSDISTRO", "TRANSPORTS", "VENDOR_SOURCE", "Dependency", "HandSuggestion", "KnownRobot",
+           "Transport",
            "for_vendor", "get", "known_robot", "suggest_order", "suggest_slots"]
 
 

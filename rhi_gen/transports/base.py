@@ -76,6 +76,15 @@ def suggest_order(actuated: Sequence[str], known: KnownRobot | None) -> list[str
     return first + [n for n in actuated if n not in first]
 
 
+@dataclass(frozen=True)
+class HandSuggestion:
+    """The hands `rhi-gen new` finds in a URDF: the YAML's ``hands`` value, the hand joints' slots and gains."""
+    hands: str = "none"
+    slots: tuple[tuple[str, int], ...] = ()
+    gains: tuple[tuple[str, float, float], ...] = ()  # (joint, stiffness, damping), the vendor's own
+    gains_note: str = ""  # where those gains come from
+
+
 def suggest_slots(actuated: Sequence[str], known: KnownRobot | None) -> list[tuple[str, int]]:
     """(joint, SDK slot) of every actuated joint: a known robot's real slots (which may skip slots no
     joint drives), then the remaining joints on the next free slots."""
@@ -143,7 +152,11 @@ class Transport(ABC):
         """Refuse a joint_map that leaves out a hand motor of ``options.hand_slots()`` (none by default)."""
         return None
 
-    def suggest_hands(self, known: KnownRobot | None) -> list[str]:
+    def detect_hands(self, known: KnownRobot | None, actuated: Sequence[str]) -> HandSuggestion:
+        """The hands of a new robot whose URDF has every joint of hands this transport drives (none by default)."""
+        return HandSuggestion()
+
+    def suggest_hands(self, known: KnownRobot | None, hands: HandSuggestion) -> list[str]:
         """The top-level YAML lines `rhi-gen new` writes about ``hands`` (none: the transport drives none)."""
         return []
 

@@ -16,7 +16,7 @@ from typing import Any
 from ...errors import ConfigError
 from ...model import TransportOptions
 from ...typed_yaml.validator import TOPIC_RE, Validator
-from ..base import PLAIN_CMAKE, Dependency, KnownRobot, Transport, transport_header
+from ..base import PLAIN_CMAKE, Dependency, HandSuggestion, KnownRobot, Transport, transport_header
 
 NAME = "unitree_dds"
 FAMILIES = {"hg": 35, "go": 20}  # message family -> motor slots of its LowCmd_
@@ -39,6 +39,7 @@ DEX3_COMMAND_TOPIC = "rt/dex3/{side}/cmd"
 DEX3_STATE_TOPIC = "rt/lf/dex3/{side}/state"
 DEX3_FIRST_SLOT = 35  # = FAMILIES["hg"]
 DEX3_MOTORS = len(DEX3_SIDES) * len(DEX3_ORDER)
+DEX3_GRIP_GAINS = (1.5, 0.1)  # kp, kd of the example's grip (its sweep uses kp 0.5)
 
 
 # unitree_sdk2 is a plain CMake package: no package.xml, no rosdep key, a non-namespaced target.
@@ -186,8 +187,23 @@ class UnitreeDds(Transport):
     motor_slots = FAMILIES["hg"]
     slots_holder = "a unitree hg LowCmd_"
 
-    def suggest_hands(self, known: KnownRobot | None) -> list[str]:
-        """The G1 can carry Dex3-1 hands: say how to drive them (none stays the default)."""
+    def detect_hands(self, known: KnownRobot | None, actuated: Sequence[str]) -> HandSuggestion:
+        """A G1 whose URDF has both Dex3-1 hands (g1_29dof_with_hand_rev_1_0.urdf): hands: dex3, the hand joints in
+        the Dex3-1 motor order after the LowCmd_ slots, with the grip gains of unitree_sdk2's g1_dex3_example."""
+        names = [f"{side}_hand_{motor}_joint" for side in DEX3_SIDES for motor in DEX3_ORDER]
+        if known is None or known.robot != "g1" or not set(names) <= set(actuated):
+            return HandSuggestion()
+        return HandSuggestion("dex3", tuple((n, DEX3_FIRST_SLOT + i) for i, n in enumerate(names)),
+                              tuple((n, *DEX3_GRIP_GAINS) for n in names),
+                              "the grip gains of unitree_sdk2's example/g1/dex3/g1_dex3_example.cpp")
+
+    def suggest_hands(self, known: KnownRobot | None, hands: HandSuggestion) -> list[str]:
+        """The G1 can carry Dex3-1 hands: say how they are driven, or how to drive them (none stays the default)."""
+        if hands.hands == "dex3":
+            return ["# hands: dex3 drives the Dex3-1 hands too: motor_count 49, the hand joints in slots 35..41",
+                    "# (left) and 42..48 (right) in the order " + ", ".join(DEX3_ORDER) + ",",
+                    "# on HandCmd_ / HandState_ (see the README, Hands).",
+                    "hands: dex3"]
         if known is None or known.robot != "g1":
             return []
         return ["# hands: none drives the body only; dex3 drives the Dex3-1 hands too (motor_count 49, the",

@@ -10,14 +10,15 @@ import re
 from pathlib import Path
 
 import pytest
-import yaml
 
 from rhi_gen.errors import ConfigError
+from rhi_gen.inputs.scaffold import suggest_yaml
+from rhi_gen.inputs.urdf_loader import load_urdf
 from rhi_gen.inputs.vendor_config import load_config
 from rhi_gen.model import TransportOptions
 from rhi_gen.render.bringup_views import start_controllers
 from rhi_gen.render.views import controllers_view
-from rhi_gen.transports import get
+from rhi_gen.transports import HandSuggestion, get
 from rhi_gen.transports.unitree_dds import UnitreeDdsOptions
 from rhi_gen.typed_yaml.validator import Validator
 from tests.support import dex3_facts
@@ -120,8 +121,26 @@ def test_other_transports_drive_no_hands(tmp_path, transport):
     assert caught.value.line == 3 and caught.value.fix
 
 
-def test_new_tells_a_g1_about_its_hands():
-    lines = get("unitree_dds").suggest_hands(next(k for k in get("unitree_dds").known_robots if k.robot == "g1"))
-    assert lines[-1] == "hands: none" and yaml.safe_load("\n".join(lines)) == {"hands": "none"}
-    assert ", ".join(dex3_facts.MOTOR_ORDER) in " ".join(lines)
-    assert get("unitree_dds").suggest_hands(None) == []
+def _new_yaml(tmp_path: Path, urdf: Path) -> Path:
+    text = suggest_yaml(vendor="unitree", robot="g1", urdf=load_urdf(urdf), urdf_relative=str(urdf))
+    path = tmp_path / "g1.yaml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_new_drives_the_hands_of_a_g1_urdf_with_hands(tmp_path):
+    """`rhi-gen new` on Unitree's G1 URDF with hands writes hands: dex3 and the Dex3-1 motor order."""
+    model = model_of_yaml(_new_yaml(tmp_path, (HARNESS / "g1_dex3.urdf").resolve()))
+    assert model.hands == "dex3" and model.motor_count == 49
+    assert [j.name for j in sorted(model.hand_joints, key=lambda j: j.index)] == HAND_JOINTS
+    assert [j.index for j in sorted(model.hand_joints, key=lambda j: j.index)] == list(range(35, 49))
+    assert all((j.default_stiffness, j.default_damping) == dex3_facts.GRIP_GAINS for j in model.hand_joints)
+    assert len(model.joints) == 43
+
+
+def test_new_tells_a_g1_without_hands_how_to_add_them(tmp_path):
+    path = _new_yaml(tmp_path, REPO / "robots/unitree/g1.urdf")
+    text = path.read_text(encoding="utf-8")
+    assert "hands: none" in text.splitlines() and ", ".join(dex3_facts.MOTOR_ORDER) in text
+    assert load_config(path).hands == "none"
+    assert get("unitree_dds").suggest_hands(None, HandSuggestion()) == []

@@ -14,7 +14,16 @@ say, in short:
 - arms-only control while MC keeps the legs is /mc/upper_body_command (UpperBodyCommandArray, position targets
   only, 50 Hz) after SetMcAction "UPPERBODY_REMOTE_SPLIT", from AimDK 1.1.0 (its message is not in v1.0.0).
 
-tests/unit/facts/test_aimdk_facts.py checks the service definitions against the shared vendor .msg/.srv files.
+The X2's hands (AimDK documentation Interface/control_mod/endeffector, the vendor examples
+src/examples/src/hal/hand_control.cpp and omnihand_control.cpp of the same copy, AgibotTech/agibot_x2_urdf
+X2_URDF-v1.4.0/X2-Ultra_omnihand.urdf at 575cc6b988f976c23550e0db85aa1e5475d3652d for the joint names): one
+HandCommandArray on /aima/hal/joint/hand/command carries both hands, each with its HandType and an array sized for
+it; the OmniHand takes 10 position targets per hand (rad; velocity, acceleration, deceleration, effort unused),
+matched by index (the examples put placeholder names), the OmniPicker gripper 1 entry of fractions 0..1; MC
+publishes the same topic while it runs, so the hands need it stopped like the body.
+
+tests/unit/facts/test_aimdk_facts.py checks the service definitions and the hand messages against the shared
+vendor .msg/.srv files.
 """
 from __future__ import annotations
 
@@ -45,3 +54,23 @@ SET_INPUT_SOURCE_REQUEST = (("CommonRequest", "request"), ("McInputAction", "act
                             ("McInputSource", "input_source"))
 SET_ACTION_REQUEST = (("RequestHeader", "header"), ("string", "source"), ("McActionCommand", "command"))
 MIGRATE_REQUEST = (("CommonRequest", "header"), ("string", "state"))
+
+# The hands (hal/msg/Hand*.msg).
+HAND_COMMAND_TOPIC = "/aima/hal/joint/hand/command"  # HandCommandArray
+HAND_STATE_TOPIC = "/aima/hal/joint/hand/state"      # HandStateArray
+GET_HAND_TYPE = SERVICE_PREFIX + "GetHandType"
+HAND_TYPES = {"NONE": 0, "NIMBLE_HANDS": 1, "CLAW": 2, "LEISAI_NIMBLE_HANDS": 3, "ERROR": 0xFF}
+HAND_COMMAND_ARRAY_FIELDS = (("MessageHeader", "header"), ("HandType", "left_hand_type"),
+                             ("HandCommand[]", "left_hands"), ("HandType", "right_hand_type"),
+                             ("HandCommand[]", "right_hands"))
+HAND_COMMAND_FIELDS = (("string", "name"), ("float64", "position"), ("float64", "velocity"),
+                       ("float64", "acceleration"), ("float64", "deceleration"), ("float64", "effort"))
+HAND_STATE_FIELDS = (("string", "name"), ("float64", "position"), ("float64", "velocity"), ("float64", "effort"),
+                     ("int32", "state"), ("int32", "faultcode"))
+# OmniHand (HandType NIMBLE_HANDS): 10 axes per hand in this index order (endeffector docs), the URDF's joints
+# {L,R}_<axis>_joint; position in rad, the only field the HAL uses.
+OMNIHAND_AXES = ("thumb_roll", "thumb_abad", "thumb_mcp", "index_abad", "index_pip", "middle_pip", "ring_abad",
+                 "ring_pip", "pinky_abad", "pinky_pip")
+OMNIHAND_SIDE_PREFIX = {"left": "L_", "right": "R_"}
+# OmniPicker (HandType CLAW): one entry per hand, every field a fraction 0..1 (position 1 = open).
+OMNIPICKER_ENTRIES = 1

@@ -30,7 +30,7 @@ def _request_fields(relative: str) -> tuple[tuple[str, str], ...]:
 def _constants(relative: str) -> dict[str, int]:
     words = (line.split("#")[0].replace("=", " = ").split() for line in
              _definition(relative).read_text(encoding="utf-8").splitlines())
-    return {w[1]: int(w[3]) for w in words if len(w) == 4 and w[2] == "="}
+    return {w[1]: int(w[3], 0) for w in words if len(w) == 4 and w[2] == "="}  # 0x.. too
 
 
 def test_input_source_actions():
@@ -52,3 +52,21 @@ def test_service_names_are_the_type_names():
                  aimdk.MIGRATE_SYSTEM_STATE, aimdk.GET_SYSTEM_STATE):
         srv = name.removeprefix(aimdk.SERVICE_PREFIX)
         assert list(ROBOT.rglob(f"{srv}.srv")) or not ROBOT.is_dir(), srv
+
+
+def _fields(relative: str) -> tuple[tuple[str, str], ...]:
+    words = (line.split("#")[0].split() for line in _definition(relative).read_text(encoding="utf-8").splitlines())
+    return tuple((w[0], w[1]) for w in words if len(w) >= 2 and "=" not in w[1] and not w[1].startswith("="))
+
+
+def test_hand_messages():
+    assert _fields("hal/msg/HandCommandArray.msg") == aimdk.HAND_COMMAND_ARRAY_FIELDS
+    assert _fields("hal/msg/HandCommand.msg") == aimdk.HAND_COMMAND_FIELDS
+    assert _fields("hal/msg/HandState.msg") == aimdk.HAND_STATE_FIELDS
+    assert _constants("hal/msg/HandType.msg") == aimdk.HAND_TYPES
+
+
+def test_hand_state_array_carries_each_hands_type_and_states():
+    fields = {name: kind for kind, name in _fields("hal/msg/HandStateArray.msg")}
+    assert fields["left_hand_type"] == fields["right_hand_type"] == "HandType"
+    assert fields["left_hands"] == fields["right_hands"] == "HandState[]"

@@ -2,7 +2,9 @@
 
 * their fields (names, order, ROS types) and constants are those SDK_FACTS.md lists (§B AgiBot AimDK
   v1.0.0, §C EngineAI interface_protocol): the oracle below is typed from SDK_FACTS.md, not read from
-  the .msg files;
+  the .msg files. SDK_FACTS.md does not list the AimDK system-state services (sm/srv) and what they
+  reference: their oracle is typed by hand from the upstream .srv/.msg files (AimDK v1.0.0);
+* the services are generated as rosidl does (<pkg>/srv/<name>.hpp with Request, Response and Event);
 * generation is deterministic and cached by content: a second generation gives the same bytes, and a
   changed .msg gives another cache key;
 * without ../shared the reason is one line, names how to provide the folder, and only the robots whose
@@ -12,14 +14,18 @@ The aimdk_msgs cases skip with that reason when ../shared is missing (a fresh cl
 """
 from __future__ import annotations
 
+import dataclasses
 import filecmp
+import os
 import re
 import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
 
 from tests.support import vendor_msgs
+from tests.support.cpp_build import message_include_flags, require_compiler
 
 # SDK_FACTS.md §B / §C: message -> [(field, ROS type)], in declaration order.
 EXPECTED_FIELDS = {
@@ -49,12 +55,37 @@ EXPECTED_FIELDS = {
                                       ("motor_temperature", "float64[]")],
     # constants only: rosidl adds its placeholder member
     "interface_protocol/ParallelParserType": [("structure_needs_at_least_one_member", "uint8")],
+    # what the AimDK system-state services reference (upstream common/msg, sm/msg)
+    "aimdk_msgs/RequestHeader": [("stamp", "builtin_interfaces/Time")],
+    "aimdk_msgs/ResponseHeader": [("stamp", "builtin_interfaces/Time"), ("code", "int64")],
+    "aimdk_msgs/CommonState": [("value", "int32")],
+    "aimdk_msgs/CommonRequest": [("header", "aimdk_msgs/RequestHeader")],
+    "aimdk_msgs/CommonResponse": [("header", "aimdk_msgs/ResponseHeader"), ("status", "aimdk_msgs/CommonState"),
+                                  ("message", "string")],
+    "aimdk_msgs/SystemStatus": [("value", "uint8")],
+}
+# The services (upstream sm/srv): service -> {part: [(field, ROS type)]}.
+EXPECTED_SERVICE_FIELDS = {
+    "aimdk_msgs/MigrateSystemState": {
+        "Request": [("header", "aimdk_msgs/CommonRequest"), ("state", "string")],
+        "Response": [("header", "aimdk_msgs/CommonResponse")],
+    },
+    "aimdk_msgs/GetSystemState": {
+        "Request": [("header", "aimdk_msgs/CommonRequest")],
+        "Response": [("header", "aimdk_msgs/CommonResponse"), ("cur_state", "string"),
+                     ("curr_status", "aimdk_msgs/SystemStatus")],
+    },
 }
 EXPECTED_CONSTANTS = {
     "aimdk_msgs/DomainErrorState": {"NONE": 0, "DAMPING": 1, "POWERDOWN": 2, "DISABLE": 3, "DISCONNECT": 4},
     "interface_protocol/ParallelParserType": {"CLASSIC_PARSER": 0, "RL_PARSER": 1},
+    "aimdk_msgs/SystemStatus": {"IN_INITIAL": 0, "IN_READY": 1, "IN_MOVE": 2, "IN_ROLLBACK": 3, "IN_FALLBACK": 4,
+                                "IN_FALLBACK_MOVE": 5},
+    "aimdk_msgs/CommonState": {"UNKNOWN": 0, "SUCCESS": 1, "FAILURE": 2, "ABORTED": 3, "TIMEOUT": 4, "INVALID": 5,
+                               "IN_MANUAL": 6, "NOT_READY": 100, "PENDING": 200, "CREATED": 300, "RUNNING": 400},
 }
-CPP_SCALARS = {"double": "float64", "uint8_t": "uint8", "uint16_t": "uint16", "uint32_t": "uint32"}
+CPP_SCALARS = {"double": "float64", "uint8_t": "uint8", "uint16_t": "uint16", "uint32_t": "uint32",
+               "int32_t": "int32", "int64_t": "int64"}
 
 
 def _snake(name: str) -> str:
@@ -75,12 +106,29 @@ def _ros_type(cpp: str) -> str:
     return f"{m[1]}/{m[2]}"
 
 
-def _struct(label: str) -> str:
+def _struct(label: str, kind: str = "msg") -> str:
     package, name = label.split("/")
     reason = vendor_msgs.missing_reason((vendor_msgs.package(package),))
     if reason:
         pytest.skip(reason)
-    return (vendor_msgs.header_dir(package) / "detail" / f"{_snake(name)}__struct.hpp").read_text()
+    return (vendor_msgs.header_dir(package, kind) / "detail" / f"{_snake(name)}__struct.hpp").read_text()
+
+
+def _fields(text: str) -> list[tuple[str, str]]:
+    """(field, ROS type) of the one struct in ``text``, in declaration order."""
+    types = dict(re.findall(r"using _(\w+)_type =\s*([^;]+);", text))
+    members = re.findall(r"^  _(\w+)_type (\w+);$", text, re.M)
+    assert all(a == b for a, b in members), members
+    return [(name, _ros_type(types[name])) for name, _ in members]
+
+
+def _service_parts(label: str) -> dict[str, str]:
+    """The text of each struct (Request, Response, Event) a generated service header declares."""
+    name = label.split("/")[1]
+    text = _struct(label, "srv")
+    starts = [(m.start(), m[1]) for m in re.finditer(rf"^struct {name}_(\w+)_$", text, re.M)]
+    ends = [s for s, _ in starts[1:]] + [len(text)]
+    return {part: text[start:end] for (start, part), end in zip(starts, ends, strict=True)}
 
 
 def _labels(package: str, table: dict) -> list[str]:
@@ -91,19 +139,24 @@ def _labels(package: str, table: dict) -> list[str]:
 @pytest.mark.parametrize("package", [p.name for p in vendor_msgs.PACKAGES])
 def test_fields_are_those_of_sdk_facts(package):
     for label in _labels(package, EXPECTED_FIELDS):
-        text = _struct(label)
-        types = dict(re.findall(r"using _(\w+)_type =\s*([^;]+);", text))
-        members = re.findall(r"^  _(\w+)_type (\w+);$", text, re.M)
-        assert all(a == b for a, b in members), members
-        got = [(name, _ros_type(types[name])) for name, _ in members]
-        assert got == EXPECTED_FIELDS[label], label
+        assert _fields(_struct(label)) == EXPECTED_FIELDS[label], label
+
+
+@pytest.mark.parametrize("service", sorted(EXPECTED_SERVICE_FIELDS))
+def test_service_fields_are_those_of_the_srv_files(service):
+    parts = _service_parts(service)
+    # rosidl (Iron and later) adds the Event message: the service_msgs header plus at most one request/response
+    assert sorted(parts) == ["Event", "Request", "Response"], sorted(parts)
+    for part, expected in EXPECTED_SERVICE_FIELDS[service].items():
+        assert _fields(parts[part]) == expected, (service, part)
+    assert "service_msgs::msg::ServiceEventInfo_<ContainerAllocator>" in parts["Event"]
 
 
 @pytest.mark.parametrize("package", [p.name for p in vendor_msgs.PACKAGES])
 def test_constants_are_those_of_sdk_facts(package):
     for label in _labels(package, EXPECTED_CONSTANTS):
         found = {name: int(value) for name, value in
-                 re.findall(r"static constexpr uint8_t (\w+) =\s*(\d+)u;", _struct(label))}
+                 re.findall(r"static constexpr u?int\d+_t (\w+) =\s*(-?\d+)u?;", _struct(label))}
         assert found == EXPECTED_CONSTANTS[label], label
 
 
@@ -113,8 +166,8 @@ def test_every_driver_include_is_generated(name):
     missing = vendor_msgs.missing_reason((p,))
     if missing:
         pytest.skip(missing)
-    for m in p.messages:
-        header = vendor_msgs.header_dir(name) / f"{_snake(Path(m).stem)}.hpp"
+    for m in p.interfaces:
+        header = vendor_msgs.header_dir(name, Path(m).suffix[1:]) / f"{_snake(Path(m).stem)}.hpp"
         assert header.is_file(), header
 
 
@@ -164,6 +217,44 @@ def test_a_changed_msg_changes_the_cache_key(tmp_path, monkeypatch):
     joint_state = copy / p.source / "msg/JointState.msg"
     joint_state.write_text(joint_state.read_text() + "\nuint8 motor_temp\n")
     assert vendor_msgs.package_key(p) != key
+
+
+def test_a_changed_srv_or_its_kind_changes_the_cache_key(tmp_path, monkeypatch):
+    # a made-up package in a repository-like folder, so this runs on every machine
+    root = tmp_path / "msgs"
+    (root / "pkg" / "msg").mkdir(parents=True)
+    (root / "pkg" / "srv").mkdir()
+    (root / "pkg" / "msg" / "Thing.msg").write_text("int32 value\n")
+    (root / "pkg" / "srv" / "Ask.srv").write_text("string question\n---\nbool ok\n")
+    monkeypatch.setattr(vendor_msgs, "IN_REPO_MSGS", root)
+    p = vendor_msgs.VendorPackage("pkg", "pkg", ("msg/Thing.msg",), (), (), in_repo=True, services=("srv/Ask.srv",))
+    key = vendor_msgs.package_key(p)
+    assert [f.name for f in p.files()] == ["Thing.msg", "Ask.srv"]
+    (root / "pkg" / "srv" / "Ask.srv").write_text("string question\n---\nbool ok\nstring why\n")
+    assert vendor_msgs.package_key(p) != key
+    # the same bytes generated as a message instead of a service are another input
+    (root / "pkg" / "msg" / "Ask.msg").write_text((root / "pkg" / "srv" / "Ask.srv").read_text())
+    as_msg = dataclasses.replace(p, messages=("msg/Thing.msg", "msg/Ask.msg"), services=())
+    assert vendor_msgs.package_key(as_msg) != vendor_msgs.package_key(p)
+    with pytest.raises(ValueError, match=r"only \.msg and \.srv"):
+        vendor_msgs.package_key(dataclasses.replace(p, services=("srv/Ask.action",)))
+
+
+def test_service_headers_compile_warning_free(tmp_path):
+    """The generated AimDK service headers, alone, with the flags the drivers are compiled with."""
+    p = vendor_msgs.package("aimdk_msgs")
+    reason = vendor_msgs.missing_reason((p,))
+    if reason:
+        pytest.skip(reason)
+    src = tmp_path / "services.cpp"
+    src.write_text("#include <aimdk_msgs/srv/migrate_system_state.hpp>\n"
+                   "#include <aimdk_msgs/srv/get_system_state.hpp>\n"
+                   "static_assert(rosidl_generator_traits::is_service<aimdk_msgs::srv::GetSystemState>::value);\n"
+                   "int main() { aimdk_msgs::srv::MigrateSystemState::Request r; return r.state.empty() ? 0 : 1; }\n")
+    cmd = [require_compiler(), "-std=c++17", "-Wall", "-Wextra", "-Werror", *message_include_flags(),
+           "-fsyntax-only", str(src)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, env={**os.environ, "LC_ALL": "C"})
+    assert proc.returncode == 0, proc.stderr[-4000:]
 
 
 def test_missing_shared_skips_only_the_agibot_transport(tmp_path, monkeypatch):

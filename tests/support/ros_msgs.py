@@ -27,6 +27,7 @@ HEADER_WHEELS = {
     "ros-diagnostic-msgs": "diagnostic_msgs",
     "ros-lifecycle-msgs": "lifecycle_msgs",
     "ros-rcl-interfaces": "rcl_interfaces",  # the parameter API's messages (rclcpp/parameter*.hpp)
+    "ros-service-msgs": "service_msgs",  # ServiceEventInfo, in the Event message of every generated service
     "ros-rosidl-runtime-cpp": "rosidl_runtime_cpp",
     "ros-rosidl-runtime-c": "rosidl_runtime_c",
     "ros-rosidl-typesupport-interface": "rosidl_typesupport_interface",

@@ -10,9 +10,14 @@ Sources, per package (provenance beside each copy):
   ../shared/upstream (msgs/, urdf/), `RHI_UPSTREAM_MSGS=<dir>` only its msgs/ (or a missing folder, to
   try the skip path).
 
+Services (.srv) are generated like messages: rosidl_adapter turns each into .idl, rosidl_generator_cpp
+writes <pkg>/srv/<name>.hpp (the Request, Response and, since Iron, the Event message, whose
+service_msgs/ServiceEventInfo comes from the ros-service-msgs wheel).
+
 The generated headers go to a cache folder outside the repository, one sub-folder per package and content
-hash of everything that goes in (the .msg bytes, the generator and dependency wheel versions, this
-recipe), so a session generates them once and a changed input can never pick up stale headers.
+hash of everything that goes in (the .msg/.srv bytes and kinds, the generator and dependency wheel
+versions, this recipe), so a session generates them once and a changed input can never pick up stale
+headers.
 `RHI_MSGS_CACHE=<dir>` moves the cache (default `$XDG_CACHE_HOME/rhi-gen/vendor-msgs`, i.e. ~/.cache/...).
 
 A package whose sources are missing (aimdk_msgs without ../shared) is the only allowed skip: `skip_reason()`
@@ -43,11 +48,13 @@ UPSTREAM = Path(os.environ.get("RHI_UPSTREAM") or REPO.parent / "shared" / "upst
 UPSTREAM_MSGS = Path(os.environ.get("RHI_UPSTREAM_MSGS") or UPSTREAM / "msgs")
 HOW_TO_PROVIDE = ("put the project's shared folder beside the clone (../shared/upstream/msgs) "
                   "or set RHI_UPSTREAM=<folder holding msgs/>")
-RECIPE = "rosidl_generator_cpp via GenerateCpp, msg/ layout, headers only (v2, one folder per package)"
+RECIPE = "rosidl_generator_cpp via GenerateCpp, msg/ and srv/ layout, headers only (v3, one folder per package)"
 GENERATOR_WHEELS = ("ros-rosidl-generator-cpp", "ros-rosidl-adapter", "ros-rosidl-parser", "ros-rosidl-cli",
                     "ros-rosidl-generator-type-description", "ros-rosidl-pycommon")
 DEPENDENCY_WHEELS = {"builtin_interfaces": "ros-builtin-interfaces", "std_msgs": "ros-std-msgs",
-                     "geometry_msgs": "ros-geometry-msgs"}
+                     "geometry_msgs": "ros-geometry-msgs",
+                     # every .srv: rosidl adds a <Service>_Event message holding service_msgs/ServiceEventInfo
+                     "service_msgs": "ros-service-msgs"}
 
 
 @dataclass(frozen=True)
@@ -58,6 +65,12 @@ class VendorPackage:
     dependencies: tuple[str, ...]    # message packages they use (from the wheels)
     transports: tuple[str, ...]      # rhi-gen transports whose drivers include them
     in_repo: bool                    # carried in tests/data/vendor_msgs (else read from UPSTREAM_MSGS)
+    services: tuple[str, ...] = ()   # .srv files under source, each in a srv/ folder
+
+    @property
+    def interfaces(self) -> tuple[str, ...]:
+        """Every interface file under source: the messages, then the services."""
+        return (*self.messages, *self.services)
 
     @property
     def root(self) -> Path:
@@ -65,18 +78,24 @@ class VendorPackage:
         return IN_REPO_MSGS if self.in_repo else UPSTREAM_MSGS
 
     def files(self) -> list[Path]:
-        return [self.root / self.source / m for m in self.messages]
+        return [self.root / self.source / m for m in self.interfaces]
 
 
 # Only the messages the drivers use (and what they reference): upstream interface_protocol of the native
-# SDK has both msg/ and srv/ JointMotionPlanRequest, which rosidl on Jazzy+ rejects. The two upstream
+# SDK has both msg/ and srv/ JointMotionPlanRequest, which rosidl on Jazzy+ rejects. The AimDK system-state
+# services (sm/srv) are what an X2 driver calls on activation/deactivation; their requests and responses
+# reference sm/msg/SystemStatus and common/msg CommonRequest -> RequestHeader, CommonResponse ->
+# ResponseHeader + CommonState (each checked in the .srv/.msg files). The two upstream
 # copies of interface_protocol have identical JointCommand/JointState/ImuInfo/ParallelParserType;
 # engineai_ros2_workspace is the one SDK_FACTS.md §C and the PM01 URDF come from.
 PACKAGES = (
     VendorPackage("aimdk_msgs", "aimdk_msgs/interface/robot",
                   ("hal/msg/JointCommand.msg", "hal/msg/JointCommandArray.msg", "hal/msg/JointState.msg",
-                   "hal/msg/JointStateArray.msg", "hal/msg/DomainErrorState.msg", "common/msg/MessageHeader.msg"),
-                  ("builtin_interfaces",), ("agibot_topics",), in_repo=False),
+                   "hal/msg/JointStateArray.msg", "hal/msg/DomainErrorState.msg", "common/msg/MessageHeader.msg",
+                   "common/msg/RequestHeader.msg", "common/msg/ResponseHeader.msg", "common/msg/CommonState.msg",
+                   "common/msg/CommonRequest.msg", "common/msg/CommonResponse.msg", "sm/msg/SystemStatus.msg"),
+                  ("builtin_interfaces", "service_msgs"), ("agibot_topics",), in_repo=False,
+                  services=("sm/srv/MigrateSystemState.srv", "sm/srv/GetSystemState.srv")),
     VendorPackage("interface_protocol", "interface_protocol/engineai_ros2_workspace",
                   ("msg/JointCommand.msg", "msg/JointState.msg", "msg/ImuInfo.msg", "msg/ParallelParserType.msg",
                    "msg/MotorDebug.msg"),
@@ -137,10 +156,18 @@ def package_key(p: VendorPackage) -> str:
     h = hashlib.sha256(RECIPE.encode())
     h.update(wheel_versions((*GENERATOR_WHEELS, *(DEPENDENCY_WHEELS[d] for d in p.dependencies))).encode())
     h.update(f"\0{p.name}\0{p.dependencies}".encode())
-    for m, path in zip(p.messages, p.files(), strict=True):
-        h.update(f"\0{Path(m).name}\0".encode())
+    for m, path in zip(p.interfaces, p.files(), strict=True):
+        h.update(f"\0{_kind(m)}/{Path(m).name}\0".encode())   # what it is and the name it is generated as
         h.update(path.read_bytes())
     return h.hexdigest()[:24]
+
+
+def _kind(interface: str) -> str:
+    """"msg" or "srv": the folder rosidl generates an interface file into (from its extension)."""
+    suffix = Path(interface).suffix
+    if suffix not in (".msg", ".srv"):
+        raise ValueError(f"{interface}: only .msg and .srv files are generated")
+    return suffix[1:]
 
 
 def cache_key(packages: tuple[VendorPackage, ...] | None = None) -> str:
@@ -157,10 +184,11 @@ def cache_root() -> Path:
 
 
 def _generate_package(p: VendorPackage, staging: Path) -> None:
-    """One package into staging/include/<name>/<name>/msg/, as a ROS 2 install lays it out."""
-    # rosidl_generate_interfaces puts every .msg in <pkg>/msg/ whatever folder it came from (AimDK keeps
-    # hal/msg and common/msg): pass each file as "<its folder's parent>:msg/<Name>.msg".
-    files = [f"{path.parent.parent}:msg/{path.name}" for path in p.files()]
+    """One package into staging/include/<name>/<name>/{msg,srv}/, as a ROS 2 install lays it out."""
+    # rosidl_generate_interfaces puts every .msg in <pkg>/msg/ and every .srv in <pkg>/srv/ whatever folder
+    # it came from (AimDK keeps hal/msg, common/msg, sm/msg and sm/srv): pass each file as
+    # "<its folder's parent>:<msg|srv>/<Name>.<msg|srv>".
+    files = [f"{path.parent.parent}:{_kind(m)}/{path.name}" for m, path in zip(p.interfaces, p.files(), strict=True)]
     share = [require_dir(DEPENDENCY_WHEELS[d], "share", d) for d in p.dependencies]
     generator_share = require_dir("ros-rosidl-generator-cpp", "share", "rosidl_generator_cpp")
     output = staging / "include" / p.name / p.name
@@ -204,10 +232,10 @@ def package_root(p: VendorPackage) -> Path:
     return target
 
 
-def header_dir(name: str) -> Path:
-    """<root>/include/<name>/<name>/msg of one generated package."""
+def header_dir(name: str, kind: str = "msg") -> Path:
+    """<root>/include/<name>/<name>/<kind> (msg or srv) of one generated package."""
     with _LOCK:
-        return package_root(package(name)) / "include" / name / name / "msg"
+        return package_root(package(name)) / "include" / name / name / kind
 
 
 @functools.cache

@@ -11,7 +11,7 @@ Per distro (humble, jazzy, kilted, rolling):
 * every compile_fail/ snippet meant for the distro (its "// distros:" line; all when absent)
   compiles without RHI_EXPECT_FAIL and fails, with the expected diagnostic, with it;
   (code that reaches only the distro-independent include/ folder is checked on one distro per
-  rclcpp class, REPRESENTATIVES: humble and rolling; see _distros_for)
+  rclcpp class, REPRESENTATIVES: humble, jazzy and rolling; see _distros_for)
 * the self-test includes every public stand-in header of the distro (so new headers get exercised).
 
 A missing g++ fails these tests (tests.support.cpp_build.require_compiler); they are never skipped.
@@ -81,9 +81,13 @@ def _distro_macros(distro: str) -> dict[str, int]:
     return {k: int(v) for k, v in re.findall(r"#define (RHI_FAKE_\w+) (\d+)", text)}
 
 
-def _rclcpp_class(distro: str) -> tuple[int, bool]:
+def _rclcpp_class(distro: str) -> tuple[int, bool, bool]:
+    """What the distro-independent stand-ins branch on: Humble's deprecated shared_ptr callbacks, rclcpp 21
+    (Iron: NodeOptions::enable_logger_service, the QoS overloads of create_client/create_service) and rclcpp
+    29 (Kilted: the rmw_qos_profile_t service overloads and the implicit future conversions removed)."""
     m = _distro_macros(distro)
-    return m["RHI_FAKE_RCLCPP_SHARED_PTR_CALLBACK_DEPRECATED"], m["RHI_FAKE_RCLCPP_MAJOR"] >= 21
+    major = m["RHI_FAKE_RCLCPP_MAJOR"]
+    return m["RHI_FAKE_RCLCPP_SHARED_PTR_CALLBACK_DEPRECATED"], major >= 21, major >= 29
 
 
 REPRESENTATIVES = sorted({_rclcpp_class(d): d for d in DISTROS}.values())
@@ -187,7 +191,7 @@ def _headers_to_check(distro: str) -> list[str]:
 
 def test_rclcpp_classes_hold():
     """The premise of checking distro-independent code on REPRESENTATIVES only."""
-    assert REPRESENTATIVES == ["humble", "rolling"], REPRESENTATIVES
+    assert REPRESENTATIVES == ["humble", "jazzy", "rolling"], REPRESENTATIVES
     for path in STANDINS_INCLUDE.rglob("*.h*"):
         text = path.read_text()
         used = set(re.findall(r"\bRHI_FAKE_\w+", text)) - {"RHI_FAKE_RCLCPP_SHARED_PTR_CALLBACK_DEPRECATED",
@@ -197,6 +201,20 @@ def test_rclcpp_classes_hold():
             assert _reaches_distro_folder(path, "rolling"), (
                 f"{path.name} uses {sorted(used)} but reaches no distro folder: check it on every distro")
     assert "RHI_FAKE_RCLCPP_MAJOR >= 21" in (STANDINS_INCLUDE / "rclcpp" / "node_options.hpp").read_text()
+    node = (STANDINS_INCLUDE / "rclcpp" / "node.hpp").read_text()
+    assert "RHI_FAKE_RCLCPP_MAJOR < 21" in node and "RHI_FAKE_RCLCPP_MAJOR < 29" in node
+    assert "RHI_FAKE_RCLCPP_MAJOR < 29" in (STANDINS_INCLUDE / "rclcpp" / "client.hpp").read_text()
+    # every rclcpp major the stand-ins compare with splits the distros along _rclcpp_class
+    thresholds = {int(t) for path in STANDINS_INCLUDE.rglob("*.h*")
+                  for t in re.findall(r"RHI_FAKE_RCLCPP_MAJOR\s*(?:<|>=)\s*(\d+)", path.read_text())}
+    assert {21, 29} <= thresholds, thresholds
+    for threshold in thresholds:
+        for a in DISTROS:
+            for b in DISTROS:
+                if _rclcpp_class(a) == _rclcpp_class(b):
+                    major_a = _distro_macros(a)["RHI_FAKE_RCLCPP_MAJOR"]
+                    major_b = _distro_macros(b)["RHI_FAKE_RCLCPP_MAJOR"]
+                    assert (major_a >= threshold) == (major_b >= threshold), (threshold, a, b)
 
 
 @pytest.mark.parametrize("distro", list(DISTROS))
@@ -260,6 +278,15 @@ REQUIRED_REJECTIONS = {
     "export_state_interfaces_call": ["jazzy", "kilted", "rolling"],
     "handle_get_value_removed": ["kilted", "rolling"],
     "handle_get_value_deprecated": ["jazzy"],
+    # services: the QoS overloads per distro, the deprecated/removed future conversion, callback forms
+    # (include/ only: kilted is checked through rolling, the representative of its rclcpp class)
+    "create_client_qos_humble": ["humble"],
+    "create_client_rmw_qos_deprecated": ["jazzy"],
+    "create_client_rmw_qos_removed": ["rolling"],
+    "client_future_conversion_deprecated": ["humble", "jazzy"],
+    "client_future_conversion_removed": ["rolling"],
+    "service_callback_signature": ["humble", "jazzy", "rolling"],
+    "client_callback_signature": ["humble", "jazzy", "rolling"],
     "set_value_nodiscard": ["jazzy", "kilted", "rolling"],
     "resource_manager_urdf_only": ["jazzy", "kilted", "rolling"],
 }
@@ -290,6 +317,7 @@ INDIRECT_ONLY = {
     "rmw/types.h",
     "rmw/qos_profiles.h",
     "hardware_interface/macros.hpp",
+    "rclcpp/any_service_callback.hpp",
     "rclcpp/callback_group.hpp",
     "rclcpp/context.hpp",
     "rclcpp/exceptions.hpp",

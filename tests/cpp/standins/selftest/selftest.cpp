@@ -6,12 +6,16 @@
 
 // ---- headers as a generated driver includes them (stand-ins and real messages) ----
 #ifdef RHI_SELFTEST_VENDOR_MSGS
+#include <aimdk_msgs/msg/common_state.hpp>
 #include <aimdk_msgs/msg/domain_error_state.hpp>
 #include <aimdk_msgs/msg/joint_command.hpp>
 #include <aimdk_msgs/msg/joint_command_array.hpp>
 #include <aimdk_msgs/msg/joint_state.hpp>
 #include <aimdk_msgs/msg/joint_state_array.hpp>
 #include <aimdk_msgs/msg/message_header.hpp>
+#include <aimdk_msgs/msg/system_status.hpp>
+#include <aimdk_msgs/srv/get_system_state.hpp>
+#include <aimdk_msgs/srv/migrate_system_state.hpp>
 #include <interface_protocol/msg/imu_info.hpp>
 #include <interface_protocol/msg/joint_command.hpp>
 #include <interface_protocol/msg/joint_state.hpp>
@@ -30,12 +34,16 @@
 #include <hardware_interface/version.h>
 #include <hardware_interface/visibility_control.h>
 #include <lifecycle_msgs/msg/state.hpp>
+#include <lifecycle_msgs/srv/change_state.hpp>
+#include <lifecycle_msgs/srv/get_state.hpp>
 #include <pluginlib/class_list_macros.hpp>
+#include <rclcpp/client.hpp>
 #include <rclcpp/clock.hpp>
 #include <rclcpp/duration.hpp>
 #include <rclcpp/executors.hpp>
 #include <rclcpp/executors/multi_threaded_executor.hpp>
 #include <rclcpp/executors/single_threaded_executor.hpp>
+#include <rclcpp/future_return_code.hpp>
 #include <rclcpp/logging.hpp>
 #include <rclcpp/macros.hpp>
 #include <rclcpp/node.hpp>
@@ -44,6 +52,7 @@
 #include <rclcpp/parameter_value.hpp>
 #include <rclcpp/qos.hpp>
 #include <rclcpp/rclcpp.hpp>
+#include <rclcpp/service.hpp>
 #include <rclcpp/time.hpp>
 #include <rclcpp_lifecycle/node_interfaces/lifecycle_node_interface.hpp>
 #include <rclcpp_lifecycle/state.hpp>
@@ -84,6 +93,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <future>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -703,6 +713,343 @@ static void test_concurrency()
   (void)rhi_fake::logs::lines();
 }
 
+// ============================================================== services (clients and servers)
+// Real service types from the wheels (lifecycle_msgs/srv), so this runs on every machine; the AimDK
+// system-state services are in test_vendor_messages().
+namespace srv_test {
+using ChangeState = lifecycle_msgs::srv::ChangeState;
+using GetState = lifecycle_msgs::srv::GetState;
+
+static ChangeState::Request::SharedPtr change(uint8_t id, const char * label)
+{
+  auto request = std::make_shared<ChangeState::Request>();
+  request->transition.id = id;
+  request->transition.label = label;
+  return request;
+}
+
+template<typename FutureT>
+static bool is_ready(const FutureT & future)
+{
+  return future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+// The server callback forms rclcpp::AnyServiceCallback accepts, as a free function and a member.
+static void plain_callback(
+  const std::shared_ptr<ChangeState::Request> request, std::shared_ptr<ChangeState::Response> response)
+{
+  response->success = request->transition.id == 3;
+}
+
+struct Deferring
+{
+  std::mutex mutex;
+  std::vector<std::pair<rmw_request_id_t, std::shared_ptr<ChangeState::Request>>> waiting;
+  void on_request(
+    std::shared_ptr<rmw_request_id_t> header, std::shared_ptr<ChangeState::Request> request)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    waiting.emplace_back(*header, std::move(request));
+  }
+};
+}  // namespace srv_test
+
+static void test_services()
+{
+  using namespace srv_test;
+  using namespace std::chrono_literals;
+  rhi_fake::reset_all();
+  rclcpp::init(0, nullptr);
+
+  // ---- QoS presets and the distro's create_* overloads ----
+  rclcpp::ServicesQoS services_qos;
+  CHECK(services_qos.depth() == 10 && services_qos.reliability() == rclcpp::ReliabilityPolicy::Reliable);
+  CHECK(services_qos.durability() == rclcpp::DurabilityPolicy::Volatile);
+  CHECK(rmw_qos_profile_services_default.depth == 10);
+  CHECK(rclcpp::to_string(rclcpp::FutureReturnCode::SUCCESS) == "SUCCESS (0)");
+  CHECK(rclcpp::to_string(rclcpp::FutureReturnCode::TIMEOUT) == "TIMEOUT (2)");
+
+  auto server_node = std::make_shared<rclcpp::Node>("srv_server", "/robot");
+  auto client_node = std::make_shared<rclcpp::Node>("srv_client", "/robot");
+  CHECK_THROWS(
+    rclcpp::exceptions::InvalidServiceNameError,
+    client_node->create_client<ChangeState>("bad name"));
+  CHECK_THROWS(
+    rclcpp::exceptions::InvalidServiceNameError,
+    server_node->create_service<ChangeState>("1bad", &plain_callback));
+
+  // A client first: no server yet.
+#if HARDWARE_INTERFACE_VERSION_MAJOR < 3
+  auto client = client_node->create_client<ChangeState>("change_state", rmw_qos_profile_services_default);
+#else
+  auto client = client_node->create_client<ChangeState>("change_state", rclcpp::ServicesQoS());
+#endif
+  CHECK(std::string(client->get_service_name()) == "/robot/change_state");
+  CHECK(client->get_request_publisher_actual_qos().depth() == 10);
+  CHECK(!client->service_is_ready() && !client->wait_for_service(0s));
+  const auto t0 = std::chrono::steady_clock::now();
+  CHECK(!client->wait_for_service(30ms));
+  CHECK(std::chrono::steady_clock::now() - t0 >= 25ms);
+  // a request without a server is lost (rmw sends it to nobody), but it is counted
+  auto lost = client->async_send_request(change(3, "activate"));
+  CHECK(lost.request_id == 1 && !is_ready(lost));
+  CHECK(rhi_fake::services::call_count("/robot/change_state") == 1);
+  CHECK(client->remove_pending_request(lost) && !client->remove_pending_request(lost.request_id));
+
+  auto server = server_node->create_service<ChangeState>("change_state", &plain_callback);
+  CHECK(std::string(server->get_service_name()) == "/robot/change_state");
+  CHECK(client->service_is_ready() && client->wait_for_service(std::chrono::seconds(1)));
+  auto other_type = client_node->create_client<GetState>("change_state");
+  CHECK(!other_type->service_is_ready());   // a server of another type does not match
+  auto private_client = client_node->create_client<GetState>("~/get_state");
+  CHECK(std::string(private_client->get_service_name()) == "/robot/srv_client/get_state");
+
+  // ---- the request waits for the server's node, the response for the client's node ----
+  rclcpp::executors::SingleThreadedExecutor server_exec;
+  rclcpp::executors::SingleThreadedExecutor client_exec;
+  server_exec.add_node(server_node);
+  client_exec.add_node(client_node);
+  auto result = client->async_send_request(change(3, "activate"));
+  static_assert(
+    std::is_same<decltype(result), rclcpp::Client<ChangeState>::FutureAndRequestId>::value, "result");
+  static_assert(
+    std::is_same<decltype(result.future), std::future<ChangeState::Response::SharedPtr>>::value,
+    ".future is a std::future");
+  CHECK(result.request_id == 2 && result.valid());
+  client_exec.spin_some();
+  CHECK(!is_ready(result));            // the server's node has not been spun
+  server_exec.spin_some();
+  CHECK(!is_ready(result));            // answered, but the client's node has not been spun
+  client_exec.spin_some();
+  CHECK(is_ready(result));
+  CHECK(result.get()->success);
+  auto requests = rhi_fake::services::requests<ChangeState>("robot/change_state");
+  CHECK(requests.size() == 2 && requests[1].transition.label == "activate");
+
+  // ---- spin_until_future_complete: the executor's and rclcpp's; share(); timeouts ----
+  auto second = client->async_send_request(change(4, "deactivate"));
+  rclcpp::Client<ChangeState>::SharedFuture shared = second.share();
+  server_exec.spin_some();
+  CHECK(client_exec.spin_until_future_complete(shared, 1s) == rclcpp::FutureReturnCode::SUCCESS);
+  CHECK(!shared.get()->success);
+  CHECK(client_exec.spin_until_future_complete(shared) == rclcpp::FutureReturnCode::SUCCESS);   // ready
+  auto nobody = client->async_send_request(change(3, "activate"));   // the server's node is not spun
+  CHECK(client_exec.spin_until_future_complete(nobody, 20ms) == rclcpp::FutureReturnCode::TIMEOUT);
+  CHECK_THROWS(std::runtime_error, rclcpp::spin_until_future_complete(client_node, nobody, 20ms));
+  client_exec.remove_node(client_node);
+  server_exec.spin_some();
+  CHECK(rclcpp::spin_until_future_complete(client_node, nobody, 1s) == rclcpp::FutureReturnCode::SUCCESS);
+  CHECK(nobody.future.get()->success);
+
+  // ---- the driver pattern: the client's node spins on its own thread, the caller waits ----
+  std::atomic<bool> server_returned{false};
+  std::atomic<bool> client_returned{false};
+  std::thread server_spin([&]() {server_exec.spin(); server_returned = true;});
+  client_exec.add_node(client_node);
+  std::thread client_spin([&]() {client_exec.spin(); client_returned = true;});
+  CHECK(rhi_fake::ros::wait_spinning_executors(2, 10000ms));
+  auto waited = client->async_send_request(change(3, "activate"));
+  CHECK(waited.wait_for(5s) == std::future_status::ready && waited.get()->success);
+
+  // callback forms: SharedFuture, SharedFutureWithRequest (run on the client's spin thread)
+  std::promise<bool> got_plain;
+  auto with_cb = client->async_send_request(
+    change(3, "activate"),
+    [&got_plain](rclcpp::Client<ChangeState>::SharedFuture future) {got_plain.set_value(future.get()->success);});
+  static_assert(
+    std::is_same<decltype(with_cb), rclcpp::Client<ChangeState>::SharedFutureAndRequestId>::value, "cb");
+  CHECK(got_plain.get_future().wait_for(5s) == std::future_status::ready);
+  CHECK(with_cb.future.get()->success);
+  std::promise<std::string> got_pair;
+  auto with_req = client->async_send_request(
+    change(4, "deactivate"),
+    [&got_pair](rclcpp::Client<ChangeState>::SharedFutureWithRequest future) {
+      got_pair.set_value(future.get().first->transition.label + (future.get().second->success ? "+" : "-"));
+    });
+  auto pair_future = got_pair.get_future();
+  CHECK(pair_future.wait_for(5s) == std::future_status::ready && pair_future.get() == "deactivate-");
+  CHECK(with_req.future.get().first->transition.id == 4);
+
+  // many requests from several threads (TSan): every future completes
+  {
+    std::vector<std::thread> senders;
+    std::atomic<int> ok{0};
+    for (int t = 0; t < 3; ++t) {
+      senders.emplace_back([&]() {
+          for (int i = 0; i < 50; ++i) {
+            auto f = client->async_send_request(change(3, "activate"));
+            if (f.wait_for(10s) == std::future_status::ready && f.get()->success) {++ok;}
+          }
+        });
+    }
+    for (auto & t : senders) {t.join();}
+    CHECK(ok == 150);
+  }
+  CHECK(stop_spinning(server_exec, server_returned));
+  server_spin.join();
+
+  // ---- server forms: request header; deferred responses (also with the service handle) ----
+  std::atomic<int64_t> seen_sequence{-1};
+  auto with_header = server_node->create_service<ChangeState>(
+    "with_header",
+    [&seen_sequence](
+      const std::shared_ptr<rmw_request_id_t> header, const std::shared_ptr<ChangeState::Request> request,
+      std::shared_ptr<ChangeState::Response> response) {
+      seen_sequence = header->sequence_number;
+      response->success = request->transition.id == 1;
+    });
+  auto header_client = client_node->create_client<ChangeState>("with_header");
+  Deferring deferring;
+  auto deferred = server_node->create_service<ChangeState>(
+    "deferred",
+    std::bind(&Deferring::on_request, &deferring, std::placeholders::_1, std::placeholders::_2));
+  auto deferred_client = client_node->create_client<ChangeState>("deferred");
+  std::atomic<int> handle_calls{0};
+  auto deferred_handle = server_node->create_service<ChangeState>(
+    "deferred_handle",
+    [&handle_calls](
+      std::shared_ptr<rclcpp::Service<ChangeState>> service, std::shared_ptr<rmw_request_id_t> header,
+      std::shared_ptr<ChangeState::Request> request) {
+      ++handle_calls;
+      ChangeState::Response response;
+      response.success = request->transition.id == 7;
+      service->send_response(*header, response);   // answered at once, through the handle
+    });
+  auto handle_client = client_node->create_client<ChangeState>("deferred_handle");
+  // a server callback taking a const request (callable as exactly one form) is accepted too
+  auto const_request = server_node->create_service<GetState>(
+    "get_state",
+    [](std::shared_ptr<const GetState::Request>, std::shared_ptr<GetState::Response> response) {
+      response->current_state.id = lifecycle_msgs::msg::State::PRIMARY_STATE_ACTIVE;
+    });
+  server_returned = false;
+  std::thread server_spin2([&]() {server_exec.spin(); server_returned = true;});
+  CHECK(rhi_fake::ros::wait_spinning_executors(2, 10000ms));
+
+  auto h1 = header_client->async_send_request(change(1, "configure"));
+  CHECK(h1.wait_for(5s) == std::future_status::ready && h1.get()->success);
+  CHECK(seen_sequence == h1.request_id);
+  auto d1 = deferred_client->async_send_request(change(9, "later"));
+  CHECK(eventually([&]() {std::lock_guard<std::mutex> lock(deferring.mutex); return deferring.waiting.size() == 1;}));
+  CHECK(d1.wait_for(20ms) == std::future_status::timeout);   // no response until send_response()
+  {
+    std::lock_guard<std::mutex> lock(deferring.mutex);
+    ChangeState::Response late;
+    late.success = deferring.waiting[0].second->transition.label == "later";
+    deferred->send_response(deferring.waiting[0].first, late);   // from the test's thread
+  }
+  CHECK(d1.wait_for(5s) == std::future_status::ready && d1.get()->success);
+  auto d2 = handle_client->async_send_request(change(7, "handle"));
+  CHECK(d2.wait_for(5s) == std::future_status::ready && d2.get()->success && handle_calls == 1);
+  auto g1 = private_client->async_send_request(std::make_shared<GetState::Request>());
+  CHECK(g1.wait_for(20ms) == std::future_status::timeout);   // "~/get_state" is another name
+  auto state_client = client_node->create_client<GetState>("get_state");
+  auto g2 = state_client->async_send_request(std::make_shared<GetState::Request>());
+  CHECK(g2.wait_for(5s) == std::future_status::ready);
+  CHECK(g2.get()->current_state.id == lifecycle_msgs::msg::State::PRIMARY_STATE_ACTIVE);
+
+  // ---- the test plays a server: answer, hold (timeouts), unserve ----
+  const std::string remote = "/system/get_state";
+  auto remote_client = client_node->create_client<GetState>(remote);
+  CHECK(!remote_client->service_is_ready());
+  std::thread late_server([&]() {
+      std::this_thread::sleep_for(30ms);
+      lifecycle_msgs::msg::State active;
+      active.id = 3;
+      active.label = "active";
+      GetState::Response canned;
+      canned.current_state = active;
+      rhi_fake::services::serve<GetState>(remote, canned);
+    });
+  CHECK(remote_client->wait_for_service(5s));   // woken when the server appears
+  late_server.join();
+  auto r1 = remote_client->async_send_request(std::make_shared<GetState::Request>());
+  CHECK(r1.wait_for(5s) == std::future_status::ready && r1.get()->current_state.label == "active");
+  std::atomic<int> handled{0};
+  rhi_fake::services::serve<ChangeState>(
+    "/system/change_state",
+    [&handled](const ChangeState::Request & request, ChangeState::Response & response) {
+      ++handled;
+      response.success = request.transition.label == "configure";
+    });
+  auto remote_change = client_node->create_client<ChangeState>("/system/change_state");
+  auto r2 = remote_change->async_send_request(change(1, "configure"));
+  CHECK(r2.wait_for(5s) == std::future_status::ready && r2.get()->success && handled == 1);
+
+  rhi_fake::services::hold("/system/change_state");
+  CHECK(remote_change->service_is_ready());
+  auto held1 = remote_change->async_send_request(change(1, "configure"));
+  auto held2 = remote_change->async_send_request(change(2, "cleanup"));
+  CHECK(held1.wait_for(30ms) == std::future_status::timeout);   // what a driver's timeout sees
+  CHECK(rhi_fake::services::held_count("/system/change_state") == 2);
+  CHECK(remote_change->remove_pending_request(held2));           // the caller gave up on it
+  ChangeState::Response yes;
+  yes.success = true;
+  CHECK_THROWS(std::logic_error, rhi_fake::services::answer_held<GetState>("/system/change_state", GetState::Response()));
+  CHECK(rhi_fake::services::answer_held<ChangeState>("/system/change_state", yes) == 2);
+  CHECK(held1.wait_for(5s) == std::future_status::ready && held1.get()->success);
+  // removed: its response is ignored, and its promise went with it (a broken promise, as in rclcpp)
+  CHECK(held2.wait_for(0s) == std::future_status::ready);
+  CHECK_THROWS(std::future_error, held2.future.get());
+  CHECK(rhi_fake::services::held_count("/system/change_state") == 0);
+  auto sent = rhi_fake::services::requests<ChangeState>("/system/change_state");
+  CHECK(sent.size() == 3 && sent[2].transition.label == "cleanup");
+  CHECK(rhi_fake::services::call_count("/system/change_state") == 3);
+  CHECK_THROWS(std::logic_error, rhi_fake::services::requests<GetState>("/system/change_state"));
+  auto listed = rhi_fake::services::info("/system/change_state");
+  CHECK(listed && listed->fake == "hold" && listed->clients.size() == 1 && listed->servers.empty());
+  CHECK(listed->clients[0].node == "/robot/srv_client" && listed->clients[0].type_name == "lifecycle_msgs/srv/ChangeState");
+  auto own = rhi_fake::services::info("/robot/change_state");
+  CHECK(own && own->servers.size() == 1 && own->servers[0].node == "/robot/srv_server" && own->fake.empty());
+  rhi_fake::services::unserve("/system/change_state");
+  CHECK(!remote_change->service_is_ready() && !remote_change->wait_for_service(10ms));
+
+  // prune: pending requests sent before a time point, then all
+  rhi_fake::services::hold("/system/change_state");
+  auto p1 = remote_change->async_send_request(change(1, "a"));
+  const auto cut = std::chrono::system_clock::now() + 1s;
+  auto p2 = remote_change->async_send_request(change(1, "b"));
+  std::vector<int64_t> pruned;
+  CHECK(remote_change->prune_requests_older_than(cut, &pruned) == 2 && pruned.size() == 2);
+  auto p3 = remote_change->async_send_request(change(1, "c"));
+  CHECK(remote_change->prune_pending_requests() == 1 && remote_change->prune_pending_requests() == 0);
+  CHECK_THROWS(std::future_error, p1.future.get());
+  CHECK(rhi_fake::services::answer_held<ChangeState>("/system/change_state", yes) == 3);   // ignored
+
+  // rhi_fake::services::call: the test calls an in-process server now, on this thread
+  auto called = rhi_fake::services::call<ChangeState>("/robot/change_state", *change(3, "activate"));
+  CHECK(called && called->success);
+  CHECK(!rhi_fake::services::call<ChangeState>("/robot/deferred", *change(1, "x")));   // deferred
+  CHECK(!rhi_fake::services::call<ChangeState>("/nobody", *change(1, "x")));
+
+  // a destroyed client breaks its pending futures (its promises go away)
+  auto doomed_client = client_node->create_client<ChangeState>("/system/change_state");
+  auto doomed = doomed_client->async_send_request(change(1, "doomed"));
+  doomed_client.reset();
+  CHECK_THROWS(std::future_error, doomed.future.get());
+  CHECK(rhi_fake::services::answer_held<ChangeState>("/system/change_state", yes) == 0);   // client gone
+
+  // INTERRUPTED: cancel() while spin_until_future_complete waits
+  CHECK(stop_spinning(client_exec, client_returned));
+  client_spin.join();
+  std::promise<void> never;
+  auto never_future = never.get_future().share();
+  std::atomic<bool> interrupted{false};
+  std::thread waiter([&]() {
+      interrupted = client_exec.spin_until_future_complete(never_future) == rclcpp::FutureReturnCode::INTERRUPTED;
+    });
+  CHECK(rhi_fake::ros::wait_spinning_executors(2, 10000ms));
+  CHECK(stop_spinning(client_exec, interrupted));
+  waiter.join();
+  CHECK(interrupted);
+
+  CHECK(stop_spinning(server_exec, server_returned));
+  server_spin2.join();
+  (void)p2; (void)p3;
+  rhi_fake::reset_all();
+  CHECK(rhi_fake::services::list().empty());
+}
+
 // ============================================================== unitree_sdk2
 namespace g1 {
 using LowCmd = unitree_hg::msg::dds_::LowCmd_;
@@ -1039,9 +1386,67 @@ static void test_vendor_messages()
   CHECK(sub_info && sub_info->subscriptions[0].type_name == "aimdk_msgs/msg/JointStateArray");
   CHECK(rhi_fake::ros::deliver("/aima/hal/joint/leg/state", interface_protocol::msg::JointState()) == 0);
 
+  // ---- the AimDK system-state services (what an X2 driver calls on activation/deactivation) ----
+  using Migrate = aimdk_msgs::srv::MigrateSystemState;
+  using GetSystemState = aimdk_msgs::srv::GetSystemState;
+  static_assert(rosidl_generator_traits::is_service<Migrate>::value, "srv");
+  static_assert(std::is_same<decltype(Migrate::Request().state), std::string>::value, "state");
+  static_assert(std::is_same<decltype(Migrate::Response().header.status.value), int32_t>::value, "status");
+  static_assert(std::is_same<decltype(Migrate::Response().header.header.code), int64_t>::value, "code");
+  static_assert(aimdk_msgs::msg::CommonState::SUCCESS == 1 && aimdk_msgs::msg::CommonState::RUNNING == 400, "CommonState");
+  static_assert(aimdk_msgs::msg::SystemStatus::IN_READY == 1 && aimdk_msgs::msg::SystemStatus::IN_FALLBACK_MOVE == 5, "SystemStatus");
+  CHECK(std::string(rosidl_generator_traits::name<Migrate>()) == "aimdk_msgs/srv/MigrateSystemState");
+  const std::string migrate_name = "/aimdk_5Fmsgs/srv/MigrateSystemState";
+  const std::string get_name = "/aimdk_5Fmsgs/srv/GetSystemState";
+  auto migrate = node->create_client<Migrate>(migrate_name);
+  auto get_state = node->create_client<GetSystemState>(get_name);
+  CHECK(std::string(migrate->get_service_name()) == migrate_name && !migrate->wait_for_service(std::chrono::milliseconds(0)));
+  // the test plays the AimDK system-state manager (another process on the robot)
+  rhi_fake::services::serve<Migrate>(
+    migrate_name, [](const Migrate::Request & request, Migrate::Response & response) {
+      response.header.status.value = request.state.empty() ?
+        aimdk_msgs::msg::CommonState::INVALID : aimdk_msgs::msg::CommonState::SUCCESS;
+      response.header.header.stamp.sec = 12;
+    });
+  GetSystemState::Response ready;
+  ready.cur_state = "state_a";
+  ready.curr_status.value = aimdk_msgs::msg::SystemStatus::IN_READY;
+  rhi_fake::services::serve<GetSystemState>(get_name, ready);
+  CHECK(migrate->wait_for_service(std::chrono::milliseconds(100)) && get_state->service_is_ready());
+  rclcpp::executors::SingleThreadedExecutor exec;
+  exec.add_node(node);
+  std::atomic<bool> spin_returned{false};
+  std::thread spinner([&]() {exec.spin(); spin_returned = true;});
+  CHECK(rhi_fake::ros::wait_spinning_executors(1, std::chrono::milliseconds(10000)));
+  auto request = std::make_shared<Migrate::Request>();
+  request->header.header.stamp.sec = 11;
+  request->state = "state_b";
+  auto migrated = migrate->async_send_request(request);
+  CHECK(migrated.wait_for(std::chrono::seconds(5)) == std::future_status::ready);
+  auto migrated_response = migrated.get();
+  CHECK(migrated_response->header.status.value == aimdk_msgs::msg::CommonState::SUCCESS);
+  CHECK(migrated_response->header.header.stamp.sec == 12);
+  auto status = get_state->async_send_request(std::make_shared<GetSystemState::Request>());
+  CHECK(status.wait_for(std::chrono::seconds(5)) == std::future_status::ready);
+  auto status_response = status.get();
+  CHECK(status_response->cur_state == "state_a" &&
+    status_response->curr_status.value == aimdk_msgs::msg::SystemStatus::IN_READY);
+  auto sent = rhi_fake::services::requests<Migrate>(migrate_name);
+  CHECK(sent.size() == 1 && sent[0].state == "state_b" && sent[0].header.header.stamp.sec == 11);
+  // the manager does not answer: the driver's wait times out
+  rhi_fake::services::hold(migrate_name);
+  auto unanswered = migrate->async_send_request(request);
+  CHECK(unanswered.wait_for(std::chrono::milliseconds(30)) == std::future_status::timeout);
+  CHECK(migrate->remove_pending_request(unanswered) && rhi_fake::services::held_count(migrate_name) == 1);
+  CHECK(rhi_fake::services::call_count(migrate_name) == 2);
+  CHECK(stop_spinning(exec, spin_returned));
+  spinner.join();
+
   sub.reset();
   cmd_pub.reset();
   arr_pub.reset();
+  migrate.reset();
+  get_state.reset();
   node.reset();
   rhi_fake::reset_all();
 }
@@ -1055,6 +1460,7 @@ int main()
   test_rclcpp();
   test_parameters();
   test_concurrency();
+  test_services();
   test_unitree();
   test_reset();
 #ifdef RHI_SELFTEST_VENDOR_MSGS

@@ -62,6 +62,13 @@ public:
   : NameValidationError("topic name", topic_name, error_msg_, invalid_index_) {}
 };
 
+class InvalidServiceNameError : public NameValidationError
+{
+public:
+  InvalidServiceNameError(const char * service_name, const char * error_msg_, size_t invalid_index_)
+  : NameValidationError("service name", service_name, error_msg_, invalid_index_) {}
+};
+
 class ParameterAlreadyDeclaredException : public std::runtime_error
 {
   using std::runtime_error::runtime_error;

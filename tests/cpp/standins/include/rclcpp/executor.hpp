@@ -8,12 +8,19 @@
 //  * spin() also returns when rclcpp::shutdown() is called;
 //  * add_node() of a node that is already in an executor throws std::runtime_error;
 //    remove_node() of a node that is not in this executor throws std::runtime_error;
-//  * is_spinning() (every distro, Humble since rclcpp 16.0.0) is true while inside spin()/spin_some().
+//  * is_spinning() (every distro, Humble since rclcpp 16.0.0) is true while inside spin()/spin_some()/
+//    spin_until_future_complete();
+//  * spin_until_future_complete(future, timeout) (every distro; also rclcpp::spin_until_future_complete
+//    in rclcpp/executors.hpp) returns SUCCESS when the future is ready (at once if it already is),
+//    TIMEOUT after `timeout` (negative: never), INTERRUPTED on cancel()/shutdown(); it throws if the
+//    executor is already spinning.
 //
 // Fake behaviour: spin() blocks (no busy loop) until cancel()/shutdown(). Subscriptions are fed by
-// the test (rhi_fake::ros::deliver, on the test's thread). Wall timers of the executor's nodes fire
-// inside spin() only after rhi_fake::ros::set_realtime_timers(true); otherwise only when the test
-// calls rhi_fake::ros::fire_timers().
+// the test (rhi_fake::ros::deliver, on the test's thread). Service requests and responses queued on
+// the executor's nodes (rclcpp/client.hpp, rclcpp/service.hpp) run inside spin(), spin_some() and
+// spin_until_future_complete(), on the spinning thread, in the order they arrived. Wall timers of the
+// executor's nodes fire inside spin() only after rhi_fake::ros::set_realtime_timers(true); otherwise
+// only when the test calls rhi_fake::ros::fire_timers().
 #ifndef RCLCPP__EXECUTOR_HPP_
 #define RCLCPP__EXECUTOR_HPP_
 
@@ -23,6 +30,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -30,6 +38,7 @@
 #include <vector>
 
 #include "rclcpp/context.hpp"
+#include "rclcpp/future_return_code.hpp"
 #include "rclcpp/macros.hpp"
 #include "rclcpp/node.hpp"
 #include "rclcpp/node_interfaces/node_base_interface.hpp"
@@ -134,9 +143,69 @@ public:
       ::rhi_fake::detail::ExecutorCore & c;
       ~Reset() {c.spinning.store(false);}
     } reset{*core_};
+    run_node_work();
     if (::rhi_fake::detail::ros_registry().realtime_timers.load()) {
       fire_due_timers(rclcpp::TimerBase::steady_now_ns());
     }
+  }
+
+  /// Spin this executor's nodes until `future` is ready (SUCCESS), `timeout` passed (TIMEOUT; a
+  /// negative timeout never passes) or cancel()/shutdown() (INTERRUPTED).
+  template<typename FutureT, typename TimeRepT = int64_t, typename TimeT = std::milli>
+  FutureReturnCode
+  spin_until_future_complete(
+    const FutureT & future,
+    std::chrono::duration<TimeRepT, TimeT> timeout = std::chrono::duration<TimeRepT, TimeT>(-1))
+  {
+    if (future.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+      return FutureReturnCode::SUCCESS;
+    }
+    const auto timeout_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(timeout);
+    const auto end_time = std::chrono::steady_clock::now() +
+      (timeout_ns > std::chrono::nanoseconds::zero() ? timeout_ns : std::chrono::nanoseconds::zero());
+    if (core_->spinning.exchange(true)) {
+      throw std::runtime_error("spin_until_future_complete() called while already spinning");
+    }
+    struct Reset
+    {
+      ::rhi_fake::detail::ExecutorCore & c;
+      ~Reset() {c.spinning.store(false);}
+    } reset{*core_};
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    while (rclcpp::ok() && core_->spinning.load()) {
+      std::uint64_t gen = 0;
+      {
+        std::lock_guard<std::mutex> lock(core_->mutex);
+        gen = core_->wake_generation;
+      }
+      run_node_work();
+      std::int64_t wait_ns = 10 * 1000 * 1000;   // also notices futures set by other threads
+      if (reg.realtime_timers.load()) {
+        const std::int64_t next_due = fire_due_timers(rclcpp::TimerBase::steady_now_ns());
+        if (next_due != INT64_MAX) {
+          wait_ns = std::max<std::int64_t>(
+            0, std::min<std::int64_t>(wait_ns, next_due - rclcpp::TimerBase::steady_now_ns()));
+        }
+      }
+      if (future.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+        return FutureReturnCode::SUCCESS;
+      }
+      if (timeout_ns >= std::chrono::nanoseconds::zero()) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now >= end_time) {
+          return FutureReturnCode::TIMEOUT;
+        }
+        wait_ns = std::min<std::int64_t>(
+          wait_ns, std::chrono::duration_cast<std::chrono::nanoseconds>(end_time - now).count());
+      }
+      std::unique_lock<std::mutex> lock(core_->mutex);
+      if (wait_ns > 0) {
+        core_->cv.wait_for(
+          lock, std::chrono::nanoseconds(wait_ns),
+          [&] {return core_->wake_generation != gen || !core_->spinning.load();});
+      }
+    }
+    return FutureReturnCode::INTERRUPTED;
   }
 
   /// Stop spin(): clears the spinning flag and wakes the spinning thread.
@@ -185,6 +254,12 @@ protected:
     reg.spin_state_cv.notify_all();
 
     while (rclcpp::ok() && core_->spinning.load()) {
+      std::uint64_t gen = 0;   // read before the work: a later post_work() changes it, no lost wake-up
+      {
+        std::lock_guard<std::mutex> lock(core_->mutex);
+        gen = core_->wake_generation;
+      }
+      run_node_work();
       std::int64_t wait_ns = 50 * 1000 * 1000;   // re-check ok()/mode at least every 50 ms
       if (reg.realtime_timers.load()) {
         std::int64_t now = rclcpp::TimerBase::steady_now_ns();
@@ -195,7 +270,6 @@ protected:
         }
       }
       std::unique_lock<std::mutex> lock(core_->mutex);
-      const std::uint64_t gen = core_->wake_generation;
       if (!core_->spinning.load()) {
         break;
       }
@@ -205,6 +279,26 @@ protected:
           [&] {return core_->wake_generation != gen || !core_->spinning.load();});
       }
     }
+  }
+
+  /// Runs the queued service requests/responses of this executor's nodes (rhi_fake/detail/ros_core.hpp).
+  std::size_t run_node_work()
+  {
+    std::array<std::shared_ptr<::rhi_fake::detail::NodeCore>, ::rhi_fake::detail::kMaxFanout> nodes;
+    std::size_t n = 0;
+    {
+      std::lock_guard<std::mutex> lock(nodes_mutex_);
+      for (const auto & node : nodes_) {
+        if (n == nodes.size()) {break;}
+        nodes[n++] = node;
+      }
+    }
+    std::size_t ran = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      ran += ::rhi_fake::detail::run_work(*nodes[i]);
+      nodes[i].reset();
+    }
+    return ran;
   }
 
   /// Fires every due, non-canceled timer of this executor's nodes; returns the earliest next due

@@ -1,5 +1,7 @@
 // rhi-gen test stand-in (not the real ROS 2 code): rclcpp::Node (ROS 2 Humble API subset):
 // names, logger, clock, now(), create_publisher, create_subscription, create_wall_timer,
+// create_client / create_service (per distro: Humble takes an rmw_qos_profile_t; Jazzy adds the
+// rclcpp::QoS overloads and deprecates the rmw_qos_profile_t ones; Kilted and later only take QoS),
 // get_node_base_interface / get_node_clock_interface / get_node_logging_interface, and statically
 // typed scalar parameters: declare_parameter, get_parameter, set_parameter, add_on_set_parameters_callback
 // (callbacks run newest first, a failed one rejects the set; a value of another type is rejected with
@@ -27,9 +29,12 @@
 #include <vector>
 
 #include "rcl/time.h"
+#include "rhi_fake/detail/distro.hpp"
+#include "rmw/qos_profiles.h"
 #include "rcl_interfaces/msg/parameter_descriptor.hpp"
 #include "rcl_interfaces/msg/set_parameters_result.hpp"
 #include "rclcpp/callback_group.hpp"
+#include "rclcpp/client.hpp"
 #include "rclcpp/clock.hpp"
 #include "rclcpp/context.hpp"
 #include "rclcpp/duration.hpp"
@@ -46,6 +51,7 @@
 #include "rclcpp/publisher.hpp"
 #include "rclcpp/publisher_options.hpp"
 #include "rclcpp/qos.hpp"
+#include "rclcpp/service.hpp"
 #include "rclcpp/subscription.hpp"
 #include "rclcpp/subscription_options.hpp"
 #include "rclcpp/time.hpp"
@@ -116,10 +122,16 @@ inline std::string node_logger_name(const std::string & name, const std::string 
   return prefix.empty() ? name : prefix + "." + name;
 }
 
-/// Expand and validate a topic name the way rcl does for the default (no remapping) case.
-inline std::string expand_topic_name(const std::string & name, const NodeCore & node)
+/// Expand and validate a topic (or service) name the way rcl does for the default (no remapping)
+/// case; an invalid service name throws InvalidServiceNameError (the messages say "topic name", as
+/// rcl's validation does for both).
+inline std::string expand_topic_name(
+  const std::string & name, const NodeCore & node, bool is_service = false)
 {
   auto fail = [&](const char * why, size_t at) {
+      if (is_service) {
+        throw rclcpp::exceptions::InvalidServiceNameError(name.c_str(), why, at);
+      }
       throw rclcpp::exceptions::InvalidTopicNameError(name.c_str(), why, at);
     };
   if (name.empty()) {fail("topic name must not be empty", 0);}
@@ -353,6 +365,82 @@ public:
     return timer;
   }
 
+  // ---------------------------------------------------------------- services
+  // rclcpp 16 (Humble) takes an rmw_qos_profile_t; 21+ adds rclcpp::QoS (default ServicesQoS()) and
+  // deprecates the rmw_qos_profile_t overloads (28, Jazzy); 29+ (Kilted, Rolling) removed them.
+
+#if RHI_FAKE_RCLCPP_MAJOR < 21
+  template<typename ServiceT>
+  typename rclcpp::Client<ServiceT>::SharedPtr
+  create_client(
+    const std::string & service_name,
+    const rmw_qos_profile_t & qos_profile = rmw_qos_profile_services_default,
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    return rhi_create_client<ServiceT>(service_name, qos_profile, std::move(group));
+  }
+
+  template<typename ServiceT, typename CallbackT>
+  typename rclcpp::Service<ServiceT>::SharedPtr
+  create_service(
+    const std::string & service_name,
+    CallbackT && callback,
+    const rmw_qos_profile_t & qos_profile = rmw_qos_profile_services_default,
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    return rhi_create_service<ServiceT>(
+      service_name, std::forward<CallbackT>(callback), qos_profile, std::move(group));
+  }
+#else
+#if RHI_FAKE_RCLCPP_MAJOR < 29
+  template<typename ServiceT>
+  [[deprecated("use rclcpp::QoS instead of rmw_qos_profile_t")]]
+  typename rclcpp::Client<ServiceT>::SharedPtr
+  create_client(
+    const std::string & service_name,
+    const rmw_qos_profile_t & qos_profile,
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    return rhi_create_client<ServiceT>(service_name, qos_profile, std::move(group));
+  }
+
+  template<typename ServiceT, typename CallbackT>
+  [[deprecated("use rclcpp::QoS instead of rmw_qos_profile_t")]]
+  typename rclcpp::Service<ServiceT>::SharedPtr
+  create_service(
+    const std::string & service_name,
+    CallbackT && callback,
+    const rmw_qos_profile_t & qos_profile,
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    return rhi_create_service<ServiceT>(
+      service_name, std::forward<CallbackT>(callback), qos_profile, std::move(group));
+  }
+#endif
+
+  template<typename ServiceT>
+  typename rclcpp::Client<ServiceT>::SharedPtr
+  create_client(
+    const std::string & service_name,
+    const rclcpp::QoS & qos = rclcpp::ServicesQoS(),
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    return rhi_create_client<ServiceT>(service_name, qos.get_rmw_qos_profile(), std::move(group));
+  }
+
+  template<typename ServiceT, typename CallbackT>
+  typename rclcpp::Service<ServiceT>::SharedPtr
+  create_service(
+    const std::string & service_name,
+    CallbackT && callback,
+    const rclcpp::QoS & qos = rclcpp::ServicesQoS(),
+    rclcpp::CallbackGroup::SharedPtr group = nullptr)
+  {
+    return rhi_create_service<ServiceT>(
+      service_name, std::forward<CallbackT>(callback), qos.get_rmw_qos_profile(), std::move(group));
+  }
+#endif
+
   // ---------------------------------------------------------------- parameters
 
   using OnSetParametersCallbackHandle = rclcpp::node_interfaces::OnSetParametersCallbackHandle;
@@ -458,6 +546,66 @@ public:
   }
 
 private:
+  template<typename ServiceT>
+  typename rclcpp::Client<ServiceT>::SharedPtr
+  rhi_create_client(
+    const std::string & service_name, const rmw_qos_profile_t & profile,
+    rclcpp::CallbackGroup::SharedPtr group)
+  {
+    (void)group;   // the fake runs a node's callbacks mutually exclusively
+    const rclcpp::QoS qos(rclcpp::QoSInitialization::from_rmw(profile), profile);
+    const std::string name = ::rhi_fake::detail::expand_topic_name(service_name, *core_, true);
+    auto client = std::make_shared<rclcpp::Client<ServiceT>>(core_, name, qos);
+    std::shared_ptr<::rhi_fake::detail::ResponseSink> sink = client;
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    for (auto it = reg.clients_by_id.begin(); it != reg.clients_by_id.end(); ) {
+      if (it->second.expired()) {
+        it = reg.clients_by_id.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    reg.clients_by_id[client->rhi_id()] = sink;
+    auto & record = reg.services[name];
+    ::rhi_fake::detail::prune_dead(record.clients);
+    record.clients.push_back(
+      ::rhi_fake::detail::make_endpoint(
+        sink, qos, *core_, std::type_index(typeid(ServiceT)),
+        rosidl_generator_traits::name<ServiceT>()));
+    return client;
+  }
+
+  template<typename ServiceT, typename CallbackT>
+  typename rclcpp::Service<ServiceT>::SharedPtr
+  rhi_create_service(
+    const std::string & service_name, CallbackT && callback, const rmw_qos_profile_t & profile,
+    rclcpp::CallbackGroup::SharedPtr group)
+  {
+    (void)group;
+    static_assert(
+      rosidl_generator_traits::is_service<ServiceT>::value,
+      "create_service<ServiceT>: ServiceT must be a ROS service type (<pkg>/srv/<name>.hpp)");
+    rclcpp::AnyServiceCallback<ServiceT> any_callback;
+    any_callback.set(std::forward<CallbackT>(callback));
+    const rclcpp::QoS qos(rclcpp::QoSInitialization::from_rmw(profile), profile);
+    const std::string name = ::rhi_fake::detail::expand_topic_name(service_name, *core_, true);
+    auto service = std::make_shared<rclcpp::Service<ServiceT>>(core_, name, std::move(any_callback), qos);
+    std::shared_ptr<::rhi_fake::detail::RequestSink> sink = service;
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    {
+      std::lock_guard<std::mutex> lock(reg.mutex);
+      auto & record = reg.services[name];
+      ::rhi_fake::detail::prune_dead(record.servers);
+      record.servers.push_back(
+        ::rhi_fake::detail::make_endpoint(
+          sink, qos, *core_, std::type_index(typeid(ServiceT)),
+          rosidl_generator_traits::name<ServiceT>()));
+    }
+    reg.graph_cv.notify_all();
+    return service;
+  }
+
   // The live on-set callbacks, newest first (parameters_mutex_ held).
   std::vector<OnSetParametersCallbackHandle::SharedPtr> live_callbacks() const
   {

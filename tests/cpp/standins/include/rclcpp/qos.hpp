@@ -2,7 +2,7 @@
 // As in rclcpp: QoS(size_t depth) is implicit (keep-last, reliable, volatile); the constructor from
 // a QoSInitialization (KeepLast/KeepAll) is explicit, so `create_publisher<M>(t, rclcpp::KeepLast(1))`
 // does not compile -- write `rclcpp::QoS(rclcpp::KeepLast(1))`. SensorDataQoS = keep last 5,
-// best effort, volatile.
+// best effort, volatile. ServicesQoS = keep last 10, reliable, volatile.
 #ifndef RCLCPP__QOS_HPP_
 #define RCLCPP__QOS_HPP_
 
@@ -181,6 +181,16 @@ public:
     const QoSInitialization & qos_initialization = (
       QoSInitialization::from_rmw(rmw_qos_profile_sensor_data)))
   : QoS(qos_initialization, rmw_qos_profile_sensor_data) {}
+};
+
+/// Keep last 10, reliable, volatile (rmw_qos_profile_services_default); every distro has it.
+class RCLCPP_PUBLIC ServicesQoS : public QoS
+{
+public:
+  explicit ServicesQoS(
+    const QoSInitialization & qos_initialization = (
+      QoSInitialization::from_rmw(rmw_qos_profile_services_default)))
+  : QoS(qos_initialization, rmw_qos_profile_services_default) {}
 };
 
 class RCLCPP_PUBLIC SystemDefaultsQoS : public QoS

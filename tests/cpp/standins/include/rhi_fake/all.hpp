@@ -1,4 +1,4 @@
-// rhi-gen test hooks: everything (hw facade, logs, plugins, ros, unitree), plus reset_all(). Test
+// rhi-gen test hooks: everything (hw facade, logs, plugins, ros, services, unitree), plus reset_all(). Test
 // code only.
 #pragma once
 
@@ -6,6 +6,7 @@
 #include "rhi_fake/logs.hpp"
 #include "rhi_fake/plugins.hpp"
 #include "rhi_fake/ros.hpp"
+#include "rhi_fake/services.hpp"
 #include "rhi_fake/unitree.hpp"
 
 namespace rhi_fake {

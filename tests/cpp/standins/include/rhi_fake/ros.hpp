@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -364,18 +366,22 @@ inline void use_system_time()
 
 // ------------------------------------------------------------------ reset
 
-/// Forget topics, timers and executors, switch real-time timers off, go back to system time and
+/// Forget topics, services (and the test's servers: rhi_fake/services.hpp), timers and executors,
+/// switch real-time timers off, go back to system time and
 /// un-initialize rclcpp (spinning executors return). Call only when no driver is alive.
 inline void reset()
 {
   rclcpp::shutdown();
   auto & reg = ::rhi_fake::detail::ros_registry();
+  std::map<std::string, ::rhi_fake::detail::ServiceRecord, std::less<>> services;   // freed unlocked
   {
     std::lock_guard<std::mutex> lock(reg.mutex);
     reg.topics.clear();
     reg.timers.clear();
     reg.executors.clear();
     reg.realtime_timers.store(false);
+    services.swap(reg.services);
+    reg.clients_by_id.clear();
   }
   use_system_time();
 }

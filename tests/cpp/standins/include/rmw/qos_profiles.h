@@ -18,6 +18,13 @@ static const rmw_qos_profile_t rmw_qos_profile_default =
   RMW_QOS_POLICY_LIVELINESS_SYSTEM_DEFAULT, RMW_DURATION_DEFAULT, false
 };
 
+static const rmw_qos_profile_t rmw_qos_profile_services_default =
+{
+  RMW_QOS_POLICY_HISTORY_KEEP_LAST, 10, RMW_QOS_POLICY_RELIABILITY_RELIABLE,
+  RMW_QOS_POLICY_DURABILITY_VOLATILE, RMW_DURATION_DEFAULT, RMW_DURATION_DEFAULT,
+  RMW_QOS_POLICY_LIVELINESS_SYSTEM_DEFAULT, RMW_DURATION_DEFAULT, false
+};
+
 static const rmw_qos_profile_t rmw_qos_profile_system_default =
 {
   RMW_QOS_POLICY_HISTORY_SYSTEM_DEFAULT, RMW_QOS_POLICY_DEPTH_SYSTEM_DEFAULT,

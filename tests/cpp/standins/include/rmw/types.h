@@ -1,10 +1,13 @@
-// rhi-gen test stand-in (not the real ROS 2 code): rmw QoS types as in ROS 2 Humble.
+// rhi-gen test stand-in (not the real ROS 2 code): rmw QoS types as in ROS 2 Humble, and the
+// service request id.
 #ifndef RMW__TYPES_H_
 #define RMW__TYPES_H_
 
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+
+#include "rhi_fake/detail/distro.hpp"
 
 typedef struct rmw_time_s
 {
@@ -60,5 +63,19 @@ typedef struct rmw_qos_profile_s
   rmw_time_t liveliness_lease_duration;
   bool avoid_ros_namespace_conventions;
 } rmw_qos_profile_t;
+
+/* Humble (rmw 6.1): 24 bytes; Iron and later: 16. */
+#if RHI_FAKE_RCLCPP_MAJOR >= 21
+#define RMW_GID_STORAGE_SIZE 16u
+#else
+#define RMW_GID_STORAGE_SIZE 24u
+#endif
+
+/* An rmw service request identifier (the fake writes the client's id into writer_guid). */
+typedef struct rmw_request_id_s
+{
+  uint8_t writer_guid[RMW_GID_STORAGE_SIZE];
+  int64_t sequence_number;
+} rmw_request_id_t;
 
 #endif  // RMW__TYPES_H_

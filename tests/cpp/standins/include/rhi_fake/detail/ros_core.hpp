@@ -1,7 +1,9 @@
 // rhi-gen test stand-in (not the real ROS 2 code). Process-wide state of the fake rclcpp:
-// init/shutdown, topics (publishers, subscriptions, last published message), wall timers and
-// executors. Everything is guarded by RosRegistry::mutex; the per-message hot paths (publish,
-// deliver, timer firing) take only short locks and never allocate once warmed up.
+// init/shutdown, topics (publishers, subscriptions, last published message), services (servers,
+// clients, the test's fake servers, the requests sent), wall timers and executors. Everything is
+// guarded by RosRegistry::mutex; the per-message hot paths (publish, deliver, timer firing) take
+// only short locks and never allocate once warmed up. Service requests and responses are queued on
+// the receiving node (NodeCore::work) and run when an executor spins that node.
 #pragma once
 
 #include <array>
@@ -11,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -27,6 +30,8 @@ namespace rclcpp
 class PublisherBase;
 class SubscriptionBase;
 class TimerBase;
+class ClientBase;
+class ServiceBase;
 }  // namespace rclcpp
 
 namespace rhi_fake {
@@ -57,6 +62,10 @@ struct NodeCore
   std::recursive_mutex callback_mutex;
   /// Executor this node was added to (nullptr: none).
   std::atomic<ExecutorCore *> executor{nullptr};
+  /// Service requests for this node's services and responses for its clients, oldest first: an
+  /// executor spinning this node runs them (under callback_mutex), as rclcpp takes them from rmw.
+  std::mutex work_mutex;
+  std::deque<std::function<void()>> work;   // under work_mutex
 };
 
 /// Last message published on a topic (type-erased base).
@@ -97,6 +106,57 @@ struct TopicRecord
   std::vector<EndpointEntry> subscriptions;
 };
 
+/// What a client is to the registry: where the responses to its requests go.
+class ResponseSink
+{
+public:
+  virtual ~ResponseSink() = default;
+  virtual std::shared_ptr<NodeCore> rhi_sink_node() const = 0;
+  /// Runs on the thread spinning rhi_sink_node(), under its callback mutex.
+  virtual void rhi_take_response(std::int64_t sequence_number, std::shared_ptr<void> response) = 0;
+};
+
+/// What a service server is to the registry: where the requests for its name go.
+class RequestSink
+{
+public:
+  virtual ~RequestSink() = default;
+  virtual std::shared_ptr<NodeCore> rhi_sink_node() const = 0;
+  /// Runs on the thread spinning rhi_sink_node(), under its callback mutex.
+  virtual void rhi_take_request(
+    std::uint64_t client_id, std::int64_t sequence_number, std::shared_ptr<void> request) = 0;
+};
+
+/// The server the test plays for a service name (rhi_fake/services.hpp).
+struct FakeServer
+{
+  enum class Mode {Answer, Hold};
+  Mode mode = Mode::Answer;
+  std::type_index type{typeid(void)};   // ServiceT (Answer); typeid(void): any type (Hold)
+  const char * type_name = "";
+  /// Answer mode: makes the response (a shared_ptr<ServiceT::Response>) from the request.
+  std::function<std::shared_ptr<void>(const void * request)> answer;
+};
+
+/// A request the test's server holds (Hold mode): where its response must go.
+struct HeldRequest
+{
+  std::uint64_t client_id;
+  std::int64_t sequence_number;
+  std::type_index type;
+};
+
+struct ServiceRecord
+{
+  std::vector<EndpointEntry> servers;   // owner: rclcpp::ServiceBase
+  std::vector<EndpointEntry> clients;   // owner: rclcpp::ClientBase
+  std::shared_ptr<FakeServer> fake;      // set by the test, or null
+  std::vector<HeldRequest> held;         // Hold mode
+  // every request sent to this name, oldest first (copies of ServiceT::Request)
+  std::vector<std::pair<std::type_index, std::shared_ptr<const void>>> requests;
+  std::uint64_t calls = 0;
+};
+
 struct ExecutorCore
 {
   std::mutex mutex;
@@ -115,6 +175,12 @@ struct RosRegistry
   std::vector<std::weak_ptr<rclcpp::TimerBase>> timers;
   std::vector<std::weak_ptr<ExecutorCore>> executors;
   std::atomic<bool> realtime_timers{false};
+  std::map<std::string, ServiceRecord, std::less<>> services;
+  /// Clients by the id written into their requests' rmw_request_id_t::writer_guid (responses are
+  /// routed back through it, also those a deferred service callback sends later).
+  std::map<std::uint64_t, std::weak_ptr<ResponseSink>> clients_by_id;
+  std::uint64_t next_client_id = 1;
+  std::condition_variable graph_cv;        // notified when a server (real or fake) appears
 };
 
 inline RosRegistry & ros_registry()
@@ -140,6 +206,80 @@ inline void wake_all_executors()
       core->wake_generation++;
     }
     core->cv.notify_all();
+  }
+}
+
+/// Queue `fn` on `node` (a service request or response) and wake the executors: the one spinning
+/// `node` runs it. Call without holding the registry mutex.
+inline void post_work(const std::shared_ptr<NodeCore> & node, std::function<void()> fn)
+{
+  {
+    std::lock_guard<std::mutex> lock(node->work_mutex);
+    node->work.push_back(std::move(fn));
+  }
+  wake_all_executors();
+}
+
+/// Queue the response to request `sequence_number` of client `client_id` on the client's node (it
+/// completes the client's future when that node is spun). False if the client no longer exists.
+inline bool route_response(
+  std::uint64_t client_id, std::int64_t sequence_number, std::shared_ptr<void> response)
+{
+  std::shared_ptr<ResponseSink> client;   // released outside the registry lock (it may be the last owner)
+  {
+    RosRegistry & reg = ros_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    auto it = reg.clients_by_id.find(client_id);
+    if (it != reg.clients_by_id.end()) {
+      client = it->second.lock();
+    }
+  }
+  if (!client) {
+    return false;
+  }
+  std::weak_ptr<ResponseSink> weak = client;
+  post_work(
+    client->rhi_sink_node(),
+    [weak, sequence_number, response = std::move(response)]() {
+      if (auto c = weak.lock()) {
+        c->rhi_take_response(sequence_number, response);
+      }
+    });
+  return true;
+}
+
+/// Queue a request on a server's node (its callback runs when that node is spun).
+inline void post_request(
+  const std::shared_ptr<RequestSink> & server, std::uint64_t client_id,
+  std::int64_t sequence_number, std::shared_ptr<void> request)
+{
+  std::weak_ptr<RequestSink> weak = server;
+  post_work(
+    server->rhi_sink_node(),
+    [weak, client_id, sequence_number, request = std::move(request)]() {
+      if (auto s = weak.lock()) {
+        s->rhi_take_request(client_id, sequence_number, request);
+      }
+    });
+}
+
+/// Run the queued work of `node` on this thread, under its callback mutex; returns how many ran.
+inline std::size_t run_work(NodeCore & node)
+{
+  std::size_t ran = 0;
+  while (true) {
+    std::function<void()> fn;
+    {
+      std::lock_guard<std::mutex> lock(node.work_mutex);
+      if (node.work.empty()) {
+        return ran;
+      }
+      fn = std::move(node.work.front());
+      node.work.pop_front();
+    }
+    std::lock_guard<std::recursive_mutex> lock(node.callback_mutex);
+    fn();
+    ++ran;
   }
 }
 

@@ -82,6 +82,16 @@ class Validator:
             raise self.error(path, f"must be {what}, got {getattr(value, 'raw', v)!r}", fix=fix)
         return number
 
+    def seconds_in(self, low: float, high: float, what: str, example: float) -> Callable[[Any, str], float]:
+        """A reader for ``optional``: a number of seconds from ``low`` to ``high`` (``what`` they measure)."""
+        def read(value: Any, path: str) -> float:
+            fix = f"write {what} in seconds, from {low:g} to {high:g}, e.g. {example:g}"
+            seconds = self.finite_number(value, path, fix, "a number of seconds")
+            if not low <= seconds <= high:
+                raise self.error(path, f"must be from {low:g} to {high:g} seconds, got {seconds:g}", fix=fix)
+            return seconds
+        return read
+
     def integer_in(self, low: int, high: int) -> Callable[[Any, str], int]:
         """A reader for ``optional``: a whole number from ``low`` to ``high``."""
         return lambda value, path: self.integer(value, path, low, high)

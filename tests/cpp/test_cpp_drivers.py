@@ -53,6 +53,7 @@ from tests.support.cpp_build import (
     standin_flags,
     yaml_arm_sdk,
     yaml_dex3_topics,
+    yaml_take_control,
 )
 from tests.support.description_checks import check_ros2_control
 
@@ -204,6 +205,8 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
         expected = {"interfaces", "crc", "arm_sdk"} | ({"fake_robot"} if has_fake_robot(model) else set())
     if yaml_dex3_topics(label_yaml(label)) is not None:  # hands: dex3, the hands' own section
         expected.add("hands")
+    if yaml_take_control(label_yaml(label)):  # AimDK's system-state services around the commands
+        expected.add("take_control")
     missing = expected - set(run.sections)
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 

@@ -44,6 +44,7 @@ GO_ROBOTS = ("unitree/go2w",)  # tests/cpp/harness/robots/: the go message famil
 TRANSMISSION_ROBOTS = ("pal/talos_arm",)  # tests/cpp/harness/robots/: motors that are not joints
 ARM_SDK_ROBOTS = ("unitree/g1_upper_body",)  # tests/cpp/harness/robots/: authority upper_body
 DEX3_ROBOTS = ("unitree/g1_dex3",)  # tests/cpp/harness/robots/: hands: dex3
+TAKE_CONTROL_ROBOTS = ("agibot/x2_take_control",)  # tests/cpp/harness/robots/: transport_options.take_control
 # every robot a mutation runs on passes unmodified
 CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS)
 THREADS_MS = 100
@@ -68,6 +69,8 @@ UNITREE_GO = TRANSPORT + "unitree_go.hpp"
 UNITREE_ARM_SDK = TRANSPORT + "unitree_arm_sdk.hpp"
 UNITREE_DDS = TRANSPORT + "unitree_dds.hpp"
 UNITREE_DEX3 = TRANSPORT + "unitree_dex3.hpp"
+AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
+AGIBOT_SYSTEM_STATE = TRANSPORT + "agibot_system_state.hpp"
 AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
 PM01_FAKE_ROBOT = "src/engineai/pm01_fake_robot.cpp"
 G1_FAKE_ROBOT = "src/unitree/g1_fake_robot.cpp"
@@ -238,6 +241,19 @@ MUTATIONS = (
     Mutation("dex3_state_without_hands", "the body's state counts as complete before both hands have reported",
              TokenEdit(UNITREE_DEX3, "return complete;", "return true || complete;"),
              ("hands",), robots=DEX3_ROBOTS),
+    Mutation("take_control_after_commands", "the driver starts commanding before it has taken control",
+             TokenEdit(AGIBOT_TOPICS, "if (!control_.take(executor_, core_->logger())) { return false; }",
+                       "executor_.start(core_->parameters().command_writer_period_us, core_->logger(), "
+                       "[this]() {write_command();}); std::this_thread::sleep_for(std::chrono::milliseconds(20)); "
+                       "executor_.stop(); if (!control_.take(executor_, core_->logger())) { return false; }"),
+             ("take_control",), robots=TAKE_CONTROL_ROBOTS),
+    Mutation("take_control_refusal_ignored", "a refused Develop_MC is taken for an accepted one",
+             TokenEdit(AGIBOT_SYSTEM_STATE, "if (header.header.code != 0 || header.status.value != "
+                       "aimdk_msgs::msg::CommonState::SUCCESS) {", "if (false) {"),
+             ("take_control",), robots=TAKE_CONTROL_ROBOTS),
+    Mutation("take_control_never_released", "on_deactivate leaves the robot in Develop_MC",
+             TokenEdit(AGIBOT_TOPICS, "control_.release(executor_, core_->logger());", ""),
+             ("take_control",), robots=TAKE_CONTROL_ROBOTS),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

@@ -356,6 +356,14 @@ def yaml_dex3_topics(yaml_path: Path) -> tuple[tuple[str, str], tuple[str, str]]
             tuple(state.replace("{side}", s) for s in sides))
 
 
+def yaml_take_control(yaml_path: Path) -> bool:
+    """Whether a vendor YAML asks the driver to take control through AimDK's system-state services."""
+    import yaml
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    return bool((data.get("transport_options") or {}).get("take_control", False))
+
+
 def is_leg_name(name: str) -> bool:
     return any(word in name.lower().split("_") for word in LEG_WORDS)
 
@@ -430,6 +438,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     arm_sdk = yaml_arm_sdk(loaded.yaml_path)
     if arm_sdk is not None:
         lines.append("#define RHI_ARM_SDK 1  // authority upper_body: section arm_sdk")
+    if yaml_take_control(loaded.yaml_path):
+        lines.append("#define RHI_TAKE_CONTROL 1  // transport_options.take_control: section take_control")
     dex3 = yaml_dex3_topics(loaded.yaml_path)
     if dex3 is not None:
         lines.append("#define RHI_DEX3 1  // hands: dex3 (HandCmd_ / HandState_ per hand): section hands")

@@ -3,6 +3,12 @@
 Facts from AimDK: the X2's 31 motors form four groups (leg 12, waist 3, arm 14, head 2), each on
 /aima/hal/joint/<group>/{command,state} (JointCommandArray / JointStateArray); the IMU is
 sensor_msgs/Imu on /aima/hal/imu/torso/state. A joint's SDK index is (group offset + position).
+
+Taking control the vendor's way (``take_control: true``, AimDK v1.0.0 and later): whole-body joint commands need
+AgiBot's motion control (MC) stopped, which the system-state service MigrateSystemState("Develop_MC") does; the
+driver asks for it and waits for GetSystemState to report Develop_MC ready before its first command, and asks for
+"Ready" (MC back) after its last (AimDK documentation Interface/system_state, the vendor example
+migrate_system_state.cpp; tests/support/aimdk_facts.py).
 """
 from __future__ import annotations
 
@@ -22,6 +28,7 @@ DEFAULT_GROUPS = (("leg", 12), ("waist", 3), ("arm", 14), ("head", 2))
 GROUP_KEYS = ("name", "size", "command_topic", "state_topic")
 GROUP_NAME_RE = re.compile(r"^[a-z][a-z0-9_]*$")
 IMU_TOPIC = "/aima/hal/imu/torso/state"
+TAKE_CONTROL_TIMEOUT_S = 30.0  # how long activation waits for Develop_MC (the vendor example polls up to 5 min)
 
 _X2_LEG = tuple(f"{side}_{j}_joint" for side in ("left", "right")
                 for j in ("hip_pitch", "hip_roll", "hip_yaw", "knee", "ankle_pitch", "ankle_roll"))
@@ -47,6 +54,8 @@ class JointGroup:
 @dataclass(frozen=True)
 class AgibotTopicsOptions(TopicOptions):
     groups: tuple[JointGroup, ...] = ()
+    take_control: bool = False  # Develop_MC before the first command, Ready after the last
+    take_control_timeout_s: float = TAKE_CONTROL_TIMEOUT_S
 
     def joint_group(self, index: int) -> tuple[str, int] | None:
         for g in self.groups:
@@ -66,11 +75,13 @@ def state_topic(group: str) -> str:
 class AgibotTopics(Transport):
     name = NAME
     summary = "AgiBot aimdk_msgs ROS 2 topics, one command/state pair per joint group"
-    option_keys = ("groups", "imu_topic", "qos")
+    option_keys = ("groups", "imu_topic", "qos", "take_control", "take_control_timeout_s")
     default_float_type = "double"
     dependencies = (Dependency("aimdk_msgs", VENDOR_SOURCE), Dependency("sensor_msgs", ROSDISTRO))
     shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "joint_names.hpp"),
-                    transport_header(NAME, "agibot_topics.hpp"), transport_header(NAME, "agibot_topics_fake_robot.hpp"))
+                    transport_header(NAME, "agibot_topics.hpp"), transport_header(NAME, "agibot_topics_fake_robot.hpp"),
+                    transport_header(NAME, "agibot_system_state.hpp"),
+                    transport_header(NAME, "agibot_system_state_fake_robot.hpp"))
     fake_robot_header = "robot_hardware_interface/transport/agibot_topics_fake_robot.hpp"
     fake_state_rate_hz = 1000.0  # JointStateArray per group at 1000 Hz, IMU 500 Hz (x2_rl_deploy README)
     vendors = ("agibot",)
@@ -90,7 +101,26 @@ class AgibotTopics(Transport):
             imu_topic=v.optional(options, p, "imu_topic", v.topic, IMU_TOPIC),
             qos=read_qos(v, options.get("qos"), f"{p}.qos", QosConfig(depth=1)),
             sdk_slots=motor_count,
+            take_control=v.optional(options, p, "take_control", v.boolean, False),
+            take_control_timeout_s=v.optional(
+                options, p, "take_control_timeout_s",
+                v.seconds_in(1.0, 600.0, "how long activation may wait for Develop_MC", 30.0), TAKE_CONTROL_TIMEOUT_S),
         )
+
+    def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
+                          robot: str, mapped_slots: frozenset[int]) -> TransportOptions:
+        """Only full: AgiBot documents no way to command the arm joints while MC balances the legs."""
+        assert isinstance(options, AgibotTopicsOptions)
+        if authority != "full":
+            raise v.error("authority", "AgiBot's AimDK offers no joint-level control of the arms while its motion "
+                          "control keeps the legs (its arms-only route, AimDK 1.1's /mc/upper_body_command, takes "
+                          "position targets only and is not in the v1.0.0 messages)",
+                          fix="remove authority (full), and set transport_options.take_control: true to stop the "
+                              "motion control the vendor's way")
+        if "transport_options.take_control_timeout_s" in v.lines and not options.take_control:
+            raise v.error("transport_options.take_control_timeout_s", "is used only with take_control: true",
+                          fix="remove take_control_timeout_s, or set take_control: true")
+        return options
 
     def suggest_options(self, order: Sequence[str], known: KnownRobot | None,
                         given: Mapping[str, str] | None = None) -> list[str]:
@@ -99,7 +129,8 @@ class AgibotTopics(Transport):
             lines += [f"    - name: {name}", f"      size: {size}",
                       f"      command_topic: {command_topic(name)}",
                       f"      state_topic: {state_topic(name)}"]
-        return [*lines, f"  imu_topic: {IMU_TOPIC}", qos_line(1)]
+        return [*lines, f"  imu_topic: {IMU_TOPIC}", qos_line(1),
+                "  take_control: true  # Develop_MC (AgiBot's motion control stopped) on activation, Ready after"]
 
     def joint_labels(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
         return [f"{name}[{i}]" for name, size in _suggested_groups(order, known) for i in range(size)]

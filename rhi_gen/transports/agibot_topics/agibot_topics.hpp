@@ -55,9 +55,21 @@ struct AgibotTopicsOptions
   size_t group_count;
   const char * imu_topic;
   TopicQos qos;
+  double take_control_timeout_s{30.0};  // take_control: how long activation waits for Develop_MC
 };
 
-template<size_t N, typename T>
+// A robot whose driver does not take control through AimDK's services (the default `Control`).
+struct AimdkNoControl
+{
+  explicit AimdkNoControl(double /*timeout_s*/) {}
+  void configure(const rclcpp::Node::SharedPtr & /*node*/) {}
+  bool take(TopicExecutor & /*executor*/, const rclcpp::Logger & /*logger*/) {return true;}
+  void release(TopicExecutor & /*executor*/, const rclcpp::Logger & /*logger*/) {}
+};
+
+// `Control`: how the driver takes control of the robot before its first command and gives it back
+// after its last (AimdkSystemState of agibot_system_state.hpp for take_control: true).
+template<size_t N, typename T, typename Control = AimdkNoControl>
 class AgibotTopicsTransport final : public DriverTransport<N, T>
 {
   using CommandArray = aimdk_msgs::msg::JointCommandArray;
@@ -66,7 +78,7 @@ class AgibotTopicsTransport final : public DriverTransport<N, T>
 
 public:
   explicit AgibotTopicsTransport(const AgibotTopicsOptions & options)
-  : options_(options), groups_(options.group_count)
+  : options_(options), groups_(options.group_count), control_(options.take_control_timeout_s)
   {
   }
 
@@ -105,6 +117,7 @@ public:
         });
     }
     executor_.configure(node);
+    control_.configure(node);
     return true;
   }
 
@@ -118,17 +131,31 @@ public:
       group.frames_valid = false;
     }
     groups_reported_ = 0;
+    // Control first: a refusal refuses the activation before anything is sent.
+    if (!control_.take(executor_, core_->logger())) {
+      return false;
+    }
+    controlling_ = true;
     executor_.start(
       core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
     return true;
   }
 
-  void stop() override {executor_.stop();}
+  // The writer's last command has gone once the executor has stopped: then control goes back.
+  void stop() override
+  {
+    executor_.stop();
+    if (controlling_) {
+      controlling_ = false;
+      control_.release(executor_, core_->logger());
+    }
+  }
 
+  // Also gives control back when the component is shut down without a deactivation.
   void shutdown() noexcept override
   {
     try {
-      executor_.stop();
+      stop();
     } catch (const std::exception & e) {
       RCLCPP_ERROR(core_->logger(), "stopping the executor thread failed: %s", e.what());
     }
@@ -416,6 +443,8 @@ private:
   uint32_t command_sequence_{0};
   typename rclcpp::Subscription<Imu>::SharedPtr imu_subscription_;
   TopicExecutor executor_;
+  Control control_;
+  bool controlling_{false};  // caller's thread (start / stop): control taken and not released
 };
 
 }  // namespace robot_hardware_interface

@@ -35,7 +35,14 @@
 namespace robot_hardware_interface
 {
 
-template<size_t N>
+// A fake robot without AimDK's system-state services (the default `Control`).
+struct AimdkNoFakeControl
+{
+  void configure(const rclcpp::Node::SharedPtr & /*node*/) {}
+};
+
+// `Control`: the robot's side of taking control (AimdkFakeSystemState for take_control: true).
+template<size_t N, typename Control = AimdkNoFakeControl>
 class AgibotTopicsFakeRobot final : public FakeRobotTransport<N>
 {
   using CommandArray = aimdk_msgs::msg::JointCommandArray;
@@ -81,6 +88,7 @@ public:
     imu_.orientation.w = 1.0;              // at rest, level
     imu_.linear_acceleration.z = kStandardGravity;
     imu_publisher_ = node->create_publisher<Imu>(options_.imu_topic, qos);
+    control_.configure(node);
   }
 
   void publish(const FakeRobotModel<N> & model) override
@@ -182,6 +190,7 @@ private:
   Imu imu_;
   typename rclcpp::Publisher<Imu>::SharedPtr imu_publisher_;
   uint32_t sequence_{0};
+  Control control_;  // the services of taking control, if any
 };
 
 }  // namespace robot_hardware_interface

@@ -91,6 +91,15 @@ public:
       });
   }
 
+  // While the executor does not spin (before start(), after stop()): spins it on the caller's
+  // thread until `future` is ready or `timeout` has passed; true when it is ready.
+  template<typename Future>
+  bool spin_until(const Future & future, std::chrono::nanoseconds timeout)
+  {
+    return executor_->spin_until_future_complete(future, timeout) ==
+           rclcpp::FutureReturnCode::SUCCESS;
+  }
+
   void stop()
   {
     if (thread_.joinable()) {

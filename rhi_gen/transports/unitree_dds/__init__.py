@@ -246,7 +246,8 @@ class UnitreeDds(Transport):
             arm_sdk_topic=v.optional(options, p, "arm_sdk_topic", v.topic, ARM_SDK_TOPIC),
             arm_sdk_weight_slot=v.optional(options, p, "arm_sdk_weight_slot", v.integer_in(0, FAMILIES["hg"] - 1),
                                            -1),
-            arm_sdk_ramp_s=v.optional(options, p, "arm_sdk_ramp_s", self._ramp_seconds(v), ARM_SDK_RAMP_S),
+            arm_sdk_ramp_s=v.optional(options, p, "arm_sdk_ramp_s",
+                                      v.seconds_in(0.1, 60.0, "the blend weight's ramp time", 2.0), ARM_SDK_RAMP_S),
             hand_command_topic=v.optional(options, p, "hand_command_topic", self._hand_topic(v),
                                           DEX3_COMMAND_TOPIC),
             hand_state_topic=v.optional(options, p, "hand_state_topic", self._hand_topic(v), DEX3_STATE_TOPIC),
@@ -292,16 +293,6 @@ class UnitreeDds(Transport):
                           f"slot {missing[0]} (the {side} hand's {motor} motor)",
                           fix=f"map {side}_hand_{motor}_joint: {missing[0]} (left hand 35..41, right 42..48, "
                               f"in the order {', '.join(DEX3_ORDER)})")
-
-    @staticmethod
-    def _ramp_seconds(v: Validator) -> Any:
-        def read(raw: Any, path: str) -> float:
-            fix = "write the blend weight's ramp time in seconds, from 0.1 to 60, e.g. 2.0"
-            value = v.finite_number(raw, path, fix, "a number of seconds")
-            if not 0.1 <= value <= 60.0:
-                raise v.error(path, f"must be from 0.1 to 60 seconds, got {value:g}", fix=fix)
-            return value
-        return read
 
     def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
                           robot: str, mapped_slots: frozenset[int]) -> UnitreeDdsOptions:

@@ -2450,6 +2450,9 @@ void test_unfilled_refuses_activation() {
 #if defined(RHI_DEX3)
 #include "hands_checks.inc"
 #endif
+#if defined(RHI_TAKE_CONTROL)
+#include "take_control_checks.inc"
+#endif
 
 static bool selected(const std::string& only, const char* name) {
   if (only.empty()) {
@@ -2508,6 +2511,9 @@ int main(int argc, char** argv) {
 #endif
 #if defined(RHI_DEX3)
     if (selected(only, "hands")) test_hands();
+#endif
+#if defined(RHI_TAKE_CONTROL)
+    if (selected(only, "take_control")) test_take_control();
 #endif
     if (selected(only, "threads")) test_threads(threads_ms);
   } catch (const std::exception& e) {

@@ -9,6 +9,9 @@
 #include <aimdk_msgs/msg/joint_state_array.hpp>
 
 #include "transport_ros_common.hpp"
+#if defined(RHI_TAKE_CONTROL)
+#include "aimdk_system_state_server.hpp"
+#endif
 
 namespace rhi_test {
 
@@ -20,6 +23,9 @@ public:
   static constexpr bool kHasGains = true;
 
   Transport() {
+#if defined(RHI_TAKE_CONTROL)
+    system_state_.serve();  // every section's activation takes control first
+#endif
     for (size_t g = 0; g < kGroupCount; ++g) {
       state_msgs_[g].joints.resize(kGroups[g].size);
       for (size_t p = 0; p < kGroups[g].size; ++p) {
@@ -165,12 +171,24 @@ public:
   }
   // True when every published group carried the right joint names in slot order.
   bool command_names_ok() const { return names_ok_; }
+#if defined(RHI_TAKE_CONTROL)
+  Transport(const Transport&) = delete;
+  Transport& operator=(const Transport&) = delete;
+  ~Transport() {  // the servers' handlers point here
+    rhi_fake::services::unserve(AimdkSystemStateServer::kMigrate);
+    rhi_fake::services::unserve(AimdkSystemStateServer::kGetState);
+  }
+  AimdkSystemStateServer& system_state() { return system_state_; }
+#endif
 
 private:
   std::array<StateMsg, kGroupCount> state_msgs_;
   std::array<StateMsg, kGroupCount> rotated_msgs_;
   std::array<CommandMsg, kGroupCount> cmd_msgs_;
   bool names_ok_{true};
+#if defined(RHI_TAKE_CONTROL)
+  AimdkSystemStateServer system_state_{[this]() { return sent_messages(); }};
+#endif
 };
 
 }  // namespace rhi_test

@@ -95,15 +95,17 @@ def test_upper_body_needs_hg_messages(tmp_path):
         load_config(path)
 
 
-@pytest.mark.parametrize("robot", ["agibot/x2", "engineai/pm01"])
-def test_other_transports_refuse_upper_body(tmp_path, robot):
+@pytest.mark.parametrize(("robot", "words"), [
+    ("agibot/x2", "offers no joint-level control of the arms"), ("engineai/pm01", "commands the whole robot")])
+def test_other_transports_refuse_upper_body(tmp_path, robot, words):
     text = (REPO / "robots" / f"{robot}.yaml").read_text(encoding="utf-8")
     name = robot.split("/")[1]
     text = text.replace(f"robot: {name}\n", f"robot: {name}\nauthority: upper_body\n")
     path = tmp_path / f"{name}.yaml"
     path.write_text(text, encoding="utf-8")
-    with pytest.raises(ConfigError, match="commands the whole robot"):
+    with pytest.raises(ConfigError, match=words) as caught:
         load_config(path)
+    assert caught.value.fix
 
 
 def test_a_template_argument_list_folds_at_its_bracket():

@@ -404,7 +404,12 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         groups = [(g.name, g.offset, g.size, g.command_topic, g.state_topic) for g in opts.groups]
     elif model.transport == "unitree_dds":
         arm_sdk = yaml_arm_sdk(loaded.yaml_path)
-        groups = [("all", 0, model.motor_count, "rt/arm_sdk" if arm_sdk else opts.lowcmd_topic, opts.lowstate_topic)]
+        hands = yaml_dex3_topics(loaded.yaml_path)
+        body = model.motor_count if hands is None else model.motor_count - 14  # the Dex3-1 hands: 7 slots each
+        groups = [("all", 0, body, "rt/arm_sdk" if arm_sdk else opts.lowcmd_topic, opts.lowstate_topic)]
+        if hands is not None:  # each hand its own message: consistent on its own, like an AgiBot group
+            groups += [(f"{side}_hand", body + 7 * i, 7, hands[0][i], hands[1][i])
+                       for i, side in enumerate(("left", "right"))]
     else:
         # custom carries no topics (its options are the base TransportOptions): the fake bus needs none
         groups = [("all", 0, model.motor_count, getattr(opts, "command_topic", ""), getattr(opts, "state_topic", ""))]

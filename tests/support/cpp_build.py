@@ -356,6 +356,14 @@ def yaml_dex3_topics(yaml_path: Path) -> tuple[tuple[str, str], tuple[str, str]]
             tuple(state.replace("{side}", s) for s in sides))
 
 
+def yaml_hands(yaml_path: Path) -> str:
+    """The vendor YAML's hands (none when it does not say)."""
+    import yaml
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    return str(data.get("hands", "none"))
+
+
 def yaml_take_control(yaml_path: Path) -> bool:
     """Whether a vendor YAML asks the driver to take control through AimDK's system-state services."""
     import yaml

@@ -95,6 +95,13 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
             raise err(f"default_gains.{name}.stiffness", f"joint {name!r} is velocity-commanded, so it takes no "
                       "stiffness", "remove stiffness (a velocity-commanded joint uses damping only), or set "
                       f"command_modes.{name}: position")
+    targets = config.transport_options.position_target_slots()
+    for name in [n for n, _ in config.command_modes] + [n for n, _, _ in config.default_gains]:
+        if mapped.get(name) in targets:
+            key = "command_modes" if name in modes else "default_gains"
+            raise err(f"{key}.{name}", f"joint {name!r} is a hand axis that takes position targets only (hands: "
+                      f"{config.hands}): the hand's own controller tracks them, so it takes no command mode or gains",
+                      f"remove {key}.{name}")
     initial = dict(config.initial_positions)
     for name, value in config.initial_positions:
         joint = by_name[name]
@@ -112,7 +119,10 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         mode = modes.get(joint.name, "velocity" if joint.type == "continuous" else "position")
         if config.authority == "upper_body" and is_leg(joint.name):
             mode = "state"  # the robot's own controller keeps it: no command interfaces, no gains
-        stiffness, damping = gains.get(joint.name, (0.0, 0.0)) if mode != "state" else (0.0, 0.0)
+        if index in targets:
+            mode = "position_target"  # the hand's own controller tracks a position target: no gains
+        stiffness, damping = gains.get(joint.name, (0.0, 0.0)) if mode not in ("state", "position_target") \
+            else (0.0, 0.0)
         joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,
                                  group=group, group_position=position, command_mode=mode,
                                  command_interfaces=transport.command_interfaces(mode) if mode != "state" else (),

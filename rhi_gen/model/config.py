@@ -13,8 +13,8 @@ FLOAT_TYPES = ("float", "double")
 # the legs while the robot's own balance controller keeps the legs (Unitree's arm SDK).
 AUTHORITIES = ("full", "upper_body")
 # The robot's hands (vendor YAML `hands`): none, or a hand its transport drives beside the body (the G1's
-# Dex3-1 over unitree_sdk2, hand motors in the joint_map slots after the body's).
-HANDS = ("none", "dex3")
+# Dex3-1 over unitree_sdk2, the X2's OmniHands over AimDK; hand motors in the joint_map slots after the body's).
+HANDS = ("none", "dex3", "omnihand")
 MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the generated tables sane
 
 
@@ -67,6 +67,11 @@ class TransportOptions:
 
     def hand_slots(self) -> range:
         """The joint_map slots the transport drives as hand motors (their own messages); none by default."""
+        return range(0)
+
+    def position_target_slots(self) -> range:
+        """Slots whose motor takes a position target only, tracked by the robot's own controller (an OmniHand):
+        their joints export the position command alone; none by default."""
         return range(0)
 
 

@@ -51,7 +51,7 @@ PACKAGE_SCOPE_NAMES = frozenset({
     "unitree_crc", "unitree_dex3", "unitree_go", "unitree_hg",     # namespaces
     # functions (snake_case, ROS 2 style, so a vendor name could redeclare one)
     "all_finite", "bound_command_block", "bounded", "components_initialized", "copy_state_block",
-    "cpu_has_clmul", "elapsed_us", "estop_pressed", "first_slot", "motor_mode",
+    "takes_position", "cpu_has_clmul", "elapsed_us", "estop_pressed", "first_slot", "motor_mode",
     "for_each_slot_block", "health_state_value", "load_word",
     "low_cmd_crc", "low_state_crc",
     "make_joint_index_map", "make_qos", "make_resource_manager", "make_tables", "masked_crc",

@@ -52,7 +52,8 @@ class MotorJoint:
     group: str | None = None           # AgiBot group name
     group_position: int | None = None  # position inside the group
     command_mode: str = "position"     # position | velocity (wheels: continuous joints by default) | state
-    #                                    (authority upper_body: a leg the robot's own controller keeps)
+    #                                    (authority upper_body: a leg the robot's own controller keeps) |
+    #                                    position_target (the robot tracks a position target: an OmniHand axis)
     command_interfaces: tuple[str, ...] = ("position", "velocity", "stiffness", "damping", "effort")
     state_interfaces: tuple[str, ...] = ("position", "velocity", "effort")  # + the transport's motor health
     default_stiffness: float = 0.0     # applied while no controller claims stiffness
@@ -133,7 +134,7 @@ class RobotModel:
 
     @property
     def hand_joints(self) -> tuple[MotorJoint, ...]:
-        """The joints of the hands the transport drives in their own messages (hands: dex3), URDF order."""
+        """The joints of the hands the transport drives in their own messages (hands: dex3, omnihand), URDF order."""
         slots = self.transport_options.hand_slots()
         return tuple(j for j in self.joints if j.index in slots)
 

@@ -153,10 +153,11 @@ def update_rate_hz(period_us: int) -> int:
 
 
 def controllers_view(robot: RobotModel) -> ControllersView:
-    position = tuple(j for j in robot.joints if j.command_mode == "position")
+    position = tuple(j for j in robot.joints if j.command_mode in ("position", "position_target"))
     velocity = tuple(j for j in robot.joints if j.command_mode == "velocity")
     commanded = robot.commanded_joints
-    gains = "damping" in commanded[0].command_interfaces
+    gained = tuple(j for j in commanded if "damping" in j.command_interfaces)  # not the position-target ones
+    gains = bool(gained)
     # The hands get a position controller of their own: a grasp runs beside the arms' controller.
     hands = {j.index for j in robot.hand_joints}
     body_position = tuple(j for j in position if j.index not in hands)
@@ -168,15 +169,16 @@ def controllers_view(robot: RobotModel) -> ControllersView:
                                       tuple(j for j in position if j.index in hands)))
     if velocity:
         controllers.append(Controller("forward_velocity_controller", "velocity", velocity))
-    if gains and position:
-        controllers.append(Controller("forward_stiffness_controller", "stiffness", position))
+    stiff = tuple(j for j in gained if "stiffness" in j.command_interfaces)
+    if stiff:
+        controllers.append(Controller("forward_stiffness_controller", "stiffness", stiff))
     if gains:
-        controllers.append(Controller("forward_damping_controller", "damping", commanded))
+        controllers.append(Controller("forward_damping_controller", "damping", gained))
     period = robot.parameters.command_writer_period_us
     return ControllersView(
         update_rate=update_rate_hz(period), period_us=period, gains=gains, controllers=tuple(controllers),
-        limp_count=sum(1 for j in commanded if j.default_stiffness == 0.0 and j.default_damping == 0.0),
-        joint_count=len(commanded), velocity_count=len(velocity), health_gpio=health_gpio_name(robot))
+        limp_count=sum(1 for j in gained if j.default_stiffness == 0.0 and j.default_damping == 0.0),
+        joint_count=len(gained), velocity_count=len(velocity), health_gpio=health_gpio_name(robot))
 
 
 # ---------------------------------------------------------------- description/<robot>.ros2_control.xacro
@@ -268,7 +270,8 @@ def _comment(joint: MotorJoint) -> str:
     if joint.group is not None:  # "--" may not appear inside an XML comment
         text += f", group {joint.group.replace('-', ' -')}[{joint.group_position}]"
     return text + {"velocity": ", velocity-commanded",
-                   "state": ", state only: the robot's own controller keeps it (authority upper_body)"
+                   "state": ", state only: the robot's own controller keeps it (authority upper_body)",
+                   "position_target": ", position target only: the hand's own controller tracks it"
                    }.get(joint.command_mode, "")
 
 

@@ -85,6 +85,20 @@ class HandSuggestion:
     gains_note: str = ""  # where those gains come from
 
 
+HAND_OPTION_KEYS = ("hand_command_topic", "hand_state_topic")  # transport_options of a transport that drives hands
+
+
+def check_hand_choice(v: Validator, hands: str, own: str, transport: str, what: str) -> None:
+    """A transport drives its own vendor's hand (``own``) or none; its hand topic options only come with it."""
+    if hands not in ("none", own):
+        raise v.error("hands", f"hands {hands!r} is not {what}'s hand; the {transport} transport drives {what}'s "
+                      f"(hands: {own})", fix=f"set hands: {own}, or remove hands")
+    given = [k for k in HAND_OPTION_KEYS if f"transport_options.{k}" in v.lines]
+    if hands == "none" and given:
+        raise v.error(f"transport_options.{given[0]}", f"is a hand option, used only with hands: {own}",
+                      fix=f"remove {given[0]}, or set hands: {own}")
+
+
 def suggest_slots(actuated: Sequence[str], known: KnownRobot | None) -> list[tuple[str, int]]:
     """(joint, SDK slot) of every actuated joint: a known robot's real slots (which may skip slots no
     joint drives), then the remaining joints on the next free slots."""
@@ -140,10 +154,10 @@ class Transport(ABC):
     def resolve_hands(self, v: Validator, hands: str, options: TransportOptions, *, vendor: str,
                       robot: str) -> TransportOptions:
         """Options for the YAML's ``hands`` (before resolve_options). Only ``none`` by default: a hand needs
-        its vendor's protocol (the G1's Dex3-1 over unitree_sdk2 is the one rhi-gen speaks)."""
+        its vendor's protocol (the G1's Dex3-1 over unitree_sdk2, the X2's OmniHand over AimDK)."""
         if hands != "none":
-            raise v.error("hands", f"the {self.name} transport drives no hands; hands {hands!r} is the G1's "
-                          "Dex3-1 over unitree_sdk2 (transport unitree_dds)",
+            raise v.error("hands", f"the {self.name} transport drives no hands; hands dex3 is the G1's Dex3-1 over "
+                          "unitree_sdk2 (transport unitree_dds), omnihand the X2's OmniHand (transport agibot_topics)",
                           fix="remove hands (the default is none), or map the hand joints as body motors")
         return options
 
@@ -172,6 +186,8 @@ class Transport(ABC):
     def command_interfaces(self, mode: str) -> tuple[str, ...]:
         """A joint's command interfaces: a position-commanded joint takes the full PD command, a
         velocity-commanded one (a wheel) no position or stiffness; gains only where they travel."""
+        if mode == "position_target":
+            return ("position",)  # the robot's own controller tracks the target: nothing else travels
         full = ("position", "velocity", "stiffness", "damping", "effort") if mode == "position" \
             else ("velocity", "damping", "effort")
         return tuple(i for i in full if self.carries_gains or i not in ("stiffness", "damping"))

@@ -84,7 +84,8 @@ def check_ros2_control(d: Description, model: RobotModel, yaml_path: Path, packa
         joint = by_name[j["name"]]
         expected = {"position": ["position", "velocity", *gains, "effort"],
                     "velocity": ["velocity", *gains[1:], "effort"],  # no position, no stiffness
-                    "state": []}[joint.command_mode]  # a leg under authority upper_body: state only
+                    "state": [],  # a leg under authority upper_body: state only
+                    "position_target": ["position"]}[joint.command_mode]  # an OmniHand axis
         assert [c for c, _ in j["command_interfaces"]] == expected, j["name"]
         assert j["state_interfaces"] == ["position", "velocity", "effort", *motor_health(model)], j["name"]
         if "initial_values" not in j:  # tests/support/cpp_build.py expand_description reads only the names

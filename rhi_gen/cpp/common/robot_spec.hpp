@@ -24,12 +24,22 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 // damping and effort, never a position target or stiffness. A state-only joint takes no command:
 // the robot's own controller keeps it (authority upper_body: the legs under the vendor's balance
 // controller), so it exports state interfaces only and its motor never hears from this driver.
+// A position-target joint takes a position target and nothing else: the robot's own controller
+// tracks it (an AgiBot OmniHand axis), so no gains, velocity or effort travel and it exports the
+// position command interface alone; bounds and holds are a position-commanded joint's.
 enum class CommandMode : uint8_t
 {
   kPosition,
   kVelocity,
   kStateOnly,
+  kPositionTarget,
 };
+
+// Whether ros2_control commands the joint's position (bounded by its URDF limits).
+constexpr bool takes_position(CommandMode mode)
+{
+  return mode == CommandMode::kPosition || mode == CommandMode::kPositionTarget;
+}
 
 // One URDF joint driven by one SDK motor slot, with the URDF limits write() clamps to and the
 // gains applied while a controller commands the joint without claiming them.

@@ -656,6 +656,9 @@ private:
     if (mode == CommandMode::kVelocity && (name == "position" || name == "stiffness")) {
       return nullptr;  // a velocity-commanded joint has no position target and no stiffness
     }
+    if (mode == CommandMode::kPositionTarget && name != "position") {
+      return nullptr;  // the robot's own controller tracks the target: nothing else travels
+    }
     if (!transport_->carries_gains() && (name == "stiffness" || name == "damping")) {
       return nullptr;  // the robot applies its own gains
     }

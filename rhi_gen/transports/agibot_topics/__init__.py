@@ -9,18 +9,32 @@ AgiBot's motion control (MC) stopped, which the system-state service MigrateSyst
 driver asks for it and waits for GetSystemState to report Develop_MC ready before its first command, and asks for
 "Ready" (MC back) after its last (AimDK documentation Interface/system_state, the vendor example
 migrate_system_state.cpp; tests/support/aimdk_facts.py).
+
+The X2's OmniHands (``hands: omnihand``, AimDK endeffector docs and the vendor's omnihand_control example): one
+HandCommandArray for both hands on /aima/hal/joint/hand/command, HandStateArray on .../hand/state; per hand 10
+entries, matched by index, in the axis order OMNIHAND_AXES, each a position target in rad (the HAL ignores the
+other fields). The hand joints take the 20 joint_map slots after the body's groups, left hand first.
 """
 from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from ...errors import ConfigError
 from ...model import MAX_MOTORS, TransportOptions
 from ...typed_yaml.validator import Validator
-from ..base import ROSDISTRO, VENDOR_SOURCE, Dependency, KnownRobot, Transport, transport_header
+from ..base import (
+    ROSDISTRO,
+    VENDOR_SOURCE,
+    Dependency,
+    HandSuggestion,
+    KnownRobot,
+    Transport,
+    check_hand_choice,
+    transport_header,
+)
 from ..ros_topics import QosConfig, TopicOptions, qos_line, read_qos
 
 NAME = "agibot_topics"
@@ -29,6 +43,14 @@ GROUP_KEYS = ("name", "size", "command_topic", "state_topic")
 GROUP_NAME_RE = re.compile(r"^[a-z][a-z0-9_]*$")
 IMU_TOPIC = "/aima/hal/imu/torso/state"
 TAKE_CONTROL_TIMEOUT_S = 30.0  # how long activation waits for Develop_MC (the vendor example polls up to 5 min)
+HAND_COMMAND_TOPIC = "/aima/hal/joint/hand/command"  # HandCommandArray, both hands
+HAND_STATE_TOPIC = "/aima/hal/joint/hand/state"      # HandStateArray
+OMNIHAND_AXES = ("thumb_roll", "thumb_abad", "thumb_mcp", "index_abad", "index_pip", "middle_pip", "ring_abad",
+                 "ring_pip", "pinky_abad", "pinky_pip")
+OMNIHAND_SIDES = (("left", "L_"), ("right", "R_"))  # AgibotTech's X2-Ultra_omnihand.urdf joint name prefixes
+OMNIHAND_MOTORS = len(OMNIHAND_SIDES) * len(OMNIHAND_AXES)
+OMNIHAND_TYPE = 1        # hal/msg/HandType NIMBLE_HANDS: AgiBot's own dexterous hand, the OmniHand
+OMNIHAND_VELOCITY = 0.1  # HandCommand.velocity the vendor's omnihand_control example sends (the docs: unused)
 
 _X2_LEG = tuple(f"{side}_{j}_joint" for side in ("left", "right")
                 for j in ("hip_pitch", "hip_roll", "hip_yaw", "knee", "ankle_pitch", "ankle_roll"))
@@ -56,6 +78,34 @@ class AgibotTopicsOptions(TopicOptions):
     groups: tuple[JointGroup, ...] = ()
     take_control: bool = False  # Develop_MC before the first command, Ready after the last
     take_control_timeout_s: float = TAKE_CONTROL_TIMEOUT_S
+    hands: str = "none"         # omnihand: the X2's OmniHands in the 20 slots after the groups' (HandCommandArray)
+    hand_command_topic: str = HAND_COMMAND_TOPIC
+    hand_state_topic: str = HAND_STATE_TOPIC
+
+    @property
+    def body_slots(self) -> int:
+        """Slots of the joint groups (the body); the hands' follow them."""
+        return sum(g.size for g in self.groups)
+
+    def hand_slots(self) -> range:
+        """omnihand: the 20 slots after the groups', the left hand's 10 axes then the right's."""
+        return range(self.body_slots, self.body_slots + OMNIHAND_MOTORS) if self.hands == "omnihand" else range(0)
+
+    def position_target_slots(self) -> range:
+        """An OmniHand axis takes a position target only (the hand's own controller tracks it)."""
+        return self.hand_slots()
+
+    @property
+    def hand_axes(self) -> int:
+        return len(OMNIHAND_AXES)
+
+    @property
+    def hand_type(self) -> int:
+        return OMNIHAND_TYPE
+
+    @property
+    def hand_velocity(self) -> float:
+        return OMNIHAND_VELOCITY
 
     def joint_group(self, index: int) -> tuple[str, int] | None:
         for g in self.groups:
@@ -75,7 +125,8 @@ def state_topic(group: str) -> str:
 class AgibotTopics(Transport):
     name = NAME
     summary = "AgiBot aimdk_msgs ROS 2 topics, one command/state pair per joint group"
-    option_keys = ("groups", "imu_topic", "qos", "take_control", "take_control_timeout_s")
+    option_keys = ("groups", "imu_topic", "qos", "take_control", "take_control_timeout_s", "hand_command_topic",
+                   "hand_state_topic")
     default_float_type = "double"
     dependencies = (Dependency("aimdk_msgs", VENDOR_SOURCE), Dependency("sensor_msgs", ROSDISTRO))
     shared_files = (transport_header("ros_topics", "ros_topics.hpp"), transport_header(NAME, "joint_names.hpp"),
@@ -97,7 +148,7 @@ class AgibotTopics(Transport):
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> AgibotTopicsOptions:
         p = "transport_options"
         return AgibotTopicsOptions(
-            groups=_read_groups(v, options.get("groups"), motor_count),
+            groups=_read_groups(v, options.get("groups")),
             imu_topic=v.optional(options, p, "imu_topic", v.topic, IMU_TOPIC),
             qos=read_qos(v, options.get("qos"), f"{p}.qos", QosConfig(depth=1)),
             sdk_slots=motor_count,
@@ -105,7 +156,67 @@ class AgibotTopics(Transport):
             take_control_timeout_s=v.optional(
                 options, p, "take_control_timeout_s",
                 v.seconds_in(1.0, 600.0, "how long activation may wait for Develop_MC", 30.0), TAKE_CONTROL_TIMEOUT_S),
+            hand_command_topic=v.optional(options, p, "hand_command_topic", v.topic, HAND_COMMAND_TOPIC),
+            hand_state_topic=v.optional(options, p, "hand_state_topic", v.topic, HAND_STATE_TOPIC),
         )
+
+    def resolve_hands(self, v: Validator, hands: str, options: TransportOptions, *, vendor: str,
+                      robot: str) -> AgibotTopicsOptions:
+        """omnihand: the X2's OmniHands; a Dex3-1 is a Unitree hand."""
+        assert isinstance(options, AgibotTopicsOptions)
+        check_hand_choice(v, hands, "omnihand", NAME, "the X2 OmniHand")
+        return replace(options, hands=hands)
+
+    def resolve_options(self, v: Validator, options: TransportOptions, *, vendor: str, robot: str,
+                        motor_count: int) -> AgibotTopicsOptions:
+        """The groups and the hands fill motor_count exactly."""
+        assert isinstance(options, AgibotTopicsOptions)
+        hands = len(options.hand_slots())
+        total = options.body_slots + hands
+        if total != motor_count:
+            held = f"the groups hold {options.body_slots} slots" + (f" and the OmniHands {hands}" if hands else "")
+            raise ConfigError(f"motor_count is {motor_count} but {held}", file=v.source,
+                              line=v.lines.get("motor_count"), key="motor_count",
+                              fix=f"set motor_count: {total}, or change the group sizes")
+        return options
+
+    def check_hand_map(self, v: Validator, options: TransportOptions,
+                       joint_map: tuple[tuple[str, int], ...]) -> None:
+        """Every OmniHand axis drives a joint: the HAL takes all 10 axes of a hand at once (AimDK endeffector docs),
+        so an unmapped one would be sent a target no controller owns."""
+        assert isinstance(options, AgibotTopicsOptions)
+        mapped = {slot for _, slot in joint_map}
+        missing = [slot for slot in options.hand_slots() if slot not in mapped]
+        if missing:
+            first = options.hand_slots().start
+            side, prefix = OMNIHAND_SIDES[(missing[0] - first) // len(OMNIHAND_AXES)]
+            axis = OMNIHAND_AXES[(missing[0] - first) % len(OMNIHAND_AXES)]
+            raise v.error("joint_map", f"hands: omnihand drives slots {first}..{first + OMNIHAND_MOTORS - 1}, and no "
+                          f"joint has slot {missing[0]} (the {side} hand's {axis} axis)",
+                          fix=f"map {prefix}{axis}_joint: {missing[0]} (left hand {first}..{first + 9}, right "
+                              f"{first + 10}..{first + 19}, in the order {', '.join(OMNIHAND_AXES)})")
+
+    def detect_hands(self, known: KnownRobot | None, actuated: Sequence[str]) -> HandSuggestion:
+        """An X2 whose URDF has both OmniHands' axes (X2-Ultra_omnihand.urdf): hands: omnihand, the axes after the
+        body's 31 slots."""
+        names = omnihand_joints()
+        if known is None or not set(names) <= set(actuated):
+            return HandSuggestion()
+        first = len(known.joint_order)
+        return HandSuggestion("omnihand", tuple((n, first + i) for i, n in enumerate(names)))
+
+    def suggest_hands(self, known: KnownRobot | None, hands: HandSuggestion) -> list[str]:
+        """An X2 can carry OmniHands: say how they are driven, or how to drive them (none stays the default)."""
+        if known is None:
+            return []
+        first = len(known.joint_order)
+        layout = (f"motor_count {first + OMNIHAND_MOTORS}, the hand joints in slots {first}..{first + 9} (left) and "
+                  f"{first + 10}..{first + 19} (right) in the order " + ", ".join(OMNIHAND_AXES))
+        if hands.hands == "omnihand":
+            return ["# hands: omnihand drives the OmniHands too (position targets only, one HandCommandArray):",
+                    f"# {layout}.", "hands: omnihand"]
+        return ["# hands: none drives the body only; omnihand drives the OmniHands too (use the URDF with hands;",
+                f"# {layout}): see the README, Hands.", "hands: none"]
 
     def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
                           robot: str, mapped_slots: frozenset[int]) -> TransportOptions:
@@ -145,7 +256,12 @@ def _suggested_groups(order: Sequence[str], known: KnownRobot | None) -> list[tu
     return [("all", len(order))]
 
 
-def _read_groups(v: Validator, raw: Any, motor_count: int) -> tuple[JointGroup, ...]:
+def omnihand_joints() -> tuple[str, ...]:
+    """The OmniHand axes' URDF joint names in slot order: left hand, then right."""
+    return tuple(f"{prefix}{axis}_joint" for _, prefix in OMNIHAND_SIDES for axis in OMNIHAND_AXES)
+
+
+def _read_groups(v: Validator, raw: Any) -> tuple[JointGroup, ...]:
     path = "transport_options.groups"
     if raw is None:
         specs = [(name, size, command_topic(name), state_topic(name)) for name, size in DEFAULT_GROUPS]
@@ -167,11 +283,6 @@ def _read_groups(v: Validator, raw: Any, motor_count: int) -> tuple[JointGroup, 
             if any(s[0] == name for s in specs):
                 raise v.error(f"{q}.name", f"group {name!r} is defined twice", fix="give every group its own name")
             specs.append((name, size, cmd, state))
-    total = sum(s[1] for s in specs)
-    if total != motor_count:
-        raise ConfigError(f"motor_count is {motor_count} but the groups hold {total} slots",
-                          file=v.source, line=v.lines.get("motor_count"), key="motor_count",
-                          fix="make motor_count equal the sum of the group sizes")
     groups, offset = [], 0
     for name, size, cmd, state in specs:
         groups.append(JointGroup(name=name, size=size, command_topic=cmd, state_topic=state, offset=offset))

@@ -16,7 +16,7 @@ from typing import Any
 from ...errors import ConfigError
 from ...model import TransportOptions
 from ...typed_yaml.validator import TOPIC_RE, Validator
-from ..base import PLAIN_CMAKE, Dependency, HandSuggestion, KnownRobot, Transport, transport_header
+from ..base import PLAIN_CMAKE, Dependency, HandSuggestion, KnownRobot, Transport, check_hand_choice, transport_header
 
 NAME = "unitree_dds"
 FAMILIES = {"hg": 35, "go": 20}  # message family -> motor slots of its LowCmd_
@@ -271,11 +271,7 @@ class UnitreeDds(Transport):
                       robot: str) -> UnitreeDdsOptions:
         """dex3: the hand motors become slots 35..48 (resolve_options then checks the family and motor_count)."""
         assert isinstance(options, UnitreeDdsOptions)
-        p = "transport_options"
-        hand_keys = [k for k in ("hand_command_topic", "hand_state_topic") if f"{p}.{k}" in v.lines]
-        if hands == "none" and hand_keys:
-            raise v.error(f"{p}.{hand_keys[0]}", "is a hand option, used only with hands: dex3",
-                          fix=f"remove {hand_keys[0]}, or set hands: dex3")
+        check_hand_choice(v, hands, "dex3", NAME, "the G1 Dex3-1")
         return replace(options, hands=hands)
 
     def check_hand_map(self, v: Validator, options: TransportOptions,

@@ -113,7 +113,7 @@ def test_hand_options_without_hands_are_refused(tmp_path):
         load_config(path)
 
 
-@pytest.mark.parametrize("transport", ["agibot_topics", "generic_topics"])
+@pytest.mark.parametrize("transport", ["generic_topics", "engineai_topics"])
 def test_other_transports_drive_no_hands(tmp_path, transport):
     v = Validator("x.yaml", {"hands": 3})
     with pytest.raises(ConfigError, match="drives no hands") as caught:

@@ -42,7 +42,7 @@ def test_every_transport_has_its_templates(name):
 FAMILY_SPECIFIC = {"unitree_dds": {"mode_pr", "motor_modes", "arm_sdk_topic", "arm_sdk_weight_slot", "arm_sdk_ramp_s",
                                    "hand_command_topic", "hand_state_topic"},
                     # take_control's timeout: its default unless asked for
-                    "agibot_topics": {"take_control_timeout_s"}}
+                    "agibot_topics": {"take_control_timeout_s", "hand_command_topic", "hand_state_topic"}}
 # Options `new` deliberately writes with another value than the default: a new X2 takes control the vendor's way
 # (take_control: true), while a YAML without the key keeps the driver it had.
 SUGGESTED_OVER_DEFAULT = {"agibot_topics": {"take_control": True}}

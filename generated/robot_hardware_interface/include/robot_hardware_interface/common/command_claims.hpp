@@ -158,13 +158,14 @@ public:
       const uint8_t claims = claims_[i];
       const SlotLimits & limits = slots_.limits(i);
       const bool position_mode = slots_.mode_of(i) == CommandMode::kPosition;
+      const bool bounded_position = takes_position(slots_.mode_of(i));
       const bool driven = (claims & (kClaimPosition | kClaimVelocity)) != 0U;
       const auto velocity = static_cast<T>((claims & kClaimVelocity) != 0U ? limits.velocity : 0.0);
       const auto effort = static_cast<T>((claims & kClaimEffort) != 0U ? limits.effort : 0.0);
       const auto stiffness = static_cast<T>(
         position_mode && (claims & kClaimPosition) != 0U ? slots_.default_stiffness(i) : 0.0);
       const auto damping = static_cast<T>(driven ? slots_.default_damping(i) : 0.0);
-      if (position_mode) {
+      if (bounded_position) {
         pin(
           lower.q_target, upper.q_target, i, static_cast<T>(limits.position_min),
           static_cast<T>(limits.position_max));

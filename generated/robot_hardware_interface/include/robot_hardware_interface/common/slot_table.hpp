@@ -50,8 +50,10 @@ public:
         joint.position_min, joint.position_max, joint.velocity_max, joint.effort_max};
       joint_names_[joint.slot] = joint.name;
       modes_[joint.slot] = joint.mode;
-      default_stiffness_[joint.slot] = joint.default_stiffness;
-      default_damping_[joint.slot] = joint.default_damping;
+      // No gains travel to a position-target joint: its default gains are zero.
+      const bool gains = joint.mode != CommandMode::kPositionTarget;
+      default_stiffness_[joint.slot] = gains ? joint.default_stiffness : 0.0;
+      default_damping_[joint.slot] = gains ? joint.default_damping : 0.0;
       mapped_slots_.push_back(joint.slot);
       if (joint.mode != CommandMode::kStateOnly) {
         commanded_slots_.push_back(joint.slot);

@@ -8,7 +8,8 @@
 #define ROBOT_HARDWARE_INTERFACE__TRANSPORT__AGIBOT_TOPICS_HPP_
 
 // AgiBot robots over ROS 2 topics (AimDK, aimdk_msgs): one JointCommandArray / JointStateArray
-// topic pair per joint group, entries named; sensor_msgs/Imu for the IMU.
+// topic pair per joint group, entries named; sensor_msgs/Imu for the IMU; with hands, one
+// HandCommandArray / HandStateArray pair for both hands, entries matched by index.
 
 #include <algorithm>
 #include <array>
@@ -22,6 +23,8 @@
 #include <utility>
 #include <vector>
 
+#include <aimdk_msgs/msg/hand_command_array.hpp>
+#include <aimdk_msgs/msg/hand_state_array.hpp>
 #include <aimdk_msgs/msg/joint_command_array.hpp>
 #include <aimdk_msgs/msg/joint_state_array.hpp>
 #include <rclcpp/logging.hpp>
@@ -49,6 +52,19 @@ struct AimdkJointGroup
   const char * state_topic;
 };
 
+// The robot's hands (hands: omnihand): both on one HandCommandArray / HandStateArray, each hand
+// `axes` entries matched by index, the left hand's in the slots from `first_slot`, the right's
+// after. The HAL tracks position targets itself: no gains travel (CommandMode::kPositionTarget).
+struct AimdkHandsOptions
+{
+  size_t first_slot;
+  size_t axes;          // entries per hand (OmniHand: 10)
+  uint8_t hand_type;    // HandType sent and expected of both hands (OmniHand: NIMBLE_HANDS)
+  double velocity;      // HandCommand.velocity sent with every target
+  const char * command_topic;
+  const char * state_topic;
+};
+
 // transport_options of the vendor YAML.
 struct AgibotTopicsOptions
 {
@@ -57,6 +73,7 @@ struct AgibotTopicsOptions
   const char * imu_topic;
   TopicQos qos;
   double take_control_timeout_s{30.0};  // take_control: how long activation waits for Develop_MC
+  const AimdkHandsOptions * hands{nullptr};  // nullptr: no hands for this driver to drive
 };
 
 // A robot whose driver does not take control through AimDK's services (the default `Control`).
@@ -75,12 +92,22 @@ class AgibotTopicsTransport final : public DriverTransport<N, T>
 {
   using CommandArray = aimdk_msgs::msg::JointCommandArray;
   using StateArray = aimdk_msgs::msg::JointStateArray;
+  using HandCommands = aimdk_msgs::msg::HandCommandArray;
+  using HandStates = aimdk_msgs::msg::HandStateArray;
   using Imu = sensor_msgs::msg::Imu;
 
 public:
+  // The hands, if any, are one more message group after the joint groups: the state is complete
+  // once they have reported too, and as old as the oldest group.
   explicit AgibotTopicsTransport(const AgibotTopicsOptions & options)
-  : options_(options), groups_(options.group_count), control_(options.take_control_timeout_s)
+  : options_(options), groups_(options.group_count + (options.hands != nullptr ? 1U : 0U)),
+    control_(options.take_control_timeout_s)
   {
+    if (options.hands != nullptr) {
+      const AimdkHandsOptions & hands = *options.hands;
+      hands_group_ = AimdkJointGroup{
+        "hands", hands.first_slot, 2 * hands.axes, hands.command_topic, hands.state_topic};
+    }
   }
 
   const char * name() const override {return "agibot_topics";}
@@ -92,7 +119,7 @@ public:
     node_ = node;
     const rclcpp::QoS qos = make_qos(options_.qos);
     names_.assign(core.slots().slot_joint_names());
-    for (size_t g = 0; g < groups_.size(); ++g) {
+    for (size_t g = 0; g < options_.group_count; ++g) {
       const AimdkJointGroup & spec = options_.groups[g];
       Group & group = groups_[g];
       group.spec = &spec;
@@ -110,6 +137,9 @@ public:
       group.publisher = node->create_publisher<CommandArray>(spec.command_topic, qos);
       group.subscription = node->create_subscription<StateArray>(
         spec.state_topic, qos, [this, g](const StateArray & msg) {on_group_state(g, msg);});
+    }
+    if (options_.hands != nullptr) {
+      configure_hands(core, node, qos);
     }
     if (core.has_imu()) {
       imu_subscription_ = node->create_subscription<Imu>(
@@ -261,17 +291,7 @@ private:
         "AimDK HAL reports error state %u for joint group '%s'",
         static_cast<unsigned>(msg.state.value), spec.name);
     }
-    // Decimation per group: the first frame of a group in an activation is always processed.
-    const uint32_t frame_count = group.frame_counter++;
-    if (group.reported && (frame_count % core_->parameters().state_decimation) != 0U) {
-      // A skipped frame still proves that the group reports: it keeps the group fresh, unless
-      // the group's last processed frame was rejected.
-      if (group.frames_valid) {
-        group.state_time_ns = steady_ns(start);
-        if (groups_reported_ == groups_.size()) {
-          core_->mark_state_fresh(oldest_group_time());
-        }
-      }
+    if (decimated(group, start)) {
       return;
     }
     // Validate the whole frame before touching the parsing buffer: a rejected frame leaves no
@@ -337,6 +357,30 @@ private:
         store(slot, msg.joints[i]);
       }
     }
+    accept(group, start);
+  }
+
+  // Decimation per group: the first frame of a group in an activation is always processed. A
+  // skipped frame still proves that the group reports: it keeps the group fresh, unless the
+  // group's last processed frame was rejected. True when the frame is skipped.
+  bool decimated(Group & group, std::chrono::steady_clock::time_point start)
+  {
+    const uint32_t frame_count = group.frame_counter++;
+    if (!group.reported || (frame_count % core_->parameters().state_decimation) == 0U) {
+      return false;
+    }
+    if (group.frames_valid) {
+      group.state_time_ns = steady_ns(start);
+      if (groups_reported_ == groups_.size()) {
+        core_->mark_state_fresh(oldest_group_time());
+      }
+    }
+    return true;
+  }
+
+  // A group's frame has been stored in the state frame.
+  void accept(Group & group, std::chrono::steady_clock::time_point start)
+  {
     group.state_time_ns = steady_ns(start);
     group.frames_valid = true;
     if (!group.reported) {
@@ -353,6 +397,97 @@ private:
       core_->publish_state(oldest_group_time());
     }
     core_->monitor().check_state_latency(start);
+  }
+
+  void configure_hands(
+    DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node, const rclcpp::QoS & qos)
+  {
+    const AimdkHandsOptions & hands = *options_.hands;
+    Group & group = groups_.back();
+    group.spec = &hands_group_;
+    group.driven = hands_group_.size;
+    // Sized and named once: the writer only fills in the targets.
+    hand_command_.left_hand_type.value = hands.hand_type;
+    hand_command_.right_hand_type.value = hands.hand_type;
+    hand_command_.left_hands.resize(hands.axes);
+    hand_command_.right_hands.resize(hands.axes);
+    for (size_t i = 0; i < hands.axes; ++i) {
+      hand_command_.left_hands[i].name = core.slots().slot_joint_names()[hands.first_slot + i];
+      hand_command_.right_hands[i].name =
+        core.slots().slot_joint_names()[hands.first_slot + hands.axes + i];
+    }
+    hand_publisher_ = node->create_publisher<HandCommands>(hands.command_topic, qos);
+    hand_subscription_ = node->create_subscription<HandStates>(
+      hands.state_topic, qos, [this](const HandStates & msg) {on_hand_state(msg);});
+  }
+
+  // Executor thread: the HandStateArray of both hands, entries by index (the HAL names none). The
+  // OmniHand's effort field is a motor current, not a torque: the joints' effort stays 0.
+  void on_hand_state(const HandStates & msg)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Group & group = groups_.back();
+    if (decimated(group, start)) {
+      return;
+    }
+    const AimdkHandsOptions & hands = *options_.hands;
+    if (msg.left_hand_type.value != hands.hand_type ||
+      msg.right_hand_type.value != hands.hand_type)
+    {
+      reject(group, "a hand of another type reports (see the HandType of the hand state)");
+      return;
+    }
+    if (msg.left_hands.size() < hands.axes || msg.right_hands.size() < hands.axes) {
+      reject(group, "a hand reported fewer axes than it has");
+      return;
+    }
+    double non_finite = 0.0;  // stays 0 while every value is finite
+    for (size_t i = 0; i < hands.axes; ++i) {
+      non_finite += msg.left_hands[i].position * 0.0 + msg.left_hands[i].velocity * 0.0 +
+        msg.right_hands[i].position * 0.0 + msg.right_hands[i].velocity * 0.0;
+    }
+    if (!(non_finite == 0.0)) {
+      reject(group, "non-finite value for a hand axis");
+      return;
+    }
+    auto & state = core_->state_frame();
+    auto & health = core_->motor_health_frame();
+    const auto store = [&state, &health](size_t slot, const auto & axis) {
+        state.q[slot] = static_cast<T>(axis.position);
+        state.dq[slot] = static_cast<T>(axis.velocity);
+        state.tau[slot] = T{0};
+        health.error_code[slot] = static_cast<double>(axis.faultcode);
+      };
+    for (size_t i = 0; i < hands.axes; ++i) {
+      store(hands.first_slot + i, msg.left_hands[i]);
+      store(hands.first_slot + hands.axes + i, msg.right_hands[i]);
+    }
+    accept(group, start);
+  }
+
+  // Executor thread (writer): both hands' position targets, in the writer cycle of the groups'.
+  void write_hands(const MotorCommand<N, T> & cmd, const rclcpp::Time & now)
+  {
+    const AimdkHandsOptions & hands = *options_.hands;
+    hand_command_.header.stamp = now;
+    hand_command_.header.sequence = command_sequence_;
+    for (size_t i = 0; i < hands.axes; ++i) {
+      fill_hand_entry(hand_command_.left_hands[i], cmd, hands.first_slot + i, hands.velocity);
+      fill_hand_entry(
+        hand_command_.right_hands[i], cmd, hands.first_slot + hands.axes + i, hands.velocity);
+    }
+    hand_publisher_->publish(hand_command_);
+  }
+
+  template<typename Entry>
+  static void fill_hand_entry(
+    Entry & entry, const MotorCommand<N, T> & cmd, size_t slot, double velocity)
+  {
+    entry.position = static_cast<double>(cmd.q_target[slot]);
+    entry.velocity = velocity;
+    entry.acceleration = 0.0;
+    entry.deceleration = 0.0;
+    entry.effort = 0.0;
   }
 
   // hal/msg/JointState v1.0.0 ends with `uint16 error_code`; AimDK's later documented JointState
@@ -414,7 +549,8 @@ private:
     }
     const rclcpp::Time now = node_->now();
     ++command_sequence_;
-    for (Group & group : groups_) {
+    for (size_t g = 0; g < options_.group_count; ++g) {
+      Group & group = groups_[g];
       CommandArray & msg = group.command;
       msg.header.stamp = now;
       msg.header.sequence = command_sequence_;
@@ -429,13 +565,20 @@ private:
       }
       group.publisher->publish(msg);
     }
+    if (options_.hands != nullptr) {
+      write_hands(*cmd, now);
+    }
     core_->monitor().check_writer_latency(start);
   }
 
   const AgibotTopicsOptions options_;
   DriverCore<N, T> * core_{nullptr};
   rclcpp::Node::SharedPtr node_;
-  std::vector<Group> groups_;  // sized at construction
+  std::vector<Group> groups_;  // sized at construction; the hands' group last
+  AimdkJointGroup hands_group_{};  // the hands as a message group (hands only)
+  HandCommands hand_command_;  // pre-sized in configure(): no allocation per cycle
+  typename rclcpp::Publisher<HandCommands>::SharedPtr hand_publisher_;
+  typename rclcpp::Subscription<HandStates>::SharedPtr hand_subscription_;
   std::array<uint32_t, N> slot_stamps_{};  // executor thread: match_distinct_slots() marks
   uint32_t message_stamp_{0};
   JointNames<N> names_;  // each slot's joint name, matched against the entries of a message

@@ -11,8 +11,11 @@
 // JointCommandArray (entries matched by name, position as the fallback for an unnamed entry) and
 // publishes the JointStateArray every step (1000 Hz, entries named, error codes where the message
 // has them, DomainErrorState 0), and sensor_msgs/Imu at rest every other step (500 Hz), on the
-// driver's topics with the driver's QoS. `corrupt` puts a NaN in every group's first position,
-// which the driver must drop.
+// driver's topics with the driver's QoS. With hands it takes the HandCommandArray (entries by
+// index, position targets tracked by the hand's own position loop, kHandStiffness / kHandDamping)
+// and publishes the HandStateArray every step, entries unnamed and effort 0 as the X2's HAL
+// reports them. `corrupt` puts a NaN in every group's first position (and the left hand's), which
+// the driver must drop.
 
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +26,8 @@
 #include <utility>
 #include <vector>
 
+#include <aimdk_msgs/msg/hand_command_array.hpp>
+#include <aimdk_msgs/msg/hand_state_array.hpp>
 #include <aimdk_msgs/msg/joint_command_array.hpp>
 #include <aimdk_msgs/msg/joint_state_array.hpp>
 #include <rclcpp/node.hpp>
@@ -48,10 +53,17 @@ class AgibotTopicsFakeRobot final : public FakeRobotTransport<N>
 {
   using CommandArray = aimdk_msgs::msg::JointCommandArray;
   using StateArray = aimdk_msgs::msg::JointStateArray;
+  using HandCommands = aimdk_msgs::msg::HandCommandArray;
+  using HandStates = aimdk_msgs::msg::HandStateArray;
   using Imu = sensor_msgs::msg::Imu;
   using JointStateEntry = typename decltype(StateArray::joints)::value_type;
   static constexpr uint64_t kImuEvery = 2;
   static constexpr size_t kNoSlot = std::numeric_limits<size_t>::max();
+  // The hand's own position loop, which AgiBot does not document: stiff enough to follow a
+  // controller's targets within a few hundredths of a radian, damped well past critical for the
+  // light finger links.
+  static constexpr double kHandStiffness = 20.0;  // [N m / rad]
+  static constexpr double kHandDamping = 0.5;     // [N m s / rad]
 
   // hal/msg/JointState v1.0.0 ends with `uint16 error_code`; later AimDK versions drop it.
   template<typename Entry, typename = void>
@@ -86,6 +98,9 @@ public:
       group.subscription = node->create_subscription<CommandArray>(
         spec.command_topic, qos, [this, g](const CommandArray & msg) {on_command(g, msg);});
     }
+    if (options_.hands != nullptr) {
+      configure_hands(node, qos);
+    }
     imu_.orientation.w = 1.0;              // at rest, level
     imu_.linear_acceleration.z = kStandardGravity;
     imu_publisher_ = node->create_publisher<Imu>(options_.imu_topic, qos);
@@ -113,6 +128,9 @@ public:
         msg.joints[0].position = std::numeric_limits<double>::quiet_NaN();
       }
       group.publisher->publish(msg);
+    }
+    if (options_.hands != nullptr) {
+      publish_hands(model, stamp);
     }
     if (model.steps % kImuEvery == 0) {
       imu_.header.stamp = stamp;
@@ -170,6 +188,60 @@ private:
     return kNoSlot;
   }
 
+  void configure_hands(const rclcpp::Node::SharedPtr & node, const rclcpp::QoS & qos)
+  {
+    const AimdkHandsOptions & hands = *options_.hands;
+    hand_state_.left_hand_type.value = hands.hand_type;
+    hand_state_.right_hand_type.value = hands.hand_type;
+    hand_state_.left_hands.resize(hands.axes);
+    hand_state_.right_hands.resize(hands.axes);
+    hand_publisher_ = node->create_publisher<HandStates>(hands.state_topic, qos);
+    hand_subscription_ = node->create_subscription<HandCommands>(
+      hands.command_topic, qos, [this](const HandCommands & msg) {on_hand_command(msg);});
+  }
+
+  template<typename Stamp>
+  void publish_hands(const FakeRobotModel<N> & model, const Stamp & stamp)
+  {
+    const AimdkHandsOptions & hands = *options_.hands;
+    const auto & joints = model.dynamics;
+    hand_state_.header.stamp = stamp;
+    hand_state_.header.sequence = sequence_;
+    const auto fill = [&joints, &model](auto & entry, size_t slot) {
+        entry.position = joints.position(slot);
+        entry.velocity = joints.velocity(slot);
+        entry.effort = 0.0;  // a motor current on the X2, "to be implemented" (AimDK docs)
+        entry.faultcode = static_cast<int32_t>(model.error_code[slot]);
+      };
+    for (size_t i = 0; i < hands.axes; ++i) {
+      fill(hand_state_.left_hands[i], hands.first_slot + i);
+      fill(hand_state_.right_hands[i], hands.first_slot + hands.axes + i);
+    }
+    if (model.faults.corrupt && !hand_state_.left_hands.empty()) {
+      hand_state_.left_hands[0].position = std::numeric_limits<double>::quiet_NaN();
+    }
+    hand_publisher_->publish(hand_state_);
+  }
+
+  // Both hands' targets, entries by index; a hand of another type or a short side is ignored (the
+  // X2's HAL takes all axes of a hand at once).
+  void on_hand_command(const HandCommands & msg)
+  {
+    const AimdkHandsOptions & hands = *options_.hands;
+    const auto take = [this, &hands](uint8_t type, const auto & entries, size_t first) {
+        if (type != hands.hand_type || entries.size() < hands.axes) {
+          return;
+        }
+        for (size_t i = 0; i < hands.axes; ++i) {
+          model_->dynamics.command(
+            first + i,
+            FakeMotorCommand{entries[i].position, 0.0, 0.0, kHandStiffness, kHandDamping});
+        }
+      };
+    take(msg.left_hand_type.value, msg.left_hands, hands.first_slot);
+    take(msg.right_hand_type.value, msg.right_hands, hands.first_slot + hands.axes);
+  }
+
   void on_command(size_t index, const CommandArray & msg)
   {
     const Group & group = groups_[index];
@@ -191,6 +263,9 @@ private:
   Imu imu_;
   typename rclcpp::Publisher<Imu>::SharedPtr imu_publisher_;
   uint32_t sequence_{0};
+  HandStates hand_state_;  // sized in configure(): no allocation per step
+  typename rclcpp::Publisher<HandStates>::SharedPtr hand_publisher_;
+  typename rclcpp::Subscription<HandCommands>::SharedPtr hand_subscription_;
   Control control_;  // the services of taking control, if any
 };
 

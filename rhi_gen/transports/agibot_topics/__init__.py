@@ -18,6 +18,7 @@ other fields). The hand joints take the 20 joint_map slots after the body's grou
 from __future__ import annotations
 
 import re
+import textwrap
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -210,13 +211,13 @@ class AgibotTopics(Transport):
         if known is None:
             return []
         first = len(known.joint_order)
-        layout = (f"motor_count {first + OMNIHAND_MOTORS}, the hand joints in slots {first}..{first + 9} (left) and "
-                  f"{first + 10}..{first + 19} (right) in the order " + ", ".join(OMNIHAND_AXES))
+        text = (f"motor_count {first + OMNIHAND_MOTORS}, the hand joints in slots {first}..{first + 9} (left) and "
+                f"{first + 10}..{first + 19} (right), in the order {', '.join(OMNIHAND_AXES)}")
         if hands.hands == "omnihand":
             return ["# hands: omnihand drives the OmniHands too (position targets only, one HandCommandArray):",
-                    f"# {layout}.", "hands: omnihand"]
-        return ["# hands: none drives the body only; omnihand drives the OmniHands too (use the URDF with hands;",
-                f"# {layout}): see the README, Hands.", "hands: none"]
+                    *(f"# {line}" for line in textwrap.wrap(text + ".", 96)), "hands: omnihand"]
+        return ["# hands: none drives the body only; omnihand drives the OmniHands too (use the URDF with hands):",
+                *(f"# {line}" for line in textwrap.wrap(text + "; see the README, Hands.", 96)), "hands: none"]
 
     def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
                           robot: str, mapped_slots: frozenset[int]) -> TransportOptions:
@@ -244,11 +245,20 @@ class AgibotTopics(Transport):
                 "  take_control: true  # Develop_MC (AgiBot's motion control stopped) on activation, Ready after"]
 
     def joint_labels(self, order: Sequence[str], known: KnownRobot | None) -> list[str]:
-        return [f"{name}[{i}]" for name, size in _suggested_groups(order, known) for i in range(size)]
+        groups = [f"{name}[{i}]" for name, size in _suggested_groups(order, known) for i in range(size)]
+        hands = [f"{side} OmniHand[{i}]" for side, _ in OMNIHAND_SIDES for i in range(len(OMNIHAND_AXES))]
+        return groups + (hands if _has_omnihands(order) else [])
+
+
+def _has_omnihands(order: Sequence[str]) -> bool:
+    return set(omnihand_joints()) <= set(order)
 
 
 def _suggested_groups(order: Sequence[str], known: KnownRobot | None) -> list[tuple[str, int]]:
-    """The known robot's groups, else AimDK's default groups when the count fits, else one group."""
+    """The known robot's groups, else AimDK's default groups when the count fits, else one group; the OmniHands'
+    axes (when all are there: rhi-gen new writes hands: omnihand) are in no group."""
+    if _has_omnihands(order):
+        order = [n for n in order if n not in omnihand_joints()]
     if known is not None and known.groups and sum(len(g) for _, g in known.groups) == len(order):
         return [(name, len(members)) for name, members in known.groups]
     if sum(size for _, size in DEFAULT_GROUPS) == len(order):

@@ -45,6 +45,7 @@ TRANSMISSION_ROBOTS = ("pal/talos_arm",)  # tests/cpp/harness/robots/: motors th
 ARM_SDK_ROBOTS = ("unitree/g1_upper_body",)  # tests/cpp/harness/robots/: authority upper_body
 DEX3_ROBOTS = ("unitree/g1_dex3",)  # tests/cpp/harness/robots/: hands: dex3
 TAKE_CONTROL_ROBOTS = ("agibot/x2_take_control",)  # tests/cpp/harness/robots/: transport_options.take_control
+OMNIHAND_ROBOTS = ("agibot/x2_omnihand",)  # tests/cpp/harness/robots/: hands: omnihand
 # every robot a mutation runs on passes unmodified
 CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS)
 THREADS_MS = 100
@@ -254,6 +255,19 @@ MUTATIONS = (
     Mutation("take_control_never_released", "on_deactivate leaves the robot in Develop_MC",
              TokenEdit(AGIBOT_TOPICS, "control_.release(executor_, core_->logger());", ""),
              ("take_control",), robots=TAKE_CONTROL_ROBOTS),
+    Mutation("omnihand_hands_swapped", "the left hand's HandStateArray entries feed the right hand's joints and back",
+             TokenEdit(AGIBOT_TOPICS, "store(hands.first_slot + i, msg.left_hands[i]); "
+                       "store(hands.first_slot + hands.axes + i, msg.right_hands[i]);",
+                       "store(hands.first_slot + i, msg.right_hands[i]); "
+                       "store(hands.first_slot + hands.axes + i, msg.left_hands[i]);"),
+             ("hands",), robots=OMNIHAND_ROBOTS),
+    Mutation("omnihand_type_unchecked", "a HandStateArray from hands of another type is taken for the OmniHands'",
+             TokenEdit(AGIBOT_TOPICS, "if (msg.left_hand_type.value != hands.hand_type || "
+                       "msg.right_hand_type.value != hands.hand_type) {", "if (false) {"),
+             ("hands",), robots=OMNIHAND_ROBOTS),
+    Mutation("omnihand_current_as_effort", "the OmniHand's motor current reaches the joints' effort",
+             TokenEdit(AGIBOT_TOPICS, "state.tau[slot] = T{0};", "state.tau[slot] = static_cast<T>(axis.effort);"),
+             ("hands",), robots=OMNIHAND_ROBOTS),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
              ("contract", "stress_1_producer", "stress_2_producers"), robots=(), data_buffer=True),

@@ -54,7 +54,6 @@ from tests.support.cpp_build import (
     run_parallel,
     standin_flags,
     yaml_arm_sdk,
-    yaml_dex3_topics,
     yaml_hands,
     yaml_take_control,
 )
@@ -217,7 +216,7 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
         expected.add("fake_robot")
     if model.authority == "upper_body":  # the legs are state-only: the arm SDK's own scenarios
         expected = {"interfaces", "crc", "arm_sdk"} | ({"fake_robot"} if has_fake_robot(model) else set())
-    if yaml_dex3_topics(label_yaml(label)) is not None:  # hands: dex3, the hands' own section
+    if yaml_hands(label_yaml(label)) != "none":  # hands: dex3 / omnihand, the hands' own section
         expected.add("hands")
     if yaml_take_control(label_yaml(label)):  # AimDK's system-state services around the commands
         expected.add("take_control")

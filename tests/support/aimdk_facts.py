@@ -67,10 +67,32 @@ HAND_COMMAND_FIELDS = (("string", "name"), ("float64", "position"), ("float64", 
                        ("float64", "acceleration"), ("float64", "deceleration"), ("float64", "effort"))
 HAND_STATE_FIELDS = (("string", "name"), ("float64", "position"), ("float64", "velocity"), ("float64", "effort"),
                      ("int32", "state"), ("int32", "faultcode"))
+HAND_STATE_ARRAY_FIELDS = (("MessageHeader", "header"), ("HandType", "left_hand_type"), ("HandState[]", "left_hands"),
+                           ("HandTouchSensorData", "left_touch_sensors"), ("HandType", "right_hand_type"),
+                           ("HandState[]", "right_hands"), ("HandTouchSensorData", "right_touch_sensors"))
 # OmniHand (HandType NIMBLE_HANDS): 10 axes per hand in this index order (endeffector docs), the URDF's joints
 # {L,R}_<axis>_joint; position in rad, the only field the HAL uses.
 OMNIHAND_AXES = ("thumb_roll", "thumb_abad", "thumb_mcp", "index_abad", "index_pip", "middle_pip", "ring_abad",
                  "ring_pip", "pinky_abad", "pinky_pip")
 OMNIHAND_SIDE_PREFIX = {"left": "L_", "right": "R_"}
+# Each axis's position range (lower, upper) in rad, per side: the OmniHand 2025 SDK's joint tables
+# (AgibotTech/Omnihand-2025-SDK document/en/API_CPP.md at 2d898a9779bb8eb795f87f117a6996a9c40f0292), which
+# AgibotTech/agibot_x2_urdf X2_URDF-v1.4.0/X2-Ultra_omnihand.urdf at 575cc6b988f976c23550e0db85aa1e5475d3652d
+# repeats as its joint limits (research facts_x2_hands.md section 2). Left mirrors right: the signs of
+# thumb_roll, thumb_abad, thumb_mcp, index_abad, ring_abad and pinky_abad flip, the pip joints keep theirs.
+OMNIHAND_LIMITS = {
+    "right": {"thumb_roll": (-0.17453, 0.87266), "thumb_abad": (-1.74533, 0.0), "thumb_mcp": (0.0, 0.85521),
+              "index_abad": (-0.20944, 0.0), "index_pip": (0.0, 1.5708), "middle_pip": (0.0, 1.5708),
+              "ring_abad": (0.0, 0.17453), "ring_pip": (0.0, 1.5708), "pinky_abad": (0.0, 0.17453),
+              "pinky_pip": (0.0, 1.5708)},
+    "left": {"thumb_roll": (-0.87266, 0.17453), "thumb_abad": (0.0, 1.74533), "thumb_mcp": (-0.85521, 0.0),
+             "index_abad": (0.0, 0.20944), "index_pip": (0.0, 1.5708), "middle_pip": (0.0, 1.5708),
+             "ring_abad": (-0.17453, 0.0), "ring_pip": (0.0, 1.5708), "pinky_abad": (-0.17453, 0.0),
+             "pinky_pip": (0.0, 1.5708)},
+}
+# HandCommand.velocity of every OmniHand entry: what AgiBot's example sends (sorrowfeng/aimdk at the commit above,
+# src/examples/src/hal/omnihand_control.cpp and src/py_examples/py_examples/omnihand_control.py: velocity 0.1,
+# acceleration, deceleration and effort 0); the endeffector docs call the field unused.
+OMNIHAND_VELOCITY_SENT = 0.1
 # OmniPicker (HandType CLAW): one entry per hand, every field a fraction 0..1 (position 1 = open).
 OMNIPICKER_ENTRIES = 1

@@ -322,7 +322,7 @@ def yaml_modes_and_gains(yaml_path: Path) -> tuple[dict[str, str], dict[str, tup
 
 
 # Leg joints by name, the harness's own reading of "the legs" (authority upper_body leaves them to the robot).
-MODE_CODES = {"position": 0, "velocity": 1, "state": 2}  # kJoints' mode
+MODE_CODES = {"position": 0, "velocity": 1, "state": 2, "position_target": 3}  # kJoints' mode
 LEG_WORDS = ("hip", "thigh", "knee", "calf", "ankle", "foot")
 
 
@@ -354,6 +354,21 @@ def yaml_dex3_topics(yaml_path: Path) -> tuple[tuple[str, str], tuple[str, str]]
     sides = dex3_facts.SIDES
     return (tuple(command.replace("{side}", s) for s in sides),  # type: ignore[return-value]
             tuple(state.replace("{side}", s) for s in sides))
+
+
+def yaml_aimdk_hand_topics(yaml_path: Path) -> tuple[str, str] | None:
+    """(command topic, state topic) of the HandCommandArray / HandStateArray of a vendor YAML with hands: omnihand,
+    else None. The defaults are AimDK's (tests/support/aimdk_facts.py)."""
+    import yaml
+
+    from tests.support import aimdk_facts
+
+    data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
+    if data.get("hands") != "omnihand":
+        return None
+    options = data.get("transport_options") or {}
+    return (str(options.get("hand_command_topic", aimdk_facts.HAND_COMMAND_TOPIC)),
+            str(options.get("hand_state_topic", aimdk_facts.HAND_STATE_TOPIC)))
 
 
 def yaml_hands(yaml_path: Path) -> str:
@@ -408,8 +423,15 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     opts = model.transport_options
     params = model.parameters
 
+    aimdk_hands = yaml_aimdk_hand_topics(loaded.yaml_path)
+    hand_first = 0
     if model.transport == "agibot_topics":
         groups = [(g.name, g.offset, g.size, g.command_topic, g.state_topic) for g in opts.groups]
+        if aimdk_hands is not None:  # both hands in one message pair: consistent on its own, like a joint group
+            slots = opts.hand_slots()
+            hand_first = slots.start if len(slots) else model.motor_count - 20  # 10 OmniHand axes per hand
+            assert not len(slots) or len(slots) == 20, f"{model.robot}: the OmniHands take 20 slots, not {len(slots)}"
+            groups.append(("hands", hand_first, 20, aimdk_hands[0], aimdk_hands[1]))
     elif model.transport == "unitree_dds":
         arm_sdk = yaml_arm_sdk(loaded.yaml_path)
         hands = yaml_dex3_topics(loaded.yaml_path)
@@ -421,6 +443,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     else:
         # custom carries no topics (its options are the base TransportOptions): the fake bus needs none
         groups = [("all", 0, model.motor_count, getattr(opts, "command_topic", ""), getattr(opts, "state_topic", ""))]
+    # the groups the transport's own state messages carry (AgiBot: its JointStateArrays), before any hands'
+    body_group_count = len(opts.groups) if model.transport == "agibot_topics" else 1
 
     motor_group = {slot: group.name for group in model.motor_groups for slot in group.slots}
 
@@ -456,6 +480,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
     dex3 = yaml_dex3_topics(loaded.yaml_path)
     if dex3 is not None:
         lines.append("#define RHI_DEX3 1  // hands: dex3 (HandCmd_ / HandState_ per hand): section hands")
+    if aimdk_hands is not None:
+        lines.append("#define RHI_AIMDK_HANDS 1  // hands: omnihand (HandCommandArray / HandStateArray): section hands")
     lines += [
         "namespace rhi_data {",
         f"using SdkFloat = {model.float_type};",
@@ -470,8 +496,9 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         f"inline constexpr char kHealthGpio[] = {_c_string(health_gpio)};",
         f"inline constexpr bool kHasGains = {'true' if has_gains else 'false'};  // stiffness/damping travel",
         "// mode: 0 position-commanded, 1 velocity-commanded (a continuous joint unless command_modes says",
-        "// otherwise), 2 state-only (a leg under authority upper_body); kp/kd: the YAML's default_gains (kp is 0",
-        "// for a velocity-commanded joint, both are 0 for a state-only one)",
+        "// otherwise), 2 state-only (a leg under authority upper_body), 3 position target only (an OmniHand axis:",
+        "// the robot's own controller tracks it); kp/kd: the YAML's default_gains (kp is 0 for a velocity-commanded",
+        "// joint, both are 0 for a state-only or position-target one)",
         ("struct Joint { const char* name; size_t slot; size_t group; double lower; double upper; double velocity;"
          " double effort; int mode; double kp; double kd; };"),
         "inline constexpr Joint kJoints[] = {",
@@ -484,6 +511,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         kp, kd = yaml_gains.get(name, (0.0, 0.0))
         if arm_sdk is not None and is_leg_name(name):
             mode, kp, kd = "state", 0.0, 0.0
+        if by_name[name].command_mode == "position_target":  # the hands section checks which joints these are
+            mode, kp, kd = "position_target", 0.0, 0.0
         lines.append(
             f"    {{{_c_string(name)}, {slot}, {group_of(slot)}, "
             f"{_c_double(-math.inf if lower is None else lower)}, {_c_double(upper)}, "
@@ -504,11 +533,17 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         *(f"    {{{_c_string(n)}, {o}, {s}, {_c_string(c)}, {_c_string(st)}}}," for n, o, s, c, st in groups),
         "};",
         f"inline constexpr size_t kGroupCount = {len(groups)};",
+        f"inline constexpr size_t kBodyGroupCount = {body_group_count};  // the groups before the hands'",
         f"inline constexpr char kCommandTopic[] = {_c_string(groups[0][3])};",
         f"inline constexpr char kStateTopic[] = {_c_string(groups[0][4])};",
         *([f"inline constexpr const char * kHandCommandTopics[2] = {{{', '.join(map(_c_string, dex3[0]))}}};",
            f"inline constexpr const char * kHandStateTopics[2] = {{{', '.join(map(_c_string, dex3[1]))}}};"]
           if dex3 is not None else []),
+        *(["// hands: omnihand: slot kHandFirstSlot + i is left entry i, kHandFirstSlot + 10 + i right entry i",
+           f"inline constexpr size_t kHandFirstSlot = {hand_first};",
+           f"inline constexpr char kHandCommandTopic[] = {_c_string(aimdk_hands[0])};",
+           f"inline constexpr char kHandStateTopic[] = {_c_string(aimdk_hands[1])};"]
+          if aimdk_hands is not None else []),
         # each transport's options carry only its own fields (transports/<name>/): the others are unused
         f"inline constexpr char kImuTopic[] = {_c_string(getattr(opts, 'imu_topic', ''))};",
         f"inline constexpr char kMotorDebugTopic[] = {_c_string(getattr(opts, 'motor_debug_topic', ''))};",

@@ -59,9 +59,9 @@ class AgibotTopicsFakeRobot final : public FakeRobotTransport<N>
   static constexpr uint64_t kImuEvery = 2;
   static constexpr size_t kNoSlot = std::numeric_limits<size_t>::max();
   // The hand's own position loop, which AgiBot does not document: stiff enough to follow a
-  // controller's targets within a few hundredths of a radian, damped well past critical for the
-  // light finger links.
-  static constexpr double kHandStiffness = 20.0;  // [N m / rad]
+  // controller's slow targets within a hundredth of a radian (it lags by about kd / kp = 10 ms),
+  // damped well past critical for the light finger links.
+  static constexpr double kHandStiffness = 50.0;  // [N m / rad]
   static constexpr double kHandDamping = 0.5;     // [N m s / rad]
 
   // hal/msg/JointState v1.0.0 ends with `uint16 error_code`; later AimDK versions drop it.

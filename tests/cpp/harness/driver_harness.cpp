@@ -9,7 +9,8 @@
 // with a clock, logger and executor + the framework's export order and shared handles).
 //
 // Sections (see tests/cpp/harness/README.md): interfaces, safety, joint_map, imu, commands,
-// command_safety, crc, parameters, decimation, faults, health, diagnostics, allocations, threads.
+// command_safety, crc, parameters, decimation, faults, health, diagnostics, allocations, threads; the
+// feature robots' fake_robot, arm_sdk, hands, take_control (the .inc files).
 // Output: "section <name>: P passed, F failed" per section and "rhi-check: P passed, F failed".
 #include <algorithm>
 #include <atomic>
@@ -220,7 +221,11 @@ void check_state_interfaces(const Interfaces& ifs, const StateFrame& f, const ch
     const Joint& j = kJoints[k];
     CHECK_EQ(ifs.pos[k]->get(), f.q[j.slot], "%s: %s/position = SDK slot %zu", what, j.name, j.slot);
     CHECK_EQ(ifs.vel[k]->get(), f.dq[j.slot], "%s: %s/velocity = SDK slot %zu", what, j.name, j.slot);
-    CHECK_EQ(ifs.eff[k]->get(), f.tau[j.slot], "%s: %s/effort = SDK slot %zu", what, j.name, j.slot);
+    if (effort_reported(j)) {
+      CHECK_EQ(ifs.eff[k]->get(), f.tau[j.slot], "%s: %s/effort = SDK slot %zu", what, j.name, j.slot);
+    } else {
+      CHECK_EQ(ifs.eff[k]->get(), 0.0, "%s: %s/effort stays 0 (the robot reports no torque for it)", what, j.name);
+    }
   }
 }
 
@@ -326,7 +331,7 @@ void test_interfaces() {
       const bool want = std::find(wanted.begin(), wanted.end(), iface) != wanted.end();
       CHECK_EQ(count_of(command_count, std::string(j.name) + "/" + iface), want ? 1 : 0,
                "command interface %s/%s exported %s (%s-commanded joint%s)", j.name, iface,
-               want ? "exactly once" : "never", j.mode == 0 ? "position" : "velocity",
+               want ? "exactly once" : "never", mode_name(j),
                kHasGains ? "" : ", transport without gains");
     }
   }
@@ -458,14 +463,18 @@ void test_main_scenario() {
         CHECK_EQ(ifs.cpos[k]->get(), s0.q[j.slot], "layer 3: first write() sets %s/position to the measured one",
                  j.name);
       }
-      CHECK_EQ(ifs.cvel[k]->get(), 0.0, "layer 3: first write() zeroes %s/velocity", j.name);
+      if (ifs.cvel[k]) {  // Interfaces::complete(): every joint but a position-target one has it
+        CHECK_EQ(ifs.cvel[k]->get(), 0.0, "layer 3: first write() zeroes %s/velocity", j.name);
+      }
       if (ifs.ckp[k]) {
         CHECK_EQ(ifs.ckp[k]->get(), 0.0, "layer 3: first write() zeroes %s/stiffness", j.name);
       }
       if (ifs.ckd[k]) {
         CHECK_EQ(ifs.ckd[k]->get(), 0.0, "layer 3: first write() zeroes %s/damping", j.name);
       }
-      CHECK_EQ(ifs.cff[k]->get(), 0.0, "layer 3: first write() zeroes %s/effort", j.name);
+      if (ifs.cff[k]) {
+        CHECK_EQ(ifs.cff[k]->get(), 0.0, "layer 3: first write() zeroes %s/effort", j.name);
+      }
     }
     t.tick_writer();
     if (last_command(t, c, "layer 3 first write")) {
@@ -561,21 +570,26 @@ void test_main_scenario() {
       for (const Joint& j : kJoints) {
         const size_t s = j.slot;
         CHECK(c.present[s], "%s: slot %zu is in the command", j.name, s);
-        if (j.mode == 0) {
+        if (commands_position(j)) {
           CHECK_EQ(c.q[s], sdk(cmd.q[s]), "%s/position -> SDK slot %zu as %s", j.name, s, kFloatName);
         } else {
           const size_t k = static_cast<size_t>(&j - kJoints);
           CHECK_EQ(c.q[s], sdk(ifs.pos[k]->get()), "velocity-commanded %s: position target = measured position",
                    j.name);
         }
-        CHECK_EQ(c.dq[s], sdk(cmd.dq[s]), "%s/velocity -> SDK slot %zu as %s", j.name, s, kFloatName);
-        CHECK_EQ(c.tau[s], sdk(cmd.ff[s]), "%s/effort -> SDK slot %zu as %s", j.name, s, kFloatName);
+        // a position-target joint: velocity, effort and gains are 0 (it exports none of them)
+        const bool pd = takes_pd_command(j);
+        CHECK_EQ(c.dq[s], pd ? sdk(cmd.dq[s]) : 0.0, "%s/velocity -> SDK slot %zu as %s (%s)", j.name, s, kFloatName,
+                 mode_name(j));
+        CHECK_EQ(c.tau[s], pd ? sdk(cmd.ff[s]) : 0.0, "%s/effort -> SDK slot %zu as %s (%s)", j.name, s, kFloatName,
+                 mode_name(j));
         if (c.has_gains) {
-          CHECK_EQ(c.kp[s], j.mode == 0 ? sdk(cmd.kp[s]) : 0.0, "%s/stiffness -> SDK slot %zu as %s (0 when "
-                   "velocity-commanded)", j.name, s, kFloatName);
-          CHECK_EQ(c.kd[s], sdk(cmd.kd[s]), "%s/damping -> SDK slot %zu as %s", j.name, s, kFloatName);
+          CHECK_EQ(c.kp[s], j.mode == kModePosition ? sdk(cmd.kp[s]) : 0.0, "%s/stiffness -> SDK slot %zu as %s (0 "
+                   "unless position-commanded)", j.name, s, kFloatName);
+          CHECK_EQ(c.kd[s], pd ? sdk(cmd.kd[s]) : 0.0, "%s/damping -> SDK slot %zu as %s (%s)", j.name, s, kFloatName,
+                   mode_name(j));
         }
-        rounded += static_cast<double>(static_cast<float>(cmd.q[s])) != cmd.q[s] && j.mode == 0 ? 1U : 0U;
+        rounded += static_cast<double>(static_cast<float>(cmd.q[s])) != cmd.q[s] && j.mode == kModePosition ? 1U : 0U;
       }
       // The values are chosen so that float rounding is visible: a double SDK that received
       // float-rounded values fails the exact checks above, a float SDK must show the rounding.
@@ -610,7 +624,7 @@ void test_main_scenario() {
     CommandFrame good;
     last_command(t, good, "before NaN");
     // the target the joint's mode commands: position, or velocity for a velocity-commanded joint
-    (j0.mode == 0 ? cmd.q : cmd.dq)[j0.slot] = std::numeric_limits<double>::quiet_NaN();
+    (commands_position(j0) ? cmd.q : cmd.dq)[j0.slot] = std::numeric_limits<double>::quiet_NaN();
     apply_command(ifs, cmd);
     hw.write(kTime, kPeriod);
     t.tick_writer();
@@ -624,16 +638,21 @@ void test_main_scenario() {
         CHECK_EQ(c.kp[j0.slot], 0.0, "%s: stiffness 0 while held", j0.name);
       }
       for (size_t k = 1; k < kJointCount; ++k) {
-        if (kJoints[k].mode == 0) {
+        if (commands_position(kJoints[k])) {
           CHECK_EQ(c.q[kJoints[k].slot], sdk(cmd.q[kJoints[k].slot]), "%s unaffected by %s's NaN", kJoints[k].name,
                    j0.name);
         }
       }
     }
-    // A negative gain is never forwarded either: the last joint, with a negative damping, holds
-    // its last safe target and damping; the others are unaffected.
-    if (kHasGains && kJointCount > 1) {
-      const Joint& jn = kJoints[kJointCount - 1];
+    // A negative gain is never forwarded either: the last joint that takes damping (position-target
+    // joints take none), with a negative damping, holds its last safe target and damping; the others
+    // are unaffected.
+    size_t last_damped = 0;
+    for (size_t k = 0; k < kJointCount; ++k) {
+      last_damped = takes_pd_command(kJoints[k]) ? k : last_damped;
+    }
+    if (kHasGains && last_damped > 0) {
+      const Joint& jn = kJoints[last_damped];
       cmd = distinct_command(3);
       apply_command(ifs, cmd);
       hw.write(kTime, kPeriod);
@@ -656,7 +675,7 @@ void test_main_scenario() {
     cmd = distinct_command(4);
     size_t clamped = 0;
     for (const Joint& j : kJoints) {
-      if (std::isfinite(j.upper) && j.mode == 0) {
+      if (std::isfinite(j.upper) && commands_position(j)) {
         cmd.q[j.slot] = j.upper + 1.0;
         ++clamped;
       }
@@ -666,7 +685,7 @@ void test_main_scenario() {
     t.tick_writer();
     if (clamped > 0 && last_command(t, c, "clamp")) {
       for (const Joint& j : kJoints) {
-        if (std::isfinite(j.upper) && j.mode == 0) {
+        if (std::isfinite(j.upper) && commands_position(j)) {
           CHECK_EQ(c.q[j.slot], sdk(j.upper), "%s position target clamped to its URDF upper limit", j.name);
         }
       }
@@ -750,7 +769,7 @@ void test_main_scenario() {
     hw.read(kTime, kPeriod);
     const auto everything = interface_names([](size_t, const std::string&) { return true; });
     const auto targets = interface_names([](size_t k, const std::string& i) {
-      return i == (kJoints[k].mode == 0 ? "position" : "velocity");
+      return i == target_interface(kJoints[k]);
     });
     const auto gains = interface_names([](size_t, const std::string& i) { return i == "stiffness" || i == "damping"; });
     // After a write() and a writer cycle: the command the robot received.
@@ -770,8 +789,8 @@ void test_main_scenario() {
         const size_t s = j.slot;
         const double kp = gains_claimed && cmd ? sdk(cmd->kp[s]) : targets_claimed ? sdk(j.kp) : 0.0;
         const double kd = gains_claimed && cmd ? sdk(cmd->kd[s]) : targets_claimed ? sdk(j.kd) : 0.0;
-        CHECK_EQ(c.kp[s], j.mode == 0 ? kp : 0.0, "%s: %s stiffness", what, j.name);
-        CHECK_EQ(c.kd[s], kd, "%s: %s damping", what, j.name);
+        CHECK_EQ(c.kp[s], j.mode == kModePosition ? kp : 0.0, "%s: %s stiffness", what, j.name);
+        CHECK_EQ(c.kd[s], takes_pd_command(j) ? kd : 0.0, "%s: %s damping", what, j.name);
       }
     };
     const auto check_at_measured = [&](const char* what) {
@@ -805,7 +824,7 @@ void test_main_scenario() {
     if (sent("position-only command")) {
       for (const Joint& j : kJoints) {
         const size_t s = j.slot;
-        if (j.mode == 0) {
+        if (commands_position(j)) {
           CHECK_EQ(c.q[s], sdk(cmd7.q[s]), "position-only: %s target", j.name);
           CHECK_EQ(c.dq[s], 0.0, "position-only: %s unclaimed velocity is not sent", j.name);
         } else {
@@ -845,7 +864,7 @@ void test_main_scenario() {
     }
     if (sent("velocity joints after the robot moved")) {
       for (size_t k = 0; k < kJointCount; ++k) {
-        if (kJoints[k].mode != 0) {
+        if (kJoints[k].mode == kModeVelocity) {
           CHECK_EQ(c.q[kJoints[k].slot], sdk(ifs.pos[k]->get()), "velocity joint %s: position = measured now",
                    kJoints[k].name);
         }
@@ -881,7 +900,7 @@ void test_main_scenario() {
     apply_command(ifs, cmd7);
     if (sent("aborted switch")) {
       for (const Joint& j : kJoints) {
-        if (j.mode == 0) {
+        if (commands_position(j)) {
           CHECK_EQ(c.q[j.slot], sdk(cmd7.q[j.slot]), "aborted switch: %s still commanded", j.name);
         }
       }
@@ -1549,7 +1568,7 @@ void test_health() {
   // A non-finite command: one rejected writer cycle per send.
   ControllerCommand bad = cmd;
   const Joint& j0 = kJoints[0];
-  (j0.mode == 0 ? bad.q : bad.dq)[j0.slot] = std::numeric_limits<double>::quiet_NaN();
+  (commands_position(j0) ? bad.q : bad.dq)[j0.slot] = std::numeric_limits<double>::quiet_NaN();
   cycle(rig, 6, bad);
   rig.hw->read(kTime, kPeriod);
   CHECK_EQ(health(rig, kRejectedCommands), 1.0, "rejected_commands after one send of a NaN command");
@@ -1802,8 +1821,8 @@ void check_hardware_status() {
 }
 #endif
 
-// The link status counts the valid state messages (every group's, where the state comes in parts) and shows
-// their rate: 5 states between two messages add 5 per part.
+// The link status counts the valid state messages (every group's, where the state comes in parts, AgiBot's
+// hands' too) and shows their rate: 5 states between two messages add 5 per part.
 void check_link_message_count(Rig& rig, const std::string& hw, DiagnosticArray& a) {
 #if defined(RHI_TRANSPORT_AGIBOT_TOPICS)
   constexpr uint64_t kMessagesPerState = kGroupCount;
@@ -2053,12 +2072,12 @@ void test_crc_functions() {
 // monitor thread reading what the robot received. Every frame encodes one code in every joint's
 // position; a frame mixing codes within one consistency group is torn.
 // In a command (`present` given) a velocity-commanded joint carries its measured position, not a
-// code: it is left out. A state's `q` holds the joint positions read(); a command's the motor
+// code: it is left out (a position-target joint carries the code like a position-commanded one). A state's `q` holds the joint positions read(); a command's the motor
 // positions, whose joints (joint_value: the robot's transmissions) carry the code.
 bool consistent_group(const std::array<double, N>& q, const std::array<bool, N>* present, size_t group, int* code) {
   int first = -1;
   for (const Joint& j : kJoints) {
-    if (j.group != group || !position_range(j).usable() || (present != nullptr && j.mode != 0)) {
+    if (j.group != group || !position_range(j).usable() || (present != nullptr && !commands_position(j))) {
       continue;
     }
     if (present != nullptr && !(*present)[j.slot]) {
@@ -2227,12 +2246,12 @@ void test_transmission() {
       coupled_seen = true;
       offset[k] = 0.0625;
       text += std::string("'") + j.name + "':\n  offset: 0.0625\n";
-    } else if (!is_coupled(j) && j.mode == 0 && simple_seen == 0) {
+    } else if (!is_coupled(j) && j.mode == kModePosition && simple_seen == 0) {
       ++simple_seen;
       direction[k] = -1.0;
       offset[k] = 0.25;
       text += std::string(j.name) + ": {offset: 0.25, direction: -1}  # remounted\n";
-    } else if (!is_coupled(j) && j.mode == 0 && simple_seen == 1) {
+    } else if (!is_coupled(j) && j.mode == kModePosition && simple_seen == 1) {
       ++simple_seen;
       offset[k] = -0.125;
       text += std::string("\"") + j.name + "\": {offset: -0.125}\n";
@@ -2272,7 +2291,7 @@ void test_transmission() {
     CHECK(near(rig.ifs.vel[k]->get(), joint(k, s0.dq, false), 1e-9), "%s/velocity %.9g, expected %.9g", j.name,
           rig.ifs.vel[k]->get(), joint(k, s0.dq, false));
     if (!is_coupled(j)) {
-      const double want = s0.tau[j.slot] / (direction[k] * kTransmissions[k].scale);
+      const double want = effort_reported(j) ? s0.tau[j.slot] / (direction[k] * kTransmissions[k].scale) : 0.0;
       CHECK(near(rig.ifs.eff[k]->get(), want, 1e-9), "%s/effort %.9g, expected %.9g", j.name, rig.ifs.eff[k]->get(),
             want);
     }
@@ -2299,7 +2318,7 @@ void test_transmission() {
     for (const Joint& j : kJoints) {
       const size_t k = index_of(j);
       const double measured = joint(k, s0.q, true);
-      const double held = j.mode == 0 ? std::min(std::max(measured, j.lower), j.upper) : measured;
+      const double held = commands_position(j) ? std::min(std::max(measured, j.lower), j.upper) : measured;
       CHECK(near(joint(k, c.q, true), held, 1e-6), "safe start: the motors hold %s at %.9g, measured %.9g", j.name,
             joint(k, c.q, true), measured);
       if (c.has_gains) {
@@ -2317,26 +2336,31 @@ void test_transmission() {
     for (size_t k = 0; k < kJointCount; ++k) {
       const Joint& j = kJoints[k];
       const size_t s = j.slot;
-      if (j.mode == 0) {
+      if (commands_position(j)) {
         CHECK(near(joint(k, c.q, true), cmd.q[s], 1e-6), "%s: the motors put the joint at %.9g, commanded %.9g", j.name,
               joint(k, c.q, true), cmd.q[s]);
       } else {
         CHECK(near(c.q[s], s0.q[s], 1e-6), "velocity-commanded %s: motor target = its measured position", j.name);
       }
-      CHECK(near(joint(k, c.dq, false), cmd.dq[s], 1e-6), "%s: joint velocity %.9g from the motors, commanded %.9g",
-            j.name, joint(k, c.dq, false), cmd.dq[s]);
+      // a position-target joint: no velocity, effort or gains travel
+      const bool pd = takes_pd_command(j);
+      const double dq = pd ? cmd.dq[s] : 0.0;
+      CHECK(near(joint(k, c.dq, false), dq, 1e-6), "%s: joint velocity %.9g from the motors, commanded %.9g", j.name,
+            joint(k, c.dq, false), dq);
       if (is_coupled(j)) {
         continue;
       }
       const double scale = direction[k] * kTransmissions[k].scale;
-      CHECK(near(c.tau[s], cmd.ff[s] * scale, 1e-6), "%s: motor feed-forward %.9g, expected %.9g", j.name, c.tau[s],
-            cmd.ff[s] * scale);
+      const double ff = pd ? cmd.ff[s] : 0.0;
+      CHECK(near(c.tau[s], ff * scale, 1e-6), "%s: motor feed-forward %.9g, expected %.9g", j.name, c.tau[s],
+            ff * scale);
       if (c.has_gains) {
-        const double kp = j.mode == 0 ? cmd.kp[s] : 0.0;
+        const double kp = j.mode == kModePosition ? cmd.kp[s] : 0.0;
+        const double kd = pd ? cmd.kd[s] : 0.0;
         CHECK(near(c.kp[s], kp * scale * scale, 1e-6), "%s: motor stiffness %.9g, expected %.9g", j.name, c.kp[s],
               kp * scale * scale);
-        CHECK(near(c.kd[s], cmd.kd[s] * scale * scale, 1e-6), "%s: motor damping %.9g, expected %.9g", j.name, c.kd[s],
-              cmd.kd[s] * scale * scale);
+        CHECK(near(c.kd[s], kd * scale * scale, 1e-6), "%s: motor damping %.9g, expected %.9g", j.name, c.kd[s],
+              kd * scale * scale);
       }
     }
     // Coupled motors: effort by the transpose, gains the diagonal of transpose * diag(k) * matrix.
@@ -2348,8 +2372,8 @@ void test_transmission() {
           const double w = kCoupledWeights[f].weight;
           const size_t js = kCoupledWeights[f].joint_slot;
           ff += w * cmd.ff[js];
-          kp += w * w * (joint_of_slot(js)->mode == 0 ? cmd.kp[js] : 0.0);
-          kd += w * w * cmd.kd[js];
+          kp += w * w * (joint_of_slot(js)->mode == kModePosition ? cmd.kp[js] : 0.0);
+          kd += w * w * (takes_pd_command(*joint_of_slot(js)) ? cmd.kd[js] : 0.0);
         }
       }
       CHECK(near(c.tau[motor], ff, 1e-6), "coupled motor %zu feed-forward %.9g, expected %.9g", motor, c.tau[motor], ff);
@@ -2450,6 +2474,9 @@ void test_unfilled_refuses_activation() {
 #if defined(RHI_DEX3)
 #include "hands_checks.inc"
 #endif
+#if defined(RHI_AIMDK_HANDS)
+#include "aimdk_hands_checks.inc"
+#endif
 #if defined(RHI_TAKE_CONTROL)
 #include "take_control_checks.inc"
 #endif
@@ -2509,7 +2536,7 @@ int main(int argc, char** argv) {
 #if defined(RHI_ARM_SDK)
     if (selected(only, "arm_sdk")) test_arm_sdk();
 #endif
-#if defined(RHI_DEX3)
+#if defined(RHI_DEX3) || defined(RHI_AIMDK_HANDS)
     if (selected(only, "hands")) test_hands();
 #endif
 #if defined(RHI_TAKE_CONTROL)

@@ -61,6 +61,46 @@ struct CommandFrame {
 
 inline double sdk(double v) { return static_cast<double>(static_cast<SdkFloat>(v)); }
 
+// kJoints' command modes (robot_data.hpp): what a joint takes from ros2_control.
+enum JointMode : int {
+  kModePosition = 0,        // the full PD command: position, velocity, stiffness, damping, effort
+  kModeVelocity = 1,        // a wheel: velocity, damping, effort (its position target follows the measurement)
+  kModeStateOnly = 2,       // authority upper_body's legs: no command at all
+  kModePositionTarget = 3,  // an OmniHand axis: a position target alone, the robot's own controller tracks it
+};
+// The joint's position target comes from ros2_control, clamped into its URDF limits; held, it is the
+// measured position.
+inline bool commands_position(const Joint& j) { return j.mode == kModePosition || j.mode == kModePositionTarget; }
+// Velocity, damping and effort travel (a position-target joint sends 0 for each, a state-only one nothing).
+inline bool takes_pd_command(const Joint& j) { return j.mode == kModePosition || j.mode == kModeVelocity; }
+// The command interface a position- or velocity-only controller claims: its target.
+inline const char* target_interface(const Joint& j) { return commands_position(j) ? "position" : "velocity"; }
+inline const char* mode_name(const Joint& j) {
+  switch (j.mode) {
+    case kModePosition: return "position";
+    case kModeVelocity: return "velocity";
+    case kModeStateOnly: return "state-only";
+    case kModePositionTarget: return "position-target";
+    default: return "unknown-mode";
+  }
+}
+
+// Whether the robot reports joint j's effort: an OmniHand reports a motor current in A where a torque
+// would be (AimDK endeffector docs), which the driver must not store, so its effort state stays 0.
+#if defined(RHI_AIMDK_HANDS)
+inline bool is_hand_slot(size_t slot) { return slot >= kHandFirstSlot && slot < kHandFirstSlot + 20; }
+#else
+inline bool is_hand_slot(size_t) { return false; }
+#endif
+inline bool effort_reported(const Joint& j) {
+#if defined(RHI_AIMDK_HANDS)
+  return !is_hand_slot(j.slot);
+#else
+  (void)j;
+  return true;
+#endif
+}
+
 // The joint the YAML maps to `slot`, or nullptr.
 inline const Joint* joint_of_slot(size_t slot) {
   for (const Joint& j : kJoints) {
@@ -214,8 +254,9 @@ inline std::vector<std::string> joint_commands(size_t k) {
   std::vector<std::string> out;
   for (const char* name : kJointCommands) {
     const std::string n = name;
-    if (kJoints[k].mode == 2) continue;  // state-only: no command interface at all
-    if ((n == "position" || n == "stiffness") && kJoints[k].mode != 0) continue;
+    if (kJoints[k].mode == kModeStateOnly) continue;  // state-only: no command interface at all
+    if (kJoints[k].mode == kModePositionTarget && n != "position") continue;  // the position target alone
+    if ((n == "position" || n == "stiffness") && kJoints[k].mode == kModeVelocity) continue;
     if ((n == "stiffness" || n == "damping") && !kHasGains) continue;
     out.push_back(n);
   }
@@ -313,11 +354,11 @@ struct Interfaces {
   }
 
   // Every interface the joint's command mode and the transport call for, and no other: a
-  // velocity-commanded joint has no position or stiffness command, a transport without gains no
-  // stiffness or damping.
+  // velocity-commanded joint has no position or stiffness command, a position-target joint only a
+  // position command, a transport without gains no stiffness or damping.
   bool complete() const {
     for (size_t k = 0; k < kJointCount; ++k) {
-      const bool position_mode = kJoints[k].mode == 0;
+      const bool position_mode = kJoints[k].mode == kModePosition;
       if (!pos[k] || !vel[k] || !eff[k]) {
         return false;
       }
@@ -326,8 +367,14 @@ struct Interfaces {
           return false;
         }
       }
-      if (kJoints[k].mode == 2) {  // state-only: no command interface
+      if (kJoints[k].mode == kModeStateOnly) {  // state-only: no command interface
         if (cpos[k] || cvel[k] || ckp[k] || ckd[k] || cff[k]) {
+          return false;
+        }
+        continue;
+      }
+      if (kJoints[k].mode == kModePositionTarget) {  // the position command alone
+        if (!cpos[k] || cvel[k] || ckp[k] || ckd[k] || cff[k]) {
           return false;
         }
         continue;

@@ -70,3 +70,52 @@ def test_hand_state_array_carries_each_hands_type_and_states():
     fields = {name: kind for kind, name in _fields("hal/msg/HandStateArray.msg")}
     assert fields["left_hand_type"] == fields["right_hand_type"] == "HandType"
     assert fields["left_hands"] == fields["right_hands"] == "HandState[]"
+    assert _fields("hal/msg/HandStateArray.msg") == aimdk.HAND_STATE_ARRAY_FIELDS
+
+
+# The harness's test robot with two OmniHands (tests/cpp/harness/README.md): its URDF and YAML against the facts.
+HARNESS_ROBOT = Path(__file__).resolve().parents[2] / "cpp" / "harness" / "robots" / "agibot"
+
+
+def _xacro_axis_calls() -> list[dict[str, str]]:
+    """The omnihand_axis macro calls of x2_omnihand.urdf.xacro, their attributes, in file order."""
+    import xml.etree.ElementTree as ET
+
+    root = ET.parse(HARNESS_ROBOT / "x2_omnihand.urdf.xacro").getroot()
+    return [dict(e.attrib) for e in root if e.tag == "{http://www.ros.org/wiki/xacro}omnihand_axis"]
+
+
+def _omnihand_joints() -> list[tuple[str, str, str, float, float]]:
+    """(side, axis, joint name, lower, upper) per hand joint of the facts, left hand first, in AimDK's order."""
+    return [(side, axis, aimdk.OMNIHAND_SIDE_PREFIX[side] + axis + "_joint", *aimdk.OMNIHAND_LIMITS[side][axis])
+            for side in ("left", "right") for axis in aimdk.OMNIHAND_AXES]
+
+
+def test_omnihand_limits_cover_every_axis_of_both_sides():
+    assert set(aimdk.OMNIHAND_LIMITS) == set(aimdk.OMNIHAND_SIDE_PREFIX) == {"left", "right"}
+    for side, limits in aimdk.OMNIHAND_LIMITS.items():
+        assert tuple(limits) == aimdk.OMNIHAND_AXES, side
+        assert all(lower < upper for lower, upper in limits.values()), side
+    # the pip joints bend the same way on both hands; the others mirror
+    for axis in aimdk.OMNIHAND_AXES:
+        left, right = aimdk.OMNIHAND_LIMITS["left"][axis], aimdk.OMNIHAND_LIMITS["right"][axis]
+        assert left == (right if axis.endswith("_pip") else (-right[1], -right[0])), axis
+    assert aimdk.OMNIHAND_VELOCITY_SENT == 0.1
+
+
+def test_harness_omnihand_urdf_carries_the_facts_joints_and_limits():
+    calls = _xacro_axis_calls()
+    got = [(c["prefix"] + c["axis"] + "_joint", float(c["lower"]), float(c["upper"])) for c in calls]
+    assert got == [(name, lower, upper) for _, _, name, lower, upper in _omnihand_joints()]
+
+
+def test_harness_omnihand_yaml_maps_the_hands_after_the_body_in_aimdk_order():
+    import yaml
+
+    data = yaml.safe_load((HARNESS_ROBOT / "x2_omnihand.yaml").read_text(encoding="utf-8"))
+    assert data["hands"] == "omnihand" and data["transport"] == "agibot_topics"
+    joint_map = {str(k): int(v) for k, v in data["joint_map"].items()}
+    hands = {name: slot for name, slot in joint_map.items() if slot >= 31}
+    assert hands == {name: 31 + i for i, (_, _, name, _, _) in enumerate(_omnihand_joints())}
+    assert sorted(set(joint_map.values()) - set(hands.values())) == list(range(31))
+    assert data["motor_count"] == 31 + 2 * len(aimdk.OMNIHAND_AXES)

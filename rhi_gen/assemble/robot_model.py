@@ -121,8 +121,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
             mode = "state"  # the robot's own controller keeps it: no command interfaces, no gains
         if index in targets:
             mode = "position_target"  # the hand's own controller tracks a position target: no gains
-        stiffness, damping = gains.get(joint.name, (0.0, 0.0)) if mode not in ("state", "position_target") \
-            else (0.0, 0.0)
+        stiffness, damping = gains.get(joint.name, (0.0, 0.0)) if mode != "state" else (0.0, 0.0)
         joints.append(MotorJoint(name=joint.name, index=index, type=joint.type, limits=joint.limits,
                                  group=group, group_position=position, command_mode=mode,
                                  command_interfaces=transport.command_interfaces(mode) if mode != "state" else (),

@@ -406,15 +406,16 @@ private:
     Group & group = groups_.back();
     group.spec = &hands_group_;
     group.driven = hands_group_.size;
-    // Sized and named once: the writer only fills in the targets.
+    // Sized, named and given its fixed fields once: the writer only fills in the targets.
     hand_command_.left_hand_type.value = hands.hand_type;
     hand_command_.right_hand_type.value = hands.hand_type;
     hand_command_.left_hands.resize(hands.axes);
     hand_command_.right_hands.resize(hands.axes);
-    for (size_t i = 0; i < hands.axes; ++i) {
-      hand_command_.left_hands[i].name = core.slots().slot_joint_names()[hands.first_slot + i];
-      hand_command_.right_hands[i].name =
-        core.slots().slot_joint_names()[hands.first_slot + hands.axes + i];
+    for (size_t i = 0; i < 2 * hands.axes; ++i) {
+      auto & entry = i < hands.axes ? hand_command_.left_hands[i] :
+        hand_command_.right_hands[i - hands.axes];
+      entry.name = core.slots().slot_joint_names()[hands.first_slot + i];
+      entry.velocity = hands.velocity;  // acceleration, deceleration and effort stay 0
     }
     hand_publisher_ = node->create_publisher<HandCommands>(hands.command_topic, qos);
     hand_subscription_ = node->create_subscription<HandStates>(
@@ -471,23 +472,13 @@ private:
     const AimdkHandsOptions & hands = *options_.hands;
     hand_command_.header.stamp = now;
     hand_command_.header.sequence = command_sequence_;
+    const size_t left = hands.first_slot;
+    const size_t right = hands.first_slot + hands.axes;
     for (size_t i = 0; i < hands.axes; ++i) {
-      fill_hand_entry(hand_command_.left_hands[i], cmd, hands.first_slot + i, hands.velocity);
-      fill_hand_entry(
-        hand_command_.right_hands[i], cmd, hands.first_slot + hands.axes + i, hands.velocity);
+      hand_command_.left_hands[i].position = static_cast<double>(cmd.q_target[left + i]);
+      hand_command_.right_hands[i].position = static_cast<double>(cmd.q_target[right + i]);
     }
     hand_publisher_->publish(hand_command_);
-  }
-
-  template<typename Entry>
-  static void fill_hand_entry(
-    Entry & entry, const MotorCommand<N, T> & cmd, size_t slot, double velocity)
-  {
-    entry.position = static_cast<double>(cmd.q_target[slot]);
-    entry.velocity = velocity;
-    entry.acceleration = 0.0;
-    entry.deceleration = 0.0;
-    entry.effort = 0.0;
   }
 
   // hal/msg/JointState v1.0.0 ends with `uint16 error_code`; AimDK's later documented JointState

@@ -114,6 +114,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         "  state_decimation: 1",
         "  state_timeout_ms: 100",
         "  fault_timeout_ms: 1000",
+        "  first_state_timeout_ms: 10000",
         "  diagnostics_period_ms: 1000",
         "  motor_temperature_warn_c: 70",
         "  motor_temperature_error_c: 85",

@@ -25,9 +25,12 @@ TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type",
             "coupled_joints", "urdf_transmissions", "authority", "hands")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
-                  "state_decimation", "state_timeout_ms", "fault_timeout_ms", "diagnostics_period_ms",
-                  "motor_temperature_warn_c", "motor_temperature_error_c", "motor_error_fault_mask")
+                  "state_decimation", "state_timeout_ms", "fault_timeout_ms", "first_state_timeout_ms",
+                  "diagnostics_period_ms",
+                  "motor_temperature_warn_c", "motor_temperature_error_c", "motor_error_fault_mask", "is_async",
+                  "rw_rate")
 MAX_ERROR_FAULT_MASK = 0xFFFF_FFFF  # motor error codes are at most 32 bits (hg motorstate)
+MAX_RW_RATE = 100_000  # Hz; ros2_control caps rw_rate at the controller manager's update rate anyway
 IMU_KEYS = ("enabled", "name", "frame_id")
 GAIN_KEYS = ("stiffness", "damping")
 COMMAND_MODES = ("position", "velocity")
@@ -138,10 +141,13 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
             state_decimation=whole("state_decimation", 1, 10_000),
             state_timeout_ms=whole("state_timeout_ms", 1, 600_000),
             fault_timeout_ms=whole("fault_timeout_ms", 2, 3_600_000),
+            first_state_timeout_ms=whole("first_state_timeout_ms", 2, 3_600_000),
             diagnostics_period_ms=whole("diagnostics_period_ms", 0, 60_000),
             motor_temperature_warn_c=whole("motor_temperature_warn_c", 1, 200),
             motor_temperature_error_c=whole("motor_temperature_error_c", 1, 200),
             motor_error_fault_mask=whole("motor_error_fault_mask", 0, MAX_ERROR_FAULT_MASK),
+            is_async=v.optional(m, p, "is_async", v.boolean, d.is_async),
+            rw_rate=whole("rw_rate", 0, MAX_RW_RATE),
         )
         _check_fault_timeout(v, params, given="fault_timeout_ms" in m)
         _check_temperatures(v, params, given="motor_temperature_error_c" in m)

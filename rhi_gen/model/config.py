@@ -40,10 +40,14 @@ class Parameters:
     state_decimation: int = 1
     state_timeout_ms: int = 100
     fault_timeout_ms: int = 1000
+    first_state_timeout_ms: int = 10000   # after activation, until the first state (DDS discovery)
     diagnostics_period_ms: int = 1000     # /diagnostics every this long, 0: none
     motor_temperature_warn_c: int = 70    # /diagnostics: a motor this hot is WARN ...
     motor_temperature_error_c: int = 85   # ... and this hot ERROR (rhi-gen's defaults, not a vendor's)
     motor_error_fault_mask: int = 0       # motor error code bits that fault the robot (0: codes never do)
+    # Attributes of the <ros2_control> tag rather than driver parameters (ros2_control runs the component):
+    is_async: bool = False                # read()/write() in a thread of their own (Jazzy and later)
+    rw_rate: int = 0                      # read()/write() per second, 0: the controller manager's rate
 
 
 @dataclass(frozen=True)

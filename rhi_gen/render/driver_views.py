@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..model import RobotModel
+from .bringup_views import start_controllers
 
 
 @dataclass(frozen=True)
@@ -36,6 +37,7 @@ class DriverView:
     transmissions: tuple[TransmissionLine, ...]
     groups: tuple[CoupledView, ...]
     motor_group_of: dict[int, int] | None = None  # SDK slot -> index of its motor group (RobotSpec)
+    launch_controllers: str = ""  # the controllers the robot's launch file activates, space-separated
 
     @property
     def has_transmission(self) -> bool:
@@ -51,4 +53,5 @@ def driver_view(robot: RobotModel) -> DriverView:
     groups = tuple(CoupledView(group.name, f"kCoupled{k}", group.joints, tuple(slot[name] for name in group.joints),
                                tuple(value for row in group.matrix for value in row))
                    for k, group in enumerate(robot.coupled_groups))
-    return DriverView(lines, groups, {slot: k for k, group in enumerate(robot.motor_groups) for slot in group.slots})
+    return DriverView(lines, groups, {slot: k for k, group in enumerate(robot.motor_groups) for slot in group.slots},
+                      " ".join(start_controllers(robot)[0]))

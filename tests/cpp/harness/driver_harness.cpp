@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +25,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <string>
 #include <thread>
@@ -1165,6 +1167,7 @@ void test_decimation_keeps_state_fresh() {
 // read() that ended within fault_timeout_ms of it must have returned OK.
 constexpr int kFaultStateTimeoutMs = 20;
 constexpr int kFaultTimeoutMs = 300;
+constexpr int kFirstStateTimeoutMs = 900;  // the wait for the first state (DDS discovery)
 
 int64_t ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0).count();
@@ -1184,16 +1187,18 @@ void check_damping_only(const CommandFrame& c, const char* what) {
 // Controller cycles without any new state since `t0` until read() returns ERROR (or far past the
 // fault timeout). Returns the milliseconds after t0 at which the ERROR read() ended, -1 for none.
 // `stale_ok`: a read() after state_timeout_ms returned OK while the writer held damping only.
+// `dead_after_ms`: the bound ERROR may not come before (fault_timeout_ms, or first_state_timeout_ms
+// while the first state of the activation is awaited).
 int64_t cycle_until_error(Rig& rig, std::chrono::steady_clock::time_point t0, const ControllerCommand& cmd,
-                          bool* stale_ok, uint64_t* allocations) {
+                          bool* stale_ok, uint64_t* allocations, int dead_after_ms = kFaultTimeoutMs) {
   CommandFrame c;
-  while (ms_since(t0) < kFaultTimeoutMs + 5000) {
+  while (ms_since(t0) < dead_after_ms + 5000) {
     hardware_interface::return_type r = hardware_interface::return_type::OK;
     const uint64_t in_read = rhi_alloc::count_in([&] { r = rig.hw->read(kTime, kPeriod); });
     const int64_t after = ms_since(t0);
     if (r == hardware_interface::return_type::ERROR) {  // its error line may allocate, once
-      CHECK(after >= kFaultTimeoutMs, "read() returned ERROR %" PRId64 " ms after the last state, not after more "
-            "than fault_timeout_ms (%d)", after, kFaultTimeoutMs);
+      CHECK(after >= dead_after_ms, "read() returned ERROR %" PRId64 " ms after the last state (or activation), "
+            "not after more than %d ms", after, dead_after_ms);
       return after;
     }
     CHECK(r == hardware_interface::return_type::OK, "read() returns OK or ERROR");
@@ -1208,7 +1213,7 @@ int64_t cycle_until_error(Rig& rig, std::chrono::steady_clock::time_point t0, co
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  CHECK(false, "read() never returned ERROR within fault_timeout_ms (%d) + 5 s without state", kFaultTimeoutMs);
+  CHECK(false, "read() never returned ERROR within %d ms + 5 s without state", dead_after_ms);
   return -1;
 }
 
@@ -1233,6 +1238,7 @@ void test_faults() {
   hardware_interface::HardwareInfo info = make_hardware_info();
   info.hardware_parameters["state_timeout_ms"] = std::to_string(kFaultStateTimeoutMs);
   info.hardware_parameters["fault_timeout_ms"] = std::to_string(kFaultTimeoutMs);
+  info.hardware_parameters["first_state_timeout_ms"] = std::to_string(kFirstStateTimeoutMs);
   if (!setup(rig, info)) {
     teardown(rig);
     return;
@@ -1253,21 +1259,53 @@ void test_faults() {
   uint64_t allocations = 0;
   bool stale_ok = false;
 
-  // A robot that never answers is a dead link too: ERROR fault_timeout_ms after on_activate.
+  // A robot that never answers is a dead link too: ERROR first_state_timeout_ms after on_activate
+  // (not fault_timeout_ms: DDS discovery of a running robot may take longer), said in one line.
+  rhi_fake::logs::clear();
   const hardware_interface::return_type first_read = rig.hw->read(kTime, kPeriod);
   CHECK(first_read == hardware_interface::return_type::OK || ms_since(t0) >= kFaultTimeoutMs,
         "read() right after on_activate, before any state, returns OK");
-  CHECK(cycle_until_error(rig, t0, cmd, &stale_ok, &allocations) > 0,
-        "no state at all after on_activate: read() returns ERROR after fault_timeout_ms");
+  CHECK(cycle_until_error(rig, t0, cmd, &stale_ok, &allocations, kFirstStateTimeoutMs) > 0,
+        "no state at all after on_activate: read() returns ERROR after first_state_timeout_ms");
+  CHECK_EQ(rhi_fake::logs::count(Severity::Error), 1U, "exactly one error line for a robot that never answered");
+  CHECK_EQ(rhi_fake::logs::count_containing("never answered", Severity::Error), 1U,
+           "the error line says the robot never answered");
+  CHECK_EQ(rhi_fake::logs::count_containing("first_state_timeout_ms", Severity::Error), 1U,
+           "the error line names first_state_timeout_ms");
+  CHECK_EQ(rhi_fake::logs::count_containing("set_hardware_component_state", Severity::Error), 1U,
+           "the error line says how to recover");
   enter_error(rig);
   t.tick_writer();
   CHECK_EQ(t.sent_messages(), 0U, "no state ever came: nothing is sent after on_error either (layer 1)");
 
-  // A link that dies while the robot runs.
+  // A first state that comes late (DDS discovery past fault_timeout_ms, within
+  // first_state_timeout_ms) is no fault: read() stays OK, and the link's rule is fault_timeout_ms
+  // from then on (below).
   if (!recover(rig)) {
     teardown(rig);
     return;
   }
+  const auto late_t0 = std::chrono::steady_clock::now();
+  bool late_ok = true;
+  while (ms_since(late_t0) < kFaultTimeoutMs + 200) {
+    late_ok = late_ok && rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK;
+    rig.hw->write(kTime, kPeriod);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  CHECK(late_ok, "read() returns OK while the first state is awaited past fault_timeout_ms (within "
+        "first_state_timeout_ms)");
+  t.deliver_state(coded_state(1));
+  CHECK(rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK,
+        "read() returns OK once the late first state came");
+  t.tick_writer();
+  if (last_command(t, c, "after a late first state")) {
+    check_hold(c, coded_state(1), "first command after a late first state (layer 2)");
+  }
+  if (kHasHealthGpio) {
+    CHECK_EQ(rig.ifs.health[kFault]->get(), 0.0, "no fault on the health GPIO after a late first state");
+  }
+
+  // A link that dies while the robot runs.
   for (uint32_t k = 0; k < 3; ++k) {
     t.deliver_state(coded_state(k));
     rig.hw->read(kTime, kPeriod);
@@ -2106,6 +2144,58 @@ bool group_published(const std::array<bool, N>& present, size_t group) {
   return false;
 }
 
+// The robot's side of the threaded scenarios, each on a thread of its own until `stop`: a state
+// (and IMU) frame every 500 us, and every command received checked for torn groups (and, on
+// Unitree, its CRC).
+struct RobotThreads {
+  std::atomic<bool> stop{false};
+  std::atomic<uint64_t> produced{0}, commands_seen{0}, torn_commands{0}, crc_errors{0};
+  std::thread producer, monitor;
+
+  void start() {
+    producer = std::thread([this] {
+      Transport t;
+      for (uint32_t code = 1; !stop.load(); ++code) {
+        const StateFrame f = coded_state(code);
+        t.deliver_state(f);
+        t.deliver_imu(f);
+        produced.fetch_add(1);
+        std::this_thread::sleep_for(std::chrono::microseconds(500));
+      }
+    });
+    monitor = std::thread([this] {
+      Transport t;
+      CommandFrame c;
+      while (!stop.load()) {
+        if (t.last_command(c)) {
+          commands_seen.fetch_add(1);
+          for (size_t g = 0; g < kGroupCount; ++g) {
+            // One message per group: a group whose first message is still on its way (the writer
+            // publishes the groups one after another) is not torn, just not there yet.
+            if (group_published(c.present, g) && !consistent_group(c.q, &c.present, g, nullptr)) {
+              torn_commands.fetch_add(1);
+            }
+          }
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+          // One snapshot: every last_raw_command() call refreshes the buffer, so comparing the CRC
+          // of one call with the checksum of another raced with the writer thread.
+          const auto raw = t.last_raw_command();
+          if (raw.crc() != rhi_ref::low_cmd_crc(raw)) {
+            crc_errors.fetch_add(1);
+          }
+#endif
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(700));
+      }
+    });
+  }
+  void join() {
+    stop.store(true);
+    producer.join();
+    monitor.join();
+  }
+};
+
 void test_threads(int duration_ms) {
   rhi_check::Section section("threads");
   fresh_process();
@@ -2119,43 +2209,8 @@ void test_threads(int duration_ms) {
     rig.t.use_real_threads(false);
     return;
   }
-  std::atomic<bool> stop{false};
-  std::atomic<uint64_t> produced{0}, commands_seen{0}, torn_commands{0}, crc_errors{0};
-  std::thread producer([&] {
-    Transport t;
-    for (uint32_t code = 1; !stop.load(); ++code) {
-      const StateFrame f = coded_state(code);
-      t.deliver_state(f);
-      t.deliver_imu(f);
-      produced.fetch_add(1);
-      std::this_thread::sleep_for(std::chrono::microseconds(500));
-    }
-  });
-  std::thread monitor([&] {
-    Transport t;
-    CommandFrame c;
-    while (!stop.load()) {
-      if (t.last_command(c)) {
-        commands_seen.fetch_add(1);
-        for (size_t g = 0; g < kGroupCount; ++g) {
-          // One message per group: a group whose first message is still on its way (the writer
-          // publishes the groups one after another) is not torn, just not there yet.
-          if (group_published(c.present, g) && !consistent_group(c.q, &c.present, g, nullptr)) {
-            torn_commands.fetch_add(1);
-          }
-        }
-#if defined(RHI_TRANSPORT_UNITREE_DDS)
-        // One snapshot: every last_raw_command() call refreshes the buffer, so comparing the CRC
-        // of one call with the checksum of another raced with the writer thread.
-        const auto raw = t.last_raw_command();
-        if (raw.crc() != rhi_ref::low_cmd_crc(raw)) {
-          crc_errors.fetch_add(1);
-        }
-#endif
-      }
-      std::this_thread::sleep_for(std::chrono::microseconds(700));
-    }
-  });
+  RobotThreads robot;
+  robot.start();
   uint64_t cycles = 0, states_seen = 0, torn_states = 0;
   uint32_t code = 500;
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
@@ -2188,23 +2243,150 @@ void test_threads(int duration_ms) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   deactivate(rig);  // stops the writer thread while the producer still delivers
-  stop.store(true);
-  producer.join();
-  monitor.join();
+  robot.join();
   teardown(rig);
   rig.t.use_real_threads(false);
   std::printf("threads: %d ms, %" PRIu64 " state frames produced, %" PRIu64 " controller cycles (%" PRIu64
               " with state), %" PRIu64 " commands observed; torn states %" PRIu64 ", torn commands %" PRIu64
               ", bad CRCs %" PRIu64 "\n",
-              duration_ms, produced.load(), cycles, states_seen, commands_seen.load(), torn_states,
-              torn_commands.load(), crc_errors.load());
-  CHECK(produced.load() > 10, "the producer delivered state frames");
+              duration_ms, robot.produced.load(), cycles, states_seen, robot.commands_seen.load(), torn_states,
+              robot.torn_commands.load(), robot.crc_errors.load());
+  CHECK(robot.produced.load() > 10, "the producer delivered state frames");
   CHECK(states_seen > 5, "read() saw state while threads ran");
-  CHECK(commands_seen.load() > 5, "the robot received commands while threads ran");
+  CHECK(robot.commands_seen.load() > 5, "the robot received commands while threads ran");
   CHECK_EQ(torn_states, 0U, "torn state frames seen by read()");
-  CHECK_EQ(torn_commands.load(), 0U, "torn command frames received by the robot");
-  CHECK_EQ(crc_errors.load(), 0U, "commands with a wrong CRC");
+  CHECK_EQ(robot.torn_commands.load(), 0U, "torn command frames received by the robot");
+  CHECK_EQ(robot.crc_errors.load(), 0U, "commands with a wrong CRC");
 }
+
+// ================================================================ async
+// An asynchronous component (<ros2_control is_async="true">, Jazzy and later): ros2_control's
+// AsyncFunctionHandler calls read() and then write() from a thread of its own, triggered by each
+// controller manager cycle, while the controller manager's thread runs the controllers on the
+// framework's handles and switches their claims, the transport's threads deliver state and send
+// commands, and the handler is paused (the current cycle finished) before on_deactivate.
+#if RHI_FAKE_HI_MAJOR >= 4
+void test_async(int duration_ms) {
+  rhi_check::Section section("async");
+  fresh_process();
+  Rig rig;
+  rig.t.use_real_threads(true);
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["state_timeout_ms"] = "2000";  // sanitizers slow everything down
+  info.hardware_parameters["fault_timeout_ms"] = "20000";
+  if (!setup(rig, info) || !activate(rig)) {
+    teardown(rig);
+    rig.t.use_real_threads(false);
+    return;
+  }
+  RobotThreads robot;
+  robot.start();
+  // The asynchronous handler: one read() + write() per trigger, as AsyncFunctionHandler runs them.
+  std::mutex m;
+  std::condition_variable cv;
+  uint64_t triggered = 0, done = 0;
+  bool quit = false;
+  std::atomic<uint64_t> read_errors{0}, write_errors{0};
+  std::thread handler([&] {
+    std::unique_lock<std::mutex> lock(m);
+    while (true) {
+      cv.wait(lock, [&] { return quit || triggered > done; });
+      if (quit) {
+        return;
+      }
+      lock.unlock();
+      const bool read_ok = rig.hw->read(kTime, kPeriod) == hardware_interface::return_type::OK;
+      const bool write_ok = read_ok && rig.hw->write(kTime, kPeriod) == hardware_interface::return_type::OK;
+      read_errors.fetch_add(read_ok ? 0U : 1U);
+      write_errors.fetch_add(read_ok && !write_ok ? 1U : 0U);
+      lock.lock();
+      done = triggered;
+      cv.notify_all();
+    }
+  });
+  // pause_async_operations(): the current cycle ends before a transition.
+  const auto pause = [&] {
+    std::unique_lock<std::mutex> lock(m);
+    cv.wait(lock, [&] { return done == triggered; });
+  };
+  const std::vector<std::string> all = interface_names([](size_t, const std::string&) { return true; });
+  uint64_t cycles = 0, states_seen = 0, torn_states = 0, switches = 0;
+  uint32_t code = 500;
+  ControllerCommand cmd;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
+  // The controllers run while read()/write() may: ros2_control locks its handles one at a time, so a
+  // controller may see (and write() may take) joints of two cycles. What the driver guarantees is
+  // checked where the framework does not interfere: every 4th cycle the controller waits for the
+  // handler's cycle to end, then the state it reads must be one frame, and the new command it writes
+  // (unchanged until then) must reach the robot as one frame.
+  while (std::chrono::steady_clock::now() < end) {
+    const bool checked = cycles % 4 == 0;
+    if (checked) {
+      pause();
+    }
+    std::array<double, N> q{};
+    bool any = false;
+    for (size_t k = 0; k < kJointCount; ++k) {
+      q[kJoints[k].slot] = rig.ifs.pos[k]->get();
+      any = any || q[kJoints[k].slot] != 0.0;
+    }
+    if (any && checked) {
+      ++states_seen;
+      for (size_t g = 0; g < kGroupCount; ++g) {
+        torn_states += consistent_group(q, nullptr, g, nullptr) ? 0U : 1U;
+      }
+    }
+    if (checked) {
+      ++code;
+    }
+    for (const Joint& j : kJoints) {
+      cmd.q[j.slot] = encode_position(j, code);
+      cmd.dq[j.slot] = 0.0;
+      cmd.kp[j.slot] = 1.0 + (code % 7);
+      cmd.kd[j.slot] = 0.5;
+      cmd.ff[j.slot] = 0.0;
+    }
+    apply_command(rig.ifs, cmd);
+    if (cycles % 40 == 5) {  // a controller switch while write() may run: release, then claim again
+      switch_claims(rig, {}, all);
+      switch_claims(rig, all, {});
+      ++switches;
+    }
+    {  // the controller manager's next cycle triggers the component
+      std::lock_guard<std::mutex> lock(m);
+      ++triggered;
+      cv.notify_all();
+    }
+    ++cycles;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  pause();
+  deactivate(rig);  // stops the writer thread while the producer still delivers
+  {
+    std::lock_guard<std::mutex> lock(m);
+    quit = true;
+    cv.notify_all();
+  }
+  handler.join();
+  robot.join();
+  teardown(rig);
+  rig.t.use_real_threads(false);
+  std::printf("async: %d ms, %" PRIu64 " state frames produced, %" PRIu64 " controller cycles (%" PRIu64
+              " with state), %" PRIu64 " claim switches, %" PRIu64 " commands observed; torn states %" PRIu64
+              ", torn commands %" PRIu64 "\n",
+              duration_ms, robot.produced.load(), cycles, states_seen, switches, robot.commands_seen.load(),
+              torn_states, robot.torn_commands.load());
+  CHECK(robot.produced.load() > 10, "the producer delivered state frames");
+  CHECK(states_seen > 5, "the controllers saw state that read() wrote from the asynchronous thread");
+  CHECK(robot.commands_seen.load() > 5, "the robot received commands while read()/write() ran asynchronously");
+  CHECK(switches > 0, "claims were switched while the asynchronous thread ran");
+  CHECK_EQ(torn_states, 0U, "torn state frames seen by the controllers");
+  CHECK_EQ(robot.torn_commands.load(), 0U, "torn command frames received by the robot");
+  CHECK_EQ(robot.crc_errors.load(), 0U, "commands with a wrong CRC");
+  CHECK_EQ(read_errors.load(), 0U, "read() errors on the asynchronous thread (the link stayed up)");
+  CHECK_EQ(write_errors.load(), 0U, "write() errors on the asynchronous thread");
+}
+#endif
 
 // ================================================================ transmission
 // Motors that are not joints, through the whole transport: the robot's generated transmissions
@@ -2516,8 +2698,8 @@ int main(int argc, char** argv) {
     if (kHasTransmission && only.empty()) {
       // The main scenario, decimation and parameters compare exact motor values with joint values.
       std::printf("motors that are not joints: sections interfaces, transmission, faults, health, diagnostics, "
-                  "fake_robot, threads\n");
-      only = "interfaces,transmission,faults,health,diagnostics,fake_robot,threads";
+                  "fake_robot, threads, async\n");
+      only = "interfaces,transmission,faults,health,diagnostics,fake_robot,threads,async";
     }
     if (selected(only, "interfaces")) test_interfaces();
     if (selected(only, "transmission")) test_transmission();
@@ -2543,6 +2725,9 @@ int main(int argc, char** argv) {
     if (selected(only, "take_control")) test_take_control();
 #endif
     if (selected(only, "threads")) test_threads(threads_ms);
+#if RHI_FAKE_HI_MAJOR >= 4
+    if (selected(only, "async")) test_async(threads_ms);
+#endif
   } catch (const std::exception& e) {
     CHECK(false, "uncaught exception: %s", e.what());
   }

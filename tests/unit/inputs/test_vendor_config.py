@@ -88,6 +88,12 @@ def test_agibot_groups_get_offsets():
     (BASE + "parameters:\n  state_timeout_ms: 1500\n", 11, "parameters.state_timeout_ms",
      "must be less than fault_timeout_ms (1000, the default) -> set parameters.fault_timeout_ms above 1500"),
     (BASE + "parameters:\n  enable_monitor: maybe\n", 11, "parameters.enable_monitor", "true or false"),
+    (BASE + "parameters:\n  first_state_timeout_ms: 1\n", 11, "parameters.first_state_timeout_ms", "out of range"),
+    (BASE + "parameters:\n  first_state_timeout_ms: later\n", 11, "parameters.first_state_timeout_ms",
+     "whole number"),
+    (BASE + "parameters:\n  is_async: sometimes\n", 11, "parameters.is_async", "true or false"),
+    (BASE + "parameters:\n  rw_rate: -5\n", 11, "parameters.rw_rate", "out of range"),
+    (BASE + "parameters:\n  rw_rate: 100001\n", 11, "parameters.rw_rate", "out of range"),
     (BASE + "parameters:\n  diagnostics_period_ms: 60001\n", 11, "parameters.diagnostics_period_ms", "out of range"),
     (BASE + "parameters:\n  motor_temperature_warn_c: 90\n", 11, "parameters.motor_temperature_warn_c",
      ("must be less than motor_temperature_error_c (85, the default) -> set parameters.motor_temperature_error_c "
@@ -129,6 +135,17 @@ def test_fault_timeout_is_read_and_follows_the_state_timeout(tmp_path):
     assert (cfg.parameters.state_timeout_ms, cfg.parameters.fault_timeout_ms) == (50, 400)
     just_above = load_config(write(tmp_path, BASE + "parameters:\n  state_timeout_ms: 999\n"))
     assert just_above.parameters.fault_timeout_ms == 1000
+
+
+def test_start_up_and_async_parameters_are_read_with_their_defaults(tmp_path):
+    defaults = load_config(write(tmp_path, BASE)).parameters
+    assert (defaults.first_state_timeout_ms, defaults.is_async, defaults.rw_rate) == (10000, False, 0)
+    given = load_config(write(tmp_path, BASE + "parameters:\n  first_state_timeout_ms: 30000\n"
+                              "  is_async: true\n  rw_rate: 250\n")).parameters
+    assert (given.first_state_timeout_ms, given.is_async, given.rw_rate) == (30000, True, 250)
+    # shorter than fault_timeout_ms is no error: the driver waits at least fault_timeout_ms for a first state
+    short = load_config(write(tmp_path, BASE + "parameters:\n  first_state_timeout_ms: 500\n")).parameters
+    assert short.first_state_timeout_ms == 500
 
 
 def test_unitree_motor_count_above_slots(tmp_path):

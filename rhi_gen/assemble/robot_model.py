@@ -16,7 +16,7 @@ from ..errors import ConfigError, UrdfError
 from ..model.config import VendorConfig
 from ..model.motor_groups import is_leg
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
-from ..model.robot import InputProvenance, JointTransmission, MotorJoint, RobotModel
+from ..model.robot import InputProvenance, JointTransmission, KdlRoot, MotorJoint, RobotModel
 from ..model.urdf import UrdfJoint, UrdfRobot, limits_problem, safe_position
 from .joint_inertia import JointDynamics, joint_dynamics
 from .transmissions import decide_transmissions
@@ -166,8 +166,24 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
         provenance=provenance, coupled_groups=decided.groups, urdf_name=urdf.name,
         urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"), authority=config.authority,
-        hands=config.hands,
+        hands=config.hands, kdl_root=kdl_root(urdf),
     )
+
+
+def kdl_root(urdf: UrdfRobot) -> KdlRoot | None:
+    """The massless root the installed URDF puts above a root link with an inertia (None when the root has
+    none): KDL, and so robot_state_publisher, ignores a root's inertia with a warning on every launch.
+    ``base_link`` as ROS descriptions name it, unless the robot already has a link of that name."""
+    if not urdf.root_has_inertia:
+        return None
+    link = "base_link"
+    while link in urdf.links:
+        link = f"{urdf.root_link}_root" if link == "base_link" else link + "_"
+    joints = {j.name for j in urdf.joints}
+    joint = f"{link}_to_{urdf.root_link}"
+    while joint in joints:
+        joint += "_"
+    return KdlRoot(link=link, joint=joint, child=urdf.root_link)
 
 
 def _check_existing_ros2_control(urdf: UrdfRobot, by_name: dict[str, UrdfJoint], urdf_shown: str) -> None:

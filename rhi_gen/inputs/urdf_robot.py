@@ -76,6 +76,8 @@ def robot_from_root(root: etree._Element, data: bytes, ctx: UrdfContext, canonic
 
     check_mimic(joints, refs, ctx)
     check_tree(joints, refs, links, link_el, ctx)
+    children = {j.child for j in joints}
+    root_link = next(name for name in links if name not in children)
 
     return UrdfRobot(
         name=robot_name,
@@ -85,4 +87,6 @@ def robot_from_root(root: etree._Element, data: bytes, ctx: UrdfContext, canonic
         ros2_control=read_ros2_control(root, q, ctx),
         transmissions=read_transmissions(root, q, ctx, joints),
         canonical_xml=canonical_urdf_bytes(data) if canonical is None else canonical,
+        root_link=root_link,
+        root_has_inertia=link_el[root_link].find(q("inertial")) is not None,
     )

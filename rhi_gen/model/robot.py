@@ -76,6 +76,15 @@ class InputProvenance:
 
 
 @dataclass(frozen=True)
+class KdlRoot:
+    """A massless root link the installed URDF adds above the robot's root, joined by a fixed joint: KDL
+    (robot_state_publisher) cannot use a root link with an inertia and warns on every launch."""
+    link: str    # the new root link
+    joint: str   # the fixed joint from it to the robot's root
+    child: str   # the robot's root link
+
+
+@dataclass(frozen=True)
 class RobotModel:
     vendor: str               # C++ namespace robot_hardware_interface::<vendor> and folder, e.g. "unitree"
     robot: str                # file stem, e.g. "g1"
@@ -99,6 +108,7 @@ class RobotModel:
     urdf_xml: str = ""        # the expanded URDF (no xacro banner, no machine paths): urdf/<robot>.urdf
     authority: str = "full"   # vendor YAML authority: full | upper_body (model/config.py AUTHORITIES)
     hands: str = "none"       # vendor YAML hands: none | dex3 (model/config.py HANDS)
+    kdl_root: KdlRoot | None = None  # the installed URDF's massless root, where the URDF's root has an inertia
 
     @property
     def cpp_namespace(self) -> str:

@@ -115,6 +115,8 @@ class UrdfRobot:
     ros2_control: tuple[Ros2ControlBlock, ...] = ()
     transmissions: tuple[UrdfTransmission, ...] = ()  # document order
     canonical_xml: bytes = b""  # expanded XML without the volatile xacro header, for hashing
+    root_link: str = ""         # the one link that is no joint's child
+    root_has_inertia: bool = False  # the root link has an <inertial> (KDL refuses that root)
 
     @property
     def actuated_joints(self) -> tuple[UrdfJoint, ...]:

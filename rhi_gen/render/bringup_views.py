@@ -12,8 +12,10 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from html import escape
 
 from ..model import RobotModel
+from ..model.robot import KdlRoot
 from .fake_robot_views import has_fake_robot
 from .views import DESCRIPTION_ARGUMENTS, HEALTH_CONTROLLER, controllers_view, xacro_text
 
@@ -28,6 +30,12 @@ ARGUMENT_HELP = {
     "state_decimation": "process every n-th state message",
     "state_timeout_ms": "milliseconds without state before the driver holds the joints",
     "fault_timeout_ms": "milliseconds without state before read() returns ERROR (the link is dead)",
+    "first_state_timeout_ms": "milliseconds after activation to wait for the robot's first state (DDS discovery) "
+                              "before read() returns ERROR",
+    "calibration_file": "the motors' calibration file (driver parameter calibration_file; '': none)",
+    "is_async": "true: ros2_control runs the driver's read() and write() in a thread of their own (Jazzy and "
+                "later)",
+    "rw_rate": "read() and write() per second (Jazzy and later; 0: the controller manager's update rate)",
     "description_file": "the robot's URDF the description includes ('': urdf/<robot>.urdf of the package)",
     "controllers_file": "controller manager parameters and controllers ('': config/<robot>_controllers.yaml)",
     "active_controllers": "controllers to activate (names in the controllers file, space-separated)",
@@ -41,7 +49,8 @@ def argument_defaults(robot: RobotModel) -> tuple[tuple[str, str], ...]:
     values = {"network_interface": p.network_interface, "enable_monitor": "true" if p.enable_monitor else "false",
               "command_writer_period_us": str(p.command_writer_period_us),
               "state_decimation": str(p.state_decimation), "state_timeout_ms": str(p.state_timeout_ms),
-              "fault_timeout_ms": str(p.fault_timeout_ms)}
+              "fault_timeout_ms": str(p.fault_timeout_ms), "first_state_timeout_ms": str(p.first_state_timeout_ms),
+              "calibration_file": "", "is_async": "true" if p.is_async else "false", "rw_rate": str(p.rw_rate)}
     return (("use_mock_hardware", "false"), *((name, values[name]) for name in DESCRIPTION_ARGUMENTS[1:]))
 
 
@@ -78,12 +87,29 @@ def xacro_literal(text: str) -> str:
 
 def urdf_view(robot: RobotModel) -> UrdfView:
     """The expanded URDF split after its XML declaration, so the banner comment can follow it; xacro
-    substitutions escaped, since the description includes it through xacro."""
+    substitutions escaped, since the description includes it through xacro; a massless root added before
+    the closing </robot> where the robot's root link has an inertia (model KdlRoot)."""
     text = robot.urdf_xml.lstrip("\ufeff")
+    prolog = ""
     if text.startswith("<?xml"):
         end = text.index("?>") + 2
-        return UrdfView(prolog=text[:end] + "\n", body=xacro_literal(text[end:].lstrip("\n")))
-    return UrdfView(prolog="", body=xacro_literal(text))
+        prolog, text = text[:end] + "\n", text[end:].lstrip("\n")
+    if robot.kdl_root is not None:
+        close = text.rindex("</robot>")
+        text = text[:close] + kdl_root_xml(robot.kdl_root) + text[close:]
+    return UrdfView(prolog=prolog, body=xacro_literal(text))
+
+
+def kdl_root_xml(root: KdlRoot) -> str:
+    """The massless root link and its fixed joint, indented as the usual URDF's top-level elements."""
+    link, joint, child = (escape(name, quote=True) for name in (root.link, root.joint, root.child))
+    return (f"  <!-- rhi-gen: robot_state_publisher (KDL) does not accept a root link with an inertia: a\n"
+            f"       massless root above {child.replace('--', '- -')}, as ROS descriptions have it -->\n"
+            f"  <link name=\"{link}\"/>\n"
+            f"  <joint name=\"{joint}\" type=\"fixed\">\n"
+            f"    <parent link=\"{link}\"/>\n"
+            f"    <child link=\"{child}\"/>\n"
+            f"  </joint>\n")
 
 
 @dataclass(frozen=True)

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from lxml import etree
 
 from rhi_gen.render.bringup_views import start_controllers
 from rhi_gen.render.fake_robot_views import has_fake_robot
@@ -28,7 +29,8 @@ from tests.support.repo import URDF_FIXTURES, copy_project
 LABELS = project_robot_labels()
 XACRO = Path(sys.executable).parent / "xacro"
 DESCRIPTION_ARGUMENTS = ["use_mock_hardware", "network_interface", "enable_monitor", "command_writer_period_us",
-                         "state_decimation", "state_timeout_ms", "fault_timeout_ms"]
+                         "state_decimation", "state_timeout_ms", "fault_timeout_ms", "first_state_timeout_ms",
+                         "calibration_file", "is_async", "rw_rate"]
 LAUNCH_ARGUMENTS = [*DESCRIPTION_ARGUMENTS, "description_file", "controllers_file", "active_controllers",
                     "inactive_controllers"]
 
@@ -50,6 +52,13 @@ def xacro(path: Path, *args: str) -> str:
     return result.stdout
 
 
+def _attr(element: etree._Element, path: str, name: str) -> str | None:
+    """Attribute ``name`` of the element at ``path`` below ``element``, which must exist."""
+    found = element.find(path)
+    assert found is not None, f"no <{path}> in <{element.tag!r}>"
+    return found.get(name)
+
+
 def interfaces(d) -> dict:
     """Everything but the <hardware>: what mock and real must share."""
     return {"joints": d.joints, "sensors": d.sensors, "name": d.name, "type": d.type}
@@ -66,11 +75,24 @@ def test_description_expands_for_the_robot_and_for_mock_hardware(package, label)
     check_ros2_control(mock, r.model, r.yaml_path, package_dir, mock=True)
     assert interfaces(mock) == interfaces(real)
     assert parse_ros2_control(xacro(path, "use_mock_hardware:=false"))[0] == real  # the default is the robot
-    # the whole robot: every link and joint of its URDF, under the URDF's robot name
+    # the whole robot: every link and joint of its URDF, under the URDF's robot name, and where the URDF's
+    # root link has an inertia a massless root above it (KDL, robot_state_publisher, refuses that root)
+    added = r.model.kdl_root
+    assert (added is not None) == r.urdf.root_has_inertia
     for root in (real_root, mock_root):
         assert root.get("name") == r.urdf.name
-        assert [j.get("name") for j in root.findall("joint")] == [j.name for j in r.urdf.joints]
-        assert [link.get("name") for link in root.findall("link")] == list(r.urdf.links)
+        assert [j.get("name") for j in root.findall("joint")] == [j.name for j in r.urdf.joints] + (
+            [added.joint] if added else [])
+        assert [link.get("name") for link in root.findall("link")] == list(r.urdf.links) + (
+            [added.link] if added else [])
+        children = {_attr(j, "child", "link") for j in root.findall("joint")}
+        tops = [link for link in root.findall("link") if link.get("name") not in children]
+        assert len(tops) == 1 and tops[0].find("inertial") is None, f"{label}: the root link has an inertia"
+        if added:
+            joint = root.findall("joint")[-1]
+            assert (joint.get("type"), _attr(joint, "parent", "link"), _attr(joint, "child", "link")) == (
+                "fixed", added.link, r.urdf.root_link)
+            assert joint.find("origin") is None  # the identity: the robot's frames stay where they were
 
 
 def test_description_arguments_reach_the_driver(package):
@@ -78,10 +100,33 @@ def test_description_arguments_reach_the_driver(package):
     path = package_dir / "description" / "g1.urdf.xacro"
     d, _ = parse_ros2_control(xacro(path, "network_interface:=enp3s0", "enable_monitor:=false",
                                     "command_writer_period_us:=5000", "state_decimation:=4", "state_timeout_ms:=250",
-                                    "fault_timeout_ms:=3000"))
+                                    "fault_timeout_ms:=3000", "first_state_timeout_ms:=20000"))
     assert d.parameters == {"network_interface": "enp3s0", "enable_monitor": "false",
                             "command_writer_period_us": "5000", "state_decimation": "4", "state_timeout_ms": "250",
-                            "fault_timeout_ms": "3000"}
+                            "fault_timeout_ms": "3000", "first_state_timeout_ms": "20000"}
+
+
+def test_calibration_file_is_a_description_argument(package):
+    """calibration_file:=<file> reaches the <hardware> as the driver's parameter; empty (the default) adds none."""
+    package_dir, _ = package
+    path = package_dir / "description" / "pm01.urdf.xacro"
+    given, _ = parse_ros2_control(xacro(path, "calibration_file:=/opt/robot/pm01 calibration.yaml"))
+    assert given.parameters["calibration_file"] == "/opt/robot/pm01 calibration.yaml"
+    assert "calibration_file" not in parse_ros2_control(xacro(path))[0].parameters
+    assert "calibration_file" not in parse_ros2_control(xacro(path, "calibration_file:="))[0].parameters
+    mock, _ = parse_ros2_control(xacro(path, "use_mock_hardware:=true", "calibration_file:=/c.yaml"))
+    assert "calibration_file" not in mock.parameters  # mock hardware has no motors to calibrate
+
+
+def test_async_attributes_are_description_arguments(package):
+    """is_async and rw_rate are attributes of <ros2_control> (ros2_control's parser reads them there)."""
+    package_dir, _ = package
+    path = package_dir / "description" / "pm01.urdf.xacro"
+    default = etree.fromstring(xacro(path).encode())
+    assert (_attr(default, "ros2_control", "is_async"), _attr(default, "ros2_control", "rw_rate")) == ("false", "0")
+    for given in ("true", "True"):  # xacro turns a bare true into True: the description normalises it
+        root = etree.fromstring(xacro(path, f"is_async:={given}", "rw_rate:=250").encode())
+        assert (_attr(root, "ros2_control", "is_async"), _attr(root, "ros2_control", "rw_rate")) == ("true", "250")
 
 
 def test_description_takes_another_urdf(package, tmp_path):
@@ -163,6 +208,24 @@ def check_controllers(launched: Launched, description, controllers_file: Path, m
             assert {f"{j.name}/position" for j in model.joints} <= states
 
 
+def test_launch_applies_a_calibration_file(package, tmp_path) -> None:
+    """`ros2 launch robot_hardware_interface pm01.launch.py calibration_file:=<file>`: the file reaches the
+    <hardware> of the description robot_state_publisher and the controller manager get (expanded by the real
+    xacro); is_async and rw_rate reach <ros2_control>."""
+    package_dir, _ = package
+    calibration = tmp_path / "pm01 calibration.yaml"
+    calibration.write_text("J00_HIP_PITCH_L: {offset: 0.01}\n")
+    launched = run(package_dir, "pm01", calibration_file=str(calibration), is_async="true", rw_rate="250")
+    (rsp,) = node(launched, "robot_state_publisher")
+    (description_xml,) = [p["robot_description"] for p in rsp.parameters if isinstance(p, dict)]
+    d, root = parse_ros2_control(description_xml)
+    assert d.parameters["calibration_file"] == str(calibration)
+    assert (_attr(root, "ros2_control", "is_async"), _attr(root, "ros2_control", "rw_rate")) == ("true", "250")
+    (default_rsp,) = node(run(package_dir, "pm01"), "robot_state_publisher")
+    (default_xml,) = [p["robot_description"] for p in default_rsp.parameters if isinstance(p, dict)]
+    assert "calibration_file" not in parse_ros2_control(default_xml)[0].parameters
+
+
 @pytest.mark.parametrize("mock", [False, True], ids=["robot", "mock"])
 @pytest.mark.parametrize("label", LABELS)
 def test_launch_file_starts_the_robot(package, label, mock) -> None:
@@ -185,6 +248,8 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
         "enable_monitor": "true" if p.enable_monitor else "false",
         "command_writer_period_us": str(p.command_writer_period_us), "state_decimation": str(p.state_decimation),
         "state_timeout_ms": str(p.state_timeout_ms), "fault_timeout_ms": str(p.fault_timeout_ms),
+        "first_state_timeout_ms": str(p.first_state_timeout_ms), "calibration_file": "",
+        "is_async": "true" if p.is_async else "false", "rw_rate": str(p.rw_rate),
         "description_file": "", "controllers_file": "",
         "active_controllers": " ".join(start_controllers(m)[0]),
         "inactive_controllers": " ".join(start_controllers(m)[1])}

@@ -32,6 +32,10 @@ DESCRIPTION_ARGUMENTS = [
     'state_decimation',
     'state_timeout_ms',
     'fault_timeout_ms',
+    'first_state_timeout_ms',
+    'calibration_file',
+    'is_async',
+    'rw_rate',
 ]
 ARGUMENTS = [
     ('robot', 'the robot: launch/<robot>.launch.py, description/<robot>.urdf.xacro'),

@@ -33,7 +33,8 @@ const RobotUnderTest kRobot{
   "      <param name=\"command_writer_period_us\">2000</param>\n"
   "      <param name=\"state_decimation\">1</param>\n"
   "      <param name=\"state_timeout_ms\">100</param>\n"
-  "      <param name=\"fault_timeout_ms\">1000</param>\n",
+  "      <param name=\"fault_timeout_ms\">1000</param>\n"
+  "      <param name=\"first_state_timeout_ms\">10000</param>\n",
   {
     {"left_hip_pitch_joint", "left_hip_pitch_joint", "revolute",
       "<limit lower=\"-2.5307\" upper=\"2.8798\" effort=\"88.0\" velocity=\"32.0\"/>",

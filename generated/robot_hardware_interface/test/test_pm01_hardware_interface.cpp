@@ -33,7 +33,8 @@ const RobotUnderTest kRobot{
   "      <param name=\"command_writer_period_us\">2000</param>\n"
   "      <param name=\"state_decimation\">1</param>\n"
   "      <param name=\"state_timeout_ms\">100</param>\n"
-  "      <param name=\"fault_timeout_ms\">1000</param>\n",
+  "      <param name=\"fault_timeout_ms\">1000</param>\n"
+  "      <param name=\"first_state_timeout_ms\">10000</param>\n",
   {
     {"J00_HIP_PITCH_L", "J00_HIP_PITCH_L", "revolute",
       "<limit lower=\"-3.141\" upper=\"2.443\" effort=\"164.0\" velocity=\"26.3\"/>",

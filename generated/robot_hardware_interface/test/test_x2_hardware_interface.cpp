@@ -33,7 +33,8 @@ const RobotUnderTest kRobot{
   "      <param name=\"command_writer_period_us\">2000</param>\n"
   "      <param name=\"state_decimation\">1</param>\n"
   "      <param name=\"state_timeout_ms\">100</param>\n"
-  "      <param name=\"fault_timeout_ms\">1000</param>\n",
+  "      <param name=\"fault_timeout_ms\">1000</param>\n"
+  "      <param name=\"first_state_timeout_ms\">10000</param>\n",
   {
     {"left_hip_pitch_joint", "left_hip_pitch_joint", "revolute",
       "<limit lower=\"-2.70526\" upper=\"2.556907\" effort=\"120.0\" velocity=\"11.93808\"/>",

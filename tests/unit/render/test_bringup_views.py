@@ -81,3 +81,41 @@ def test_urdf_copy_reads_back_unchanged_through_xacro(tmp_path):
                                       '<xacro:include filename="r.urdf"/></robot>')
     doc = xacro.process_file(str(tmp_path / "d.xacro"))
     assert [e.getAttribute("name") for e in doc.getElementsByTagName("link")] == names
+
+
+def _root_urdf(root: str, *, inertia: bool, extra_links: str = "", extra_joint: str = "") -> bytes:
+    inertial = '<inertial><mass value="3"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+    return (f'<?xml version="1.0"?>\n<robot name="r"><link name="{root}">{inertial if inertia else ""}</link>'
+            f'<link name="leg"/>{extra_links}<joint name="hip" type="revolute"><parent link="{root}"/>'
+            f'<child link="leg"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>{extra_joint}'
+            f'</robot>\n').encode()
+
+
+def test_a_root_link_with_an_inertia_gets_a_massless_root_above_it():
+    """robot_state_publisher's KDL refuses a root link with an inertia (a warning on every launch): the
+    installed URDF adds base_link, or <root>_root where base_link is taken, joined by a fixed joint."""
+    from lxml import etree
+
+    from rhi_gen.assemble.robot_model import kdl_root
+    from rhi_gen.inputs.urdf_loader import parse_urdf_bytes
+
+    assert kdl_root(parse_urdf_bytes(_root_urdf("pelvis", inertia=False), source="r.urdf")) is None
+    plain = kdl_root(parse_urdf_bytes(_root_urdf("pelvis", inertia=True), source="r.urdf"))
+    assert plain is not None
+    assert (plain.link, plain.joint, plain.child) == ("base_link", "base_link_to_pelvis", "pelvis")
+    taken = parse_urdf_bytes(_root_urdf("base_link", inertia=True, extra_links='<link name="base_link_root"/>',
+                                        extra_joint='<joint name="f" type="fixed"><parent link="leg"/>'
+                                                    '<child link="base_link_root"/></joint>'), source="r.urdf")
+    other = kdl_root(taken)
+    assert other is not None and (other.link, other.child) == ("base_link_root_", "base_link")
+    # rendered: the URDF's bytes, then the new root before </robot>; a name xacro would evaluate stays literal
+    robot = replace(_robot("unitree_dds"), urdf_xml=_root_urdf("${odd}&<", inertia=True).decode()
+                    .replace('"${odd}&<"', '"${odd}&amp;&lt;"'))
+    robot = replace(robot, kdl_root=kdl_root(parse_urdf_bytes(robot.urdf_xml.encode(), source="r.urdf")))
+    view = urdf_view(robot)
+    tree = etree.fromstring(view.body.replace("$${", "${").encode())
+    assert [link.get("name") for link in tree.findall("link")][-1] == "base_link"
+    joint = tree.findall("joint")[-1]
+    assert (joint.get("type"), joint.findtext("missing"), [e.get("link") for e in joint]) == (
+        "fixed", None, ["base_link", "${odd}&<"])
+    assert view.prolog == '<?xml version="1.0"?>\n'

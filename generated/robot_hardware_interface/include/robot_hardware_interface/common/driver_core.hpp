@@ -155,10 +155,14 @@ public:
   // or, before the first, since the activation (-1 before either).
   int64_t silence_ns(int64_t now_ns) const {return freshness_.silence_ns(now_ns);}
 
-  // read(): after `silence_ns` the link is dead (no valid state for more than fault_timeout_ms).
+  // read(): after `silence_ns` the link is dead (no valid state for more than fault_timeout_ms,
+  // or first_state_timeout_ms while the first state of the activation is awaited).
   bool link_dead(int64_t silence_ns) const
   {
-    return HealthFacts::silent_for(silence_ns, parameters_.fault_timeout_ms);
+    return HealthFacts::silent_for(
+      silence_ns, HealthFacts::dead_after_ms(
+        !safe_start_.first_state_received(), parameters_.fault_timeout_ms,
+        parameters_.first_state_timeout_ms));
   }
 
   // on_error: the command writer holds every joint damping-only until the next activation.
@@ -190,6 +194,7 @@ public:
     const auto latched = guard_.latched();
     facts.error_hold = latched == CommandGuard<N, T>::HoldReason::kError;
     facts.estop = latched == CommandGuard<N, T>::HoldReason::kEstop;
+    facts.awaiting_first_state = !safe_start_.first_state_received();
     return facts;
   }
 

@@ -37,6 +37,7 @@ struct DiagnosticsLimits
 {
   uint64_t state_timeout_ms;
   uint64_t fault_timeout_ms;
+  uint64_t first_state_timeout_ms;
   double temperature_warn_c;
   double temperature_error_c;
   uint64_t error_fault_mask;  // motor error code bits that fault (ERROR), others WARN
@@ -58,12 +59,23 @@ public:
   {
     const double age_ms = facts.age_ms();
     const std::string silence = "no valid state for " + number(age_ms, "%.0f") + " ms";
+    const bool awaiting = facts.active && facts.awaiting_first_state;
+    const bool dead = facts.link_dead(limits.fault_timeout_ms, limits.first_state_timeout_ms);
     if (facts.no_state()) {
       set(status, Status::WARN, "no state from the robot yet");
-    } else if (facts.link_dead(limits.fault_timeout_ms)) {
+    } else if (awaiting && dead) {
+      set(
+        status, Status::ERROR, "the robot never answered: no valid state in " +
+        number(age_ms, "%.0f") + " ms since activation (first_state_timeout_ms " +
+        std::to_string(limits.first_state_timeout_ms) + ")");
+    } else if (dead) {
       set(
         status, Status::ERROR, "link lost: " + silence + " (fault_timeout_ms " +
         std::to_string(limits.fault_timeout_ms) + ")");
+    } else if (awaiting) {
+      set(
+        status, Status::WARN, "waiting for the robot's first state: " + number(age_ms, "%.0f") +
+        " ms since activation, nothing sent yet");
     } else if (facts.stale(limits.state_timeout_ms)) {
       set(
         status, Status::WARN, std::string(

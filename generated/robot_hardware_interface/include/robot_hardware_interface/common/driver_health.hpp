@@ -54,6 +54,7 @@ struct HealthFacts
   uint64_t writer_overruns{0};
   bool error_hold{false};       // on_error latched the damping-only hold
   bool estop{false};            // the e-stop latched it
+  bool awaiting_first_state{false};  // no valid state yet in this activation (DDS discovery)
 
   // Milliseconds without a valid state, -1 before any state or activation.
   static double age_ms_of(int64_t silence_ns)
@@ -78,9 +79,19 @@ struct HealthFacts
     return silence_ns > static_cast<int64_t>(timeout_ms) * 1000000;
   }
   bool stale(uint64_t state_timeout_ms) const {return silent_for(silence_ns, state_timeout_ms);}
-  bool link_dead(uint64_t fault_timeout_ms) const
+  // The silence after which an active link is dead: fault_timeout_ms since the newest state;
+  // before the first state of an activation the longer first_state_timeout_ms, since DDS discovery
+  // of a robot that already runs may take seconds (the safe start sends nothing meanwhile).
+  static uint64_t dead_after_ms(
+    bool awaiting_first_state, uint64_t fault_timeout_ms, uint64_t first_state_timeout_ms)
   {
-    return active && silent_for(silence_ns, fault_timeout_ms);
+    return awaiting_first_state && first_state_timeout_ms > fault_timeout_ms ?
+           first_state_timeout_ms : fault_timeout_ms;
+  }
+  bool link_dead(uint64_t fault_timeout_ms, uint64_t first_state_timeout_ms) const
+  {
+    return active && silent_for(
+      silence_ns, dead_after_ms(awaiting_first_state, fault_timeout_ms, first_state_timeout_ms));
   }
 };
 

@@ -28,7 +28,8 @@ struct DriverParameters
   uint64_t command_writer_period_us;
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
-  uint64_t fault_timeout_ms;  // no state for this long after activation: read() returns ERROR
+  uint64_t fault_timeout_ms;  // no state for this long since the newest: read() returns ERROR
+  uint64_t first_state_timeout_ms;  // no first state this long after activation: ERROR (>= fault)
   uint64_t diagnostics_period_ms;  // /diagnostics period, 0: none
   uint64_t motor_temperature_warn_c;  // /diagnostics: a motor this hot is WARN, ...
   uint64_t motor_temperature_error_c;  // ... this hot ERROR
@@ -41,6 +42,7 @@ struct DriverParameters
     state_decimation(defaults.state_decimation),
     state_timeout_ms(defaults.state_timeout_ms),
     fault_timeout_ms(defaults.fault_timeout_ms),
+    first_state_timeout_ms(defaults.first_state_timeout_ms),
     diagnostics_period_ms(defaults.diagnostics_period_ms),
     motor_temperature_warn_c(defaults.motor_temperature_warn_c),
     motor_temperature_error_c(defaults.motor_temperature_error_c),
@@ -150,6 +152,8 @@ bool read_driver_parameters(
       logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms) ||
     !read_unsigned_parameter(
       logger, parameters, "fault_timeout_ms", 2, 3600000, out.fault_timeout_ms) ||
+    !read_unsigned_parameter(
+      logger, parameters, "first_state_timeout_ms", 2, 3600000, out.first_state_timeout_ms) ||
     !read_unsigned_parameter(
       logger, parameters, "diagnostics_period_ms", 0, 60000, out.diagnostics_period_ms) ||
     !read_unsigned_parameter(

@@ -71,6 +71,7 @@ struct ParameterDefaults
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
   uint64_t fault_timeout_ms;
+  uint64_t first_state_timeout_ms;     // after activation, until the robot's first state
   uint64_t diagnostics_period_ms;      // 0: no /diagnostics
   uint64_t motor_temperature_warn_c;   // /diagnostics levels of the motors
   uint64_t motor_temperature_error_c;
@@ -87,6 +88,9 @@ struct RobotSpec
   const char * imu_name;     // sensor name of the IMU interfaces; nullptr: the robot has no IMU
   std::array<const char *, kMaxMotorGroups> motor_groups;  // names; nullptr after the last
   ParameterDefaults parameters;
+  // The controllers launch/<robot>.launch.py activates, space-separated: what the error line of a
+  // fault tells the operator to activate again after the recovery; nullptr: none named.
+  const char * launch_controllers{nullptr};
 };
 
 // How one joint follows its motor, ros2_control's SimpleTransmission convention:

@@ -7,6 +7,7 @@
 #ifndef ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
 #define ROBOT_HARDWARE_INTERFACE__COMMON__SYSTEM_DRIVER_HPP_
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -303,7 +304,7 @@ private:
     const HealthFacts facts = core_.health_facts(
       steady_now_ns(), active_.load(std::memory_order_relaxed));
     const DriverParameters & p = core_.parameters();
-    const bool dead = facts.link_dead(p.fault_timeout_ms);
+    const bool dead = facts.link_dead(p.fault_timeout_ms, p.first_state_timeout_ms);
     const bool stale = facts.no_state() || facts.stale(p.state_timeout_ms);
     state.health_status = facts.estop || facts.error_hold || dead ? State::HEALTH_ERROR :
       stale ? State::HEALTH_WARNING : State::HEALTH_OK;
@@ -365,7 +366,8 @@ private:
       status.hardware_id = hardware_name_;
     }
     diagnostics_limits_ = DiagnosticsLimits{
-      p.state_timeout_ms, p.fault_timeout_ms, static_cast<double>(p.motor_temperature_warn_c),
+      p.state_timeout_ms, p.fault_timeout_ms, p.first_state_timeout_ms,
+      static_cast<double>(p.motor_temperature_warn_c),
       static_cast<double>(p.motor_temperature_error_c), p.motor_error_fault_mask};
     diagnostics_thread_.start(
       std::chrono::milliseconds(p.diagnostics_period_ms), [this]() {publish_diagnostics();});
@@ -444,35 +446,61 @@ private:
         core_.logger(), "motor error: %s (SDK slot %zu) reports error code 0x%" PRIX64 ", a bit of "
         "motor_error_fault_mask 0x%" PRIX64 ": read() returns ERROR, ros2_control stops the "
         "controllers and the joints are held damping-only. Clear the motor's error (the vendor's "
-        "tools), then set the component active again (ros2 control set_hardware_component_state "
-        "%s active)", joint, slot, motor_error_bits(core_.motor_health().error_code[slot]),
-        core_.parameters().motor_error_fault_mask, hardware_name_.c_str());
+        "tools), then %s", joint, slot, motor_error_bits(core_.motor_health().error_code[slot]),
+        core_.parameters().motor_error_fault_mask, recovery_hint().c_str());
       return return_type::ERROR;
     }
     RCLCPP_ERROR(
       core_.logger(), "motor too hot: %s (SDK slot %zu) at %.1f C, motor_temperature_error_c is "
       "%" PRIu64 ": read() returns ERROR, ros2_control stops the controllers and the joints are "
-      "held damping-only. Let the motor cool, then set the component active again (ros2 control "
-      "set_hardware_component_state %s active)", joint, slot,
+      "held damping-only. Let the motor cool, then %s", joint, slot,
       core_.motor_health().temperature[slot], core_.parameters().motor_temperature_error_c,
-      hardware_name_.c_str());
+      recovery_hint().c_str());
     return return_type::ERROR;
   }
 
   // read() of a dead link: ERROR, said once per activation (read() runs at the control rate).
+  // A robot that never answered since the activation is told apart from a link that died.
   ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_dead_link()
   {
-    if (!link_dead_reported_) {
-      link_dead_reported_ = true;
-      const DriverParameters & p = core_.parameters();
-      RCLCPP_ERROR(
-        core_.logger(), "link lost: no valid state from the robot for more than %" PRIu64 " ms "
-        "(fault_timeout_ms; held damping-only since state_timeout_ms = %" PRIu64 " ms): read() "
-        "returns ERROR, ros2_control stops the controllers. Check the robot's power and network, "
-        "then set the component active again (ros2 control set_hardware_component_state %s "
-        "active)", p.fault_timeout_ms, p.state_timeout_ms, hardware_name_.c_str());
+    if (link_dead_reported_) {
+      return return_type::ERROR;
     }
+    link_dead_reported_ = true;
+    const DriverParameters & p = core_.parameters();
+    const std::string recovery = recovery_hint();
+    if (!core_.first_state_received()) {
+      RCLCPP_ERROR(
+        core_.logger(), "the robot never answered: no valid state in the %" PRIu64 " ms since "
+        "activation (first_state_timeout_ms; %" PRIu64 " invalid state frames): read() returns "
+        "ERROR, ros2_control stops the controllers; nothing was sent to the robot. Check that the "
+        "robot runs and is reachable (network_interface '%s', ROS_DOMAIN_ID), then %s",
+        std::max(p.first_state_timeout_ms, p.fault_timeout_ms),
+        core_.health_facts(steady_now_ns(), true).invalid_states, p.network_interface.c_str(),
+        recovery.c_str());
+      return return_type::ERROR;
+    }
+    RCLCPP_ERROR(
+      core_.logger(), "link lost: no valid state from the robot for more than %" PRIu64 " ms "
+      "(fault_timeout_ms; held damping-only since state_timeout_ms = %" PRIu64 " ms): read() "
+      "returns ERROR, ros2_control stops the controllers. Check the robot's power and network, "
+      "then %s", p.fault_timeout_ms, p.state_timeout_ms, recovery.c_str());
     return return_type::ERROR;
+  }
+
+  // What the operator runs after a fault: the component active again (configure + activate, the
+  // full safe start), then the controllers ros2_control stopped with it, broadcasters included.
+  std::string recovery_hint() const
+  {
+    std::string hint = "set the component active again (ros2 control "
+      "set_hardware_component_state " + hardware_name_ + " active)";
+    const char * controllers = core_.spec().launch_controllers;
+    if (controllers != nullptr && controllers[0] != '\0') {
+      hint += " and activate its controllers again (ros2 control switch_controllers --activate ";
+      hint += controllers;
+      hint += ": those the package's launch file starts, or the ones you ran)";
+    }
+    return hint;
   }
 
   CallbackReturn initialize(

@@ -41,6 +41,11 @@ def test_each_message_package_has_its_licence_and_provenance(package):
     assert "https://github.com/" in provenance and "BSD-3-Clause" in provenance
     assert re.search(r"\b[0-9a-f]{40}\b", provenance), "no commit in PROVENANCE.md"
     assert list(folder.rglob("*.msg")), f"no .msg under {folder}"
+    # a package carried in several releases (interface_protocol: one folder per upstream repository) says
+    # where each comes from
+    for release in (d for d in folder.iterdir() if d.is_dir() and d.name != "msg"):
+        assert f"`{release.name}/msg/`" in provenance, release.name
+        assert re.search(rf"https://github\.com/[\w.-]+/{re.escape(release.name)}\b", provenance), release.name
 
 
 def test_the_urdf_copies_have_their_licences_and_provenance():

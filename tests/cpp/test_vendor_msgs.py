@@ -84,7 +84,17 @@ EXPECTED_CONSTANTS = {
     "aimdk_msgs/CommonState": {"UNKNOWN": 0, "SUCCESS": 1, "FAILURE": 2, "ABORTED": 3, "TIMEOUT": 4, "INVALID": 5,
                                "IN_MANUAL": 6, "NOT_READY": 100, "PENDING": 200, "CREATED": 300, "RUNNING": 400},
 }
-CPP_SCALARS = {"double": "float64", "uint8_t": "uint8", "uint16_t": "uint16", "uint32_t": "uint32",
+# The other releases of a package (vendor_msgs.VARIANTS): the messages whose fields differ from the default's,
+# typed from the upstream .msg (engineai_robotics_native_sdk, src/protocol/interface_protocol/msg); every other
+# message of the release has the default's fields (EXPECTED_FIELDS).
+EXPECTED_VARIANT_FIELDS = {
+    ("interface_protocol", "engineai_robotics_native_sdk"): {
+        "MotorDebug": [("mos_temperature", "float32[]"), ("motor_temperature", "float32[]"), ("voltage", "float32[]"),
+                       ("current", "float32[]"), ("error_code", "int32[]"), ("offline", "uint8[]"),
+                       ("enable", "uint8[]")],
+    },
+}
+CPP_SCALARS = {"double": "float64", "float": "float32", "uint8_t": "uint8", "uint16_t": "uint16", "uint32_t": "uint32",
                "int32_t": "int32", "int64_t": "int64"}
 
 
@@ -140,6 +150,18 @@ def _labels(package: str, table: dict) -> list[str]:
 def test_fields_are_those_of_sdk_facts(package):
     for label in _labels(package, EXPECTED_FIELDS):
         assert _fields(_struct(label)) == EXPECTED_FIELDS[label], label
+
+
+@pytest.mark.parametrize("release", [(p.name, p.variant) for p in vendor_msgs.VARIANTS], ids="/".join)
+def test_fields_of_the_other_releases(release):
+    name, variant = release
+    assert set(EXPECTED_VARIANT_FIELDS) == {(p.name, p.variant) for p in vendor_msgs.VARIANTS}
+    differing = EXPECTED_VARIANT_FIELDS[release]
+    messages = [Path(m).stem for m in vendor_msgs.package_variant(name, variant).messages]
+    assert set(differing) <= set(messages)
+    for message in messages:
+        text = (vendor_msgs.header_dir(name, "msg", variant) / "detail" / f"{_snake(message)}__struct.hpp").read_text()
+        assert _fields(text) == differing.get(message, EXPECTED_FIELDS[f"{name}/{message}"]), message
 
 
 @pytest.mark.parametrize("service", sorted(EXPECTED_SERVICE_FIELDS))

@@ -60,6 +60,7 @@ def test_only_licensed_packages_are_carried():
     """AimDK's messages state no licence: never copied (the tests read them from ../shared)."""
     assert sorted(p.name for p in vendor_msgs.IN_REPO_MSGS.iterdir() if p.is_dir()) == sorted(MSG_PACKAGES)
     assert {p.name for p in vendor_msgs.PACKAGES if p.in_repo} == {"interface_protocol"}
+    assert {(p.name, p.in_repo) for p in vendor_msgs.VARIANTS} == {("interface_protocol", True)}
     assert {p.name for p in vendor_msgs.PACKAGES if not p.in_repo} == {"aimdk_msgs"}
     assert not list(DATA.rglob("*aimdk*")) and not (upstream_urdf.IN_REPO / "agibot_x2.urdf").exists()
 
@@ -76,6 +77,10 @@ def test_the_copies_are_byte_identical_to_the_shared_vendor_data():
         if not theirs.is_file() or theirs.read_bytes() != ours.read_bytes():
             differ.append(str(rel))
     assert not differ, f"differ from {vendor_msgs.UPSTREAM}: {differ}"
+    # every file a carried package (each release of it) is generated from is among those compared
+    compared = {vendor_msgs.IN_REPO_MSGS / Path(*rel.parts[1:]) for rel in _copies() if rel.parts[0] == "msgs"}
+    carried = [f for p in (*vendor_msgs.PACKAGES, *vendor_msgs.VARIANTS) if p.in_repo for f in p.files()]
+    assert len(carried) == 10 and set(carried) <= compared, sorted(set(carried) - compared)
     # the unitree folders are whole copies
     for family in ("unitree_hg", "unitree_go"):
         shared = {p.name for p in (vendor_msgs.UPSTREAM / "msgs" / family / "msg").glob("*.msg")}

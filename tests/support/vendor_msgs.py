@@ -10,6 +10,11 @@ Sources, per package (provenance beside each copy):
   ../shared/upstream (msgs/, urdf/), `RHI_UPSTREAM_MSGS=<dir>` only its msgs/ (or a missing folder, to
   try the skip path).
 
+A package may be carried in several releases: PACKAGES holds the one every test compiles against by default,
+VARIANTS the others, each with the same package name, its own definitions and its own cache folder, chosen only by
+name (packages_of(transport, variants=...), package_variant(), header_dir(..., variant=...)). EngineAI's
+interface_protocol is carried as engineai_ros2_workspace (the default) and engineai_robotics_native_sdk.
+
 Services (.srv) are generated like messages: rosidl_adapter turns each into .idl, rosidl_generator_cpp
 writes <pkg>/srv/<name>.hpp (the Request, Response and, since Iron, the Event message, whose
 service_msgs/ServiceEventInfo comes from the ros-service-msgs wheel).
@@ -66,6 +71,7 @@ class VendorPackage:
     transports: tuple[str, ...]      # rhi-gen transports whose drivers include them
     in_repo: bool                    # carried in tests/data/vendor_msgs (else read from UPSTREAM_MSGS)
     services: tuple[str, ...] = ()   # .srv files under source, each in a srv/ folder
+    variant: str = ""                # "" in PACKAGES; the name of another release of the package in VARIANTS
 
     @property
     def interfaces(self) -> tuple[str, ...]:
@@ -88,6 +94,9 @@ class VendorPackage:
 # ResponseHeader + CommonState (each checked in the .srv/.msg files). The two upstream
 # copies of interface_protocol have identical JointCommand/JointState/ImuInfo/ParallelParserType;
 # engineai_ros2_workspace is the one SDK_FACTS.md §C and the PM01 URDF come from.
+ENGINEAI_MESSAGES = ("msg/JointCommand.msg", "msg/JointState.msg", "msg/ImuInfo.msg", "msg/ParallelParserType.msg",
+                     "msg/MotorDebug.msg")
+ENGINEAI_DEPENDENCIES = ("builtin_interfaces", "std_msgs", "geometry_msgs")
 PACKAGES = (
     VendorPackage("aimdk_msgs", "aimdk_msgs/interface/robot",
                   ("hal/msg/JointCommand.msg", "hal/msg/JointCommandArray.msg", "hal/msg/JointState.msg",
@@ -98,10 +107,19 @@ PACKAGES = (
                    "hal/msg/HandState.msg", "hal/msg/HandStateArray.msg", "hal/msg/HandTouchSensorData.msg"),
                   ("builtin_interfaces", "service_msgs"), ("agibot_topics",), in_repo=False,
                   services=("sm/srv/MigrateSystemState.srv", "sm/srv/GetSystemState.srv")),
-    VendorPackage("interface_protocol", "interface_protocol/engineai_ros2_workspace",
-                  ("msg/JointCommand.msg", "msg/JointState.msg", "msg/ImuInfo.msg", "msg/ParallelParserType.msg",
-                   "msg/MotorDebug.msg"),
-                  ("builtin_interfaces", "std_msgs", "geometry_msgs"), ("engineai_topics",), in_repo=True),
+    VendorPackage("interface_protocol", "interface_protocol/engineai_ros2_workspace", ENGINEAI_MESSAGES,
+                  ENGINEAI_DEPENDENCIES, ("engineai_topics",), in_repo=True),
+)
+
+# Other releases of a package of PACKAGES: the same package name and messages, other definitions, generated into
+# their own cache folder (the key holds the contents). Never on a default include path: a test asks for one by
+# name (packages_of(..., variants=...), package_variant()). EngineAI's native SDK has another MotorDebug (float32
+# temperatures, voltage, current, error_code, offline, enable; no tau_cmd): the generated sources must compile
+# against both, choosing by what the message has.
+ENGINEAI_NATIVE_SDK = "engineai_robotics_native_sdk"
+VARIANTS = (
+    VendorPackage("interface_protocol", f"interface_protocol/{ENGINEAI_NATIVE_SDK}", ENGINEAI_MESSAGES,
+                  ENGINEAI_DEPENDENCIES, ("engineai_topics",), in_repo=True, variant=ENGINEAI_NATIVE_SDK),
 )
 
 # Run by the venv's interpreter in a subprocess (the generator prints, and imports a lot). GenerateCpp is
@@ -123,9 +141,22 @@ def package(name: str) -> VendorPackage:
     return next(p for p in PACKAGES if p.name == name)
 
 
-def packages_of(transport: str) -> tuple[VendorPackage, ...]:
-    """The vendor packages a driver (or harness) of ``transport`` includes."""
-    return tuple(p for p in PACKAGES if transport in p.transports)
+def package_variant(name: str, variant: str) -> VendorPackage:
+    """Another release of package ``name`` (VARIANTS); a KeyError names the ones there are."""
+    for p in VARIANTS:
+        if (p.name, p.variant) == (name, variant):
+            return p
+    raise KeyError(f"no variant {variant!r} of {name}: {[(p.name, p.variant) for p in VARIANTS]}")
+
+
+def packages_of(transport: str, variants: tuple[str, ...] = ()) -> tuple[VendorPackage, ...]:
+    """The vendor packages a driver (or harness) of ``transport`` includes; a package that has a release named
+    in ``variants`` is replaced by it. A name that selects nothing is an error (a typo must not test the default)."""
+    chosen = {p.name: p for p in VARIANTS if p.variant in variants and transport in p.transports}
+    unused = set(variants) - {p.variant for p in chosen.values()}
+    if unused:
+        raise KeyError(f"no variant {sorted(unused)} of the vendor packages of {transport}")
+    return tuple(chosen.get(p.name, p) for p in PACKAGES if transport in p.transports)
 
 
 def missing_reason(packages: tuple[VendorPackage, ...] = PACKAGES) -> str | None:
@@ -216,7 +247,7 @@ def package_root(p: VendorPackage) -> Path:
     if reason:
         raise FileNotFoundError(reason)
     key = package_key(p)
-    target = cache_root() / f"{p.name}-{key}"
+    target = cache_root() / f"{p.name}{f'-{p.variant}' if p.variant else ''}-{key}"
     if (target / "complete").is_file():
         return target
     target.parent.mkdir(parents=True, exist_ok=True)
@@ -234,10 +265,11 @@ def package_root(p: VendorPackage) -> Path:
     return target
 
 
-def header_dir(name: str, kind: str = "msg") -> Path:
-    """<root>/include/<name>/<name>/<kind> (msg or srv) of one generated package."""
+def header_dir(name: str, kind: str = "msg", variant: str = "") -> Path:
+    """<root>/include/<name>/<name>/<kind> (msg or srv) of one generated package (or of its release ``variant``)."""
+    p = package_variant(name, variant) if variant else package(name)
     with _LOCK:
-        return package_root(package(name)) / "include" / name / name / kind
+        return package_root(p) / "include" / name / name / kind
 
 
 @functools.cache

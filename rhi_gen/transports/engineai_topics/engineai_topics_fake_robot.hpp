@@ -11,7 +11,8 @@
 // feed_forward_torque; the direct `torque` field is not simulated) and publishes JointState (every
 // step), ImuInfo at rest (every step) and MotorDebug temperatures (every 10th step: 50 Hz at the
 // robot's 500 Hz), on the driver's topics with the driver's QoS. `corrupt` publishes JointState
-// arrays one motor short, which the driver must drop.
+// arrays one motor short, which the driver must drop. MotorDebug is filled as far as the release of
+// interface_protocol it is built against has the members (engineai_topics.hpp).
 
 #include <cstddef>
 #include <cstdint>
@@ -58,9 +59,7 @@ public:
     short_state_.position.assign(N - 1, 0.0);
     short_state_.velocity.assign(N - 1, 0.0);
     short_state_.torque.assign(N - 1, 0.0);
-    debug_.tau_cmd.assign(N, 0.0);
-    debug_.mos_temperature.assign(N, kFakeAmbientTemperature);
-    debug_.motor_temperature.assign(N, kFakeAmbientTemperature);
+    size_motor_debug(debug_);
     imu_.quaternion.w = 1.0;              // at rest, level
     imu_.linear_acceleration.z = kStandardGravity;
     const rclcpp::QoS qos = make_qos(options_.qos);
@@ -90,7 +89,6 @@ public:
     imu_.header.stamp = stamp;
     imu_publisher_->publish(imu_);
     if (model.steps % kMotorDebugEvery == 0) {
-      using Celsius = typename decltype(debug_.motor_temperature)::value_type;
       for (size_t i = 0; i < N; ++i) {
         debug_.motor_temperature[i] = static_cast<Celsius>(model.temperature[i]);
       }
@@ -99,6 +97,21 @@ public:
   }
 
 private:
+  // float64 in engineai_ros2_workspace, float32 in the native SDK.
+  using Celsius = typename decltype(MotorDebug::motor_temperature)::value_type;
+
+  // Every array of the message, one value per motor slot (configure(): no allocation per step).
+  // A template on the message type, so the member the release lacks is never compiled.
+  template<typename Debug>
+  static void size_motor_debug(Debug & debug)
+  {
+    if constexpr (MotorDebugHasTauCmd<Debug>::value) {
+      debug.tau_cmd.assign(N, 0.0);  // the driver commands through the PD law: no torque command
+    }
+    debug.mos_temperature.assign(N, static_cast<Celsius>(kFakeAmbientTemperature));
+    debug.motor_temperature.assign(N, static_cast<Celsius>(kFakeAmbientTemperature));
+  }
+
   // A JointCommand too short for every motor is ignored whole, as a malformed frame.
   void on_command(const JointCommand & msg)
   {

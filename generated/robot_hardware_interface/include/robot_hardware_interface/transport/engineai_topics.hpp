@@ -10,11 +10,19 @@
 // EngineAI robots over ROS 2 topics (interface_protocol): JointCommand / JointState arrays indexed
 // by motor slot, ImuInfo for the IMU, MotorDebug for the motor temperatures. The robot must be in
 // joint_bridge mode.
+//
+// EngineAI publishes two releases of interface_protocol whose MotorDebug differs:
+// engineai_ros2_workspace has float64[] tau_cmd, mos_temperature, motor_temperature;
+// engineai_robotics_native_sdk has float32[] mos_temperature, motor_temperature, voltage, current,
+// int32[] error_code, uint8[] offline, enable (no tau_cmd). The same source builds against either:
+// what the message has is detected at compile time (the traits below), never configured.
 
 #include <chrono>
 #include <cinttypes>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include <interface_protocol/msg/imu_info.hpp>
 #include <interface_protocol/msg/joint_command.hpp>
@@ -32,6 +40,15 @@
 
 namespace robot_hardware_interface
 {
+
+// Whether a MotorDebug has the member tau_cmd (only engineai_ros2_workspace's does).
+// Code that touches such a member goes through a template on the message type, so the branch for a
+// member the message lacks is discarded (if constexpr), never compiled.
+template<typename Debug, typename = void>
+struct MotorDebugHasTauCmd : std::false_type {};
+template<typename Debug>
+struct MotorDebugHasTauCmd<Debug, std::void_t<decltype(std::declval<Debug &>().tau_cmd)>>
+  : std::true_type {};
 
 // transport_options of the vendor YAML.
 struct EngineaiTopicsOptions

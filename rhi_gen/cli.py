@@ -3,18 +3,25 @@
 Exit codes: 0 ok, 1 differences found (check/diff), 2 bad input (one line on stderr, nothing written),
 3 internal error (a bug in rhi-gen; set RHI_GEN_DEBUG=1 for the traceback).
 
-The parser is the standard library's argparse: `rhi-gen check` runs as a pre-commit hook, and a
-command-line framework's import time (typer with click and pydantic: about 0.3 s) would be most of
-its cost. Usage errors are reworded into one line in the shape of every other error.
+The parser is typer: its help layout, `rhi-gen COMMAND --help`, and shell completion
+(`--install-completion`, `--show-completion`). Each command here only parses: it hands back the
+commands.py function with its values, and main() runs it outside click, so every error reaches the
+one mapping below. Click's usage errors become one line in the shape of every other error.
+`rhi-gen check` runs as a pre-commit hook, so start-up stays short: help is plain text (rich is
+never imported) and options are converted here rather than by typer's pydantic validators.
 """
 from __future__ import annotations
 
-import argparse
+import functools
 import os
 import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import Annotated, Any
+
+import typer
+from typer._click.exceptions import NoArgsIsHelpError, UsageError
+from typer.core import TyperGroup
 
 from . import __version__, commands
 from .errors import RhiGenError
@@ -26,144 +33,191 @@ DESCRIPTION = "Generate complete ros2_control hardware interfaces from a URDF an
 FORCE_HELP = ("Overwrite generated files edited outside their user regions (or holding code in regions the "
               "templates dropped); each is first copied to generated/.rhi-gen-backup/<path>.N.")
 
+Run = Callable[[], int]  # a command with its parsed values: main() runs it and returns its exit code
 
-class UsageError(Exception):
-    """A command line argparse refused, in click's familiar words, with the command whose help to read."""
+app = typer.Typer(name=PROG, help=DESCRIPTION, no_args_is_help=True, rich_markup_mode=None,
+                  pretty_exceptions_enable=False, context_settings={"help_option_names": ["-h", "--help"]})
 
-    def __init__(self, message: str, command: str) -> None:
-        super().__init__(message)
-        self.command = command
-
-    def line(self) -> str:
-        return f"error: {self} -> see `{self.command} --help`"
-
-
-def _reword(message: str) -> str:
-    """argparse's message as one short sentence ("Missing option '--robot'", "No such option: --bogus")."""
-    if message.startswith("the following arguments are required: "):
-        first = message.split(": ", 1)[1].split(", ")[0]
-        return f"Missing option '{first}'" if first.startswith("-") else f"Missing argument '{first.upper()}'"
-    if message.startswith("argument COMMAND: invalid choice: "):
-        return f"No such command {message.split(': ')[2].split(' ')[0]}"
-    if message.startswith("argument ") and message.endswith(": expected one argument"):
-        return f"Option '{message[len('argument '):].split(':')[0].split('/')[0]}' requires an argument"
-    return message[:1].upper() + message[1:]
+ProjectOpt = Annotated[Path | None, typer.Option(
+    "--project", "-C", help="Project folder holding robots/ and generated/ (default: the current folder or its "
+                            "nearest parent with robots/).", show_default=False)]
+XacroArgOpt = Annotated[list[str] | None, typer.Option(
+    "--xacro-arg", metavar="NAME=VALUE", help="A xacro argument, repeatable.", show_default=False)]
+PackagePathOpt = Annotated[list[str] | None, typer.Option(
+    "--package-path", metavar="PKG=DIR", help="PKG=DIR for $(find PKG), repeatable.", show_default=False)]
+RobotsArg = Annotated[list[str] | None, typer.Argument(
+    metavar="ROBOT", help="Robots (name or vendor/name); default: all.", show_default=False)]
 
 
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> NoReturn:
-        raise UsageError(_reword(message), self.prog)
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"{PROG} {__version__}")
+        raise typer.Exit()
 
 
-def _add_project(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--project", "-C", type=Path, help="Project folder holding robots/ and generated/ (default: the "
-                   "current folder or its nearest parent with robots/).")
+@app.callback()
+def _root(version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
+                                                help="Print the version and exit.")] = False) -> None:
+    """Only for --version: the commands below do the work."""
 
 
-def _add_xacro(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--xacro-arg", action="append", metavar="NAME=VALUE", help="A xacro argument, repeatable.")
-    p.add_argument("--package-path", action="append", metavar="PKG=DIR", help="PKG=DIR for $(find PKG), repeatable.")
+@app.command()
+def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and folder (e.g. unitree).")],
+        robot: Annotated[str, typer.Option(help="Robot name: file stem (e.g. g1).")],
+        urdf: Annotated[Path, typer.Option(help="The robot's URDF or .xacro file.")],
+        transport: Annotated[str | None, typer.Option(
+            help=f"{' | '.join(TRANSPORT_NAMES)} (default: the vendor's, else {DEFAULT_TRANSPORT}).",
+            show_default=False)] = None,
+        xacro_arg: XacroArgOpt = None,
+        package_path: PackagePathOpt = None,
+        force: Annotated[bool, typer.Option("--force", help="Overwrite an existing robot YAML.")] = False,
+        class_prefix: Annotated[str | None, typer.Option(
+            help="C++ class prefix (class NAMEHardwareInterface; default from --robot: my_arm -> MyArm), "
+                 "written to the YAML as class_prefix:.", show_default=False)] = None,
+        transport_option: Annotated[list[str] | None, typer.Option(
+            "--transport-option", metavar="KEY=VALUE", show_default=False,
+            help="Written under transport_options: (e.g. family=go for a Unitree robot rhi-gen does not know), "
+                 "repeatable.")] = None,
+        project: ProjectOpt = None) -> Run:
+    """Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it."""
+    return functools.partial(commands.new, vendor=vendor, robot=robot, urdf=urdf, transport=transport,
+                             xacro_arg=xacro_arg, package_path=package_path, force=force,
+                             class_prefix=class_prefix, transport_option=transport_option, project=project)
 
 
-def _add_robots(p: argparse.ArgumentParser) -> None:
-    p.add_argument("robots", nargs="*", metavar="ROBOT", help="Robots (name or vendor/name); default: all.")
+@app.command()
+def generate(robots: RobotsArg = None,
+             dry_run: Annotated[bool, typer.Option("--dry-run", help="Show what would change, write nothing.")] = False,
+             verbose: Annotated[bool, typer.Option(
+                 "--verbose", "-v", help="Also list unchanged files and each robot YAML as it is loaded.")] = False,
+             force: Annotated[bool, typer.Option("--force", help=FORCE_HELP)] = False,
+             project: ProjectOpt = None) -> Run:
+    """(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.
+
+    User-region contents are carried over byte for byte; a file edited outside its regions blocks
+    the whole run (exit 2, nothing written) unless --force.
+    """
+    return functools.partial(commands.generate, robots=robots or None, dry_run=dry_run, verbose=verbose,
+                             force=force, project=project)
 
 
-def _command(sub: Any, name: str, run: Callable[..., int], summary: str, details: str = "") -> argparse.ArgumentParser:
-    p: argparse.ArgumentParser = sub.add_parser(name, help=summary, description=f"{summary}\n\n{details}".strip(),
-                                                formatter_class=argparse.RawDescriptionHelpFormatter,
-                                                allow_abbrev=False)
-    p.set_defaults(run=run)
-    return p
+@app.command()
+def diff(robots: RobotsArg = None, project: ProjectOpt = None) -> Run:
+    """Explain what `generate` would change: in robot terms first, then the unified file diff.
+
+    Exit 0 when nothing would change, 1 when something would. Coloured on a terminal (unless NO_COLOR).
+    """
+    return functools.partial(commands.diff, robots=robots or None, project=project)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog=PROG, description=DESCRIPTION, allow_abbrev=False)
-    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}",
-                        help="Print the version and exit.")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+@app.command()
+def check(project: ProjectOpt = None) -> Run:
+    """CI gate: exit 1 when generated/ is not what `generate` would write now.
 
-    p = _command(sub, "new", commands.new,
-                 "Create robots/VENDOR/ROBOT.yaml with a joint map suggested from the URDF, and generate it.")
-    p.add_argument("--vendor", required=True, help="Vendor name: C++ namespace and folder (e.g. unitree).")
-    p.add_argument("--robot", required=True, help="Robot name: file stem (e.g. g1).")
-    p.add_argument("--urdf", required=True, type=Path, help="The robot's URDF or .xacro file.")
-    p.add_argument("--transport", help=f"{' | '.join(TRANSPORT_NAMES)} (default: the vendor's, else "
-                   f"{DEFAULT_TRANSPORT}).")
-    _add_xacro(p)
-    p.add_argument("--force", action="store_true", help="Overwrite an existing robot YAML.")
-    p.add_argument("--class-prefix", help="C++ class prefix (class NAMEHardwareInterface; default from --robot: "
-                   "my_arm -> MyArm), written to the YAML as class_prefix:.")
-    p.add_argument("--transport-option", action="append", metavar="KEY=VALUE",
-                   help="Written under transport_options: (e.g. family=go for a Unitree robot rhi-gen does not "
-                        "know), repeatable.")
-    _add_project(p)
-
-    p = _command(sub, "generate", commands.generate,
-                 "(Re)generate generated/robot_hardware_interface from robots/*/*.yaml; writes only changed files.",
-                 "User-region contents are carried over byte for byte; a file edited outside its regions blocks\n"
-                 "the whole run (exit 2, nothing written) unless --force.")
-    _add_robots(p)
-    p.add_argument("--dry-run", action="store_true", help="Show what would change, write nothing.")
-    p.add_argument("--verbose", "-v", action="store_true",
-                   help="Also list unchanged files and each robot YAML as it is loaded.")
-    p.add_argument("--force", action="store_true", help=FORCE_HELP)
-    _add_project(p)
-
-    p = _command(sub, "diff", commands.diff,
-                 "Explain what `generate` would change: in robot terms first, then the unified file diff.",
-                 "Exit 0 when nothing would change, 1 when something would. Coloured on a terminal (unless\n"
-                 "NO_COLOR).")
-    _add_robots(p)
-    _add_project(p)
-
-    p = _command(sub, "check", commands.check,
-                 "CI gate: exit 1 when generated/ is not what `generate` would write now.",
-                 "That is: a robot's inputs changed since the last generate (stale fingerprints in the\n"
-                 "manifest), a file differs, or another rhi-gen version wrote generated/. Prints why, then the\n"
-                 "unified diff.")
-    _add_project(p)
-
-    p = _command(sub, "inspect", commands.inspect,
-                 "Show actuated joints, types, limits, mimic joints and the suggested joint map.")
-    p.add_argument("--urdf", required=True, type=Path, help="URDF or .xacro file.")
-    p.add_argument("--vendor", help="Suggest the map in this vendor's motor order.")
-    p.add_argument("--robot", help="Robot name for the vendor profile.")
-    _add_xacro(p)
-
-    p = _command(sub, "list", commands.list_robots, "List the robots of the project.")
-    _add_project(p)
-    return parser
+    That is: a robot's inputs changed since the last generate (stale fingerprints in the manifest), a
+    file differs, or another rhi-gen version wrote generated/. Prints why, then the unified diff.
+    """
+    return functools.partial(commands.check, project=project)
 
 
-def _run(argv: Sequence[str]) -> int:
-    parser = build_parser()
-    if not argv:  # `rhi-gen` alone: the help, and the exit code of a usage error
-        parser.print_help()
+@app.command()
+def inspect(urdf: Annotated[Path, typer.Option(help="URDF or .xacro file.")],
+            vendor: Annotated[str | None, typer.Option(
+                help="Suggest the map in this vendor's motor order.", show_default=False)] = None,
+            robot: Annotated[str | None, typer.Option(
+                help="Robot name for the vendor profile.", show_default=False)] = None,
+            xacro_arg: XacroArgOpt = None,
+            package_path: PackagePathOpt = None) -> Run:
+    """Show actuated joints, types, limits, mimic joints and the suggested joint map."""
+    return functools.partial(commands.inspect, urdf=urdf, vendor=vendor, robot=robot, xacro_arg=xacro_arg,
+                             package_path=package_path)
+
+
+@app.command("list")
+def list_robots(project: ProjectOpt = None) -> Run:
+    """List the robots of the project."""
+    return functools.partial(commands.list_robots, project=project)
+
+
+class _PlainValue:
+    """Converts an option's text to str or Path as typer would, without the pydantic validator typer
+    builds for every option it converts (pydantic's import alone is about 0.1 s on each call)."""
+
+    def __init__(self, convert: Callable[[str], Any]) -> None:
+        self.convert = convert
+
+    def coerce(self, value: Any, param: Any, ctx: Any) -> Any:
+        if param.multiple or param.nargs == -1:
+            return tuple(self.convert(v) for v in value or ())
+        return None if value is None else self.convert(value)
+
+
+_PLAIN = {str: _PlainValue(str), Path: _PlainValue(Path), bool: _PlainValue(bool)}
+
+
+def _plain_values(command: typer.core.TyperCommand | TyperGroup, ctx: typer.Context) -> None:
+    """Give every option of ``command`` and its subcommands, --help included, the plain conversion of its type.
+
+    Sets typer's lazily built `_runtime_param`; should a typer release drop it, typer's own conversion runs.
+    """
+    for param in command.get_params(ctx):
+        item = _one_value_type(getattr(getattr(param, "type_descriptor", None), "annotation", None))
+        if item in _PLAIN and getattr(param, "_runtime_param", ...) is None:
+            param._runtime_param = _PLAIN[item]  # type: ignore[attr-defined]
+    for name, sub in getattr(command, "commands", {}).items():
+        _plain_values(sub, typer.Context(sub, parent=ctx, info_name=name))
+
+
+def _one_value_type(annotation: Any) -> Any:
+    """str for str, list[str] and str | None: the type of one value."""
+    args = [a for a in getattr(annotation, "__args__", ()) if a is not type(None)]
+    return args[0] if len(args) == 1 else annotation
+
+
+@functools.cache
+def _click_command() -> TyperGroup:
+    """The click command typer builds from `app` (with the completion options), its options made plain."""
+    command = typer.main.get_command(app)
+    assert isinstance(command, TyperGroup)
+    _plain_values(command, typer.Context(command, info_name=PROG, **command.context_settings))
+    return command
+
+
+def _usage_line(exc: UsageError, argv: Sequence[str]) -> str:
+    """A click usage error (missing or unknown option, no such command) as one line, like every other error.
+
+    Click leaves out the command of an option that lacks its value (or has one it takes none): that is
+    the command named first on the line.
+    """
+    message = " ".join(exc.format_message().split()).rstrip(".")
+    if exc.ctx is not None:
+        command = exc.ctx.command_path
+    else:
+        first = next((a for a in argv if not a.startswith("-")), "")
+        command = f"{PROG} {first}" if first in _click_command().commands else PROG
+    return f"error: {message} -> see `{command} --help`"
+
+
+def _parse(argv: Sequence[str]) -> Run | int:
+    """The command to run with its values, or the exit code of what click already did (help, version)."""
+    try:
+        parsed: Run | int | None = _click_command().main(args=argv, prog_name=PROG, standalone_mode=False)
+    except NoArgsIsHelpError as exc:  # `rhi-gen` alone: the help on stdout, and the exit code of a usage error
+        typer.echo(exc.format_message())
         return 2
-    args, extra = parser.parse_known_args(argv)
-    command = f"{PROG} {args.command}" if args.command else PROG
-    if extra:
-        unknown = next((a for a in extra if a.startswith("-")), None)
-        raise UsageError(f"No such option: {unknown}" if unknown else f"Got unexpected extra argument ({extra[0]})",
-                         command)
-    if args.command is None:
-        raise UsageError("Missing command", PROG)
-    values = {k: v for k, v in vars(args).items() if k not in ("command", "run")}
-    if "robots" in values:
-        values["robots"] = values["robots"] or None
-    code: int = args.run(**values)
-    return code
+    return 0 if parsed is None else parsed
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point: every RhiGenError is one line and exit 2; anything else is a bug (exit 3)."""
+    args = sys.argv[1:] if argv is None else list(argv)
     try:
-        return _run(sys.argv[1:] if argv is None else list(argv))
-    except SystemExit as exc:  # --help and --version print and exit 0
+        run = _parse(args)
+        return run if isinstance(run, int) else run()
+    except SystemExit as exc:  # --install-completion and --show-completion print and exit 0
         return exc.code if isinstance(exc.code, int) else 0
     except UsageError as exc:
-        sys.stderr.write(exc.line() + "\n")
+        sys.stderr.write(_usage_line(exc, args) + "\n")
         return 2
     except RhiGenError as exc:
         sys.stderr.write(f"error: {exc}\n")

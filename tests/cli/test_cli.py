@@ -1,6 +1,7 @@
-"""The commands as a user runs them: new, inspect, list, help and exit codes."""
+"""The commands as a user runs them: new, inspect, list, help, shell completion and exit codes."""
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -119,6 +120,51 @@ def test_console_script_help_and_usage_errors():
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
     missing = subprocess.run([str(exe), "new", "--vendor", "x"], capture_output=True, text=True)
     assert missing.returncode == 2 and "Traceback" not in missing.stderr
+
+
+BIN = Path(sys.executable).parent  # where the console script rhi-gen is installed
+
+
+def in_bash(script: str, **env: str) -> subprocess.CompletedProcess[str]:
+    """``script`` run by bash, as a user's shell runs it: typer detects the shell from the processes above it."""
+    return subprocess.run(["bash", "-c", script], capture_output=True, text=True,
+                          env={**os.environ, "PATH": f"{BIN}{os.pathsep}{os.environ['PATH']}", **env})
+
+
+def test_bash_completion_script_completes_commands_and_options():
+    shown = in_bash("rhi-gen --show-completion bash")
+    assert shown.returncode == 0 and shown.stderr == ""
+    assert "_RHI_GEN_COMPLETE=complete_bash $1" in shown.stdout
+    assert shown.stdout.rstrip().endswith("complete -o default -F _rhi_gen_completion rhi-gen")
+    # bash with the script loaded, asked to complete what a user typed
+    complete = ('eval "$(rhi-gen --show-completion bash)"; COMP_WORDS=({words}); COMP_CWORD={cword}; '
+                '_rhi_gen_completion rhi-gen; printf "%s\\n" "${{COMPREPLY[@]}}"')
+    assert in_bash(complete.format(words="rhi-gen ch", cword=1)).stdout.split() == ["check"]
+    assert in_bash(complete.format(words="rhi-gen check --pr", cword=2)).stdout.split() == ["--project"]
+    assert in_bash(complete.format(words="rhi-gen generate --dr", cword=2)).stdout.split() == ["--dry-run"]
+
+
+def test_completion_protocol_answers_without_a_shell():
+    """What the script asks rhi-gen: the words so far in COMP_WORDS, the one to complete in COMP_CWORD."""
+    env = {**os.environ, "_RHI_GEN_COMPLETE": "complete_bash", "COMP_WORDS": "rhi-gen ch", "COMP_CWORD": "1"}
+    answer = subprocess.run([str(BIN / "rhi-gen")], capture_output=True, text=True, env=env)
+    assert (answer.returncode, answer.stdout, answer.stderr) == (0, "check\n", "")
+
+
+def test_install_completion_writes_the_script_and_sources_it(tmp_path):
+    installed = in_bash("rhi-gen --install-completion bash", HOME=str(tmp_path))
+    assert installed.returncode == 0, installed.stderr
+    script = tmp_path / ".bash_completions/rhi-gen.sh"
+    assert f"source '{script}'" in (tmp_path / ".bashrc").read_text()
+    assert script.read_text() == in_bash("rhi-gen --show-completion bash").stdout.rstrip("\n")
+
+
+def test_check_imports_neither_pydantic_nor_rich():
+    """`rhi-gen check` runs as a pre-commit hook: typer's pydantic validators and rich would double its start-up."""
+    probe = ("import sys; from rhi_gen.cli import main; main(['check', '--project', sys.argv[1]]); "
+             "print(sorted({m.split('.')[0] for m in sys.modules} & {'pydantic', 'rich'}))")
+    probed = subprocess.run([sys.executable, "-c", probe, str(REPO)], capture_output=True, text=True)
+    assert probed.returncode == 0 and probed.stdout.splitlines()[-1] == "[]", probed.stdout + probed.stderr
 
 
 def test_generate_with_no_robots_is_a_clear_error(tmp_path, capsys):

@@ -107,6 +107,30 @@ def test_usage_errors_are_one_line(tmp_path, args, words):
         assert word in lines[0]
 
 
+@pytest.mark.parametrize("args, line", [
+    (["new", "--vendor", "acme"], "error: Missing option '--robot' -> see `rhi-gen new --help`"),
+    (["new", "--forc"], "error: No such option: --forc (Possible options: --force) -> see `rhi-gen new --help`"),
+    (["frobnicate"], "error: No such command 'frobnicate' -> see `rhi-gen --help`"),
+    (["chek"], "error: No such command 'chek'. Did you mean 'check'? -> see `rhi-gen --help`"),
+    (["inspect", "--urdf"], "error: Option '--urdf' requires an argument -> see `rhi-gen inspect --help`"),
+    (["check", "-C"], "error: Option '-C' requires an argument -> see `rhi-gen check --help`"),
+    (["check", "extra"], "error: Got unexpected extra argument(s) (extra) -> see `rhi-gen check --help`"),
+    (["generate", "--dry-run=yes"], "error: Option '--dry-run' does not take a value -> see `rhi-gen generate --help`"),
+    (["check", "--version"], "error: No such option: --version -> see `rhi-gen check --help`"),
+])
+def test_click_usage_errors_are_exactly_one_line(args, line):
+    """Click's own errors (missing option, unknown option or command, an option without its value, an extra
+    argument), not its "Usage: ... Try ... Error: ..." block: the one line, exit 2, nothing on stdout."""
+    result = run_cli(*args)
+    assert (result.code, result.out, result.err) == (2, "", line + "\n")
+
+
+def test_rhi_gen_alone_prints_the_help_and_exits_2():
+    result = run_cli()
+    assert result.code == 2 and result.err == ""
+    assert result.out.startswith("Usage: rhi-gen [OPTIONS] COMMAND [ARGS]...") and "Commands:" in result.out
+
+
 def test_several_blocked_files_list_on_stdout_and_fail_in_one_line(three_robots):
     package = three_robots / "generated/robot_hardware_interface"
     for rel in ("src/acme/arm.cpp", "src/acme/wheel.cpp"):

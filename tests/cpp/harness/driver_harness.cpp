@@ -2196,10 +2196,9 @@ struct RobotThreads {
   }
 };
 
-void test_threads(int duration_ms) {
-  rhi_check::Section section("threads");
-  fresh_process();
-  Rig rig;
+// A rig whose transport runs real threads, with timeouts long enough for the sanitizers; false (and
+// torn down) when it did not set up and activate.
+bool start_threaded(Rig& rig) {
   rig.t.use_real_threads(true);
   hardware_interface::HardwareInfo info = make_hardware_info();
   info.hardware_parameters["state_timeout_ms"] = "2000";  // sanitizers slow everything down
@@ -2207,6 +2206,46 @@ void test_threads(int duration_ms) {
   if (!setup(rig, info) || !activate(rig)) {
     teardown(rig);
     rig.t.use_real_threads(false);
+    return false;
+  }
+  return true;
+}
+
+// A controller reading every joint's position interface: true when a state is there; each group
+// that mixes two frames adds one to `torn`.
+bool controller_reads_state(const Rig& rig, uint64_t* torn) {
+  std::array<double, N> q{};
+  bool any = false;
+  for (size_t k = 0; k < kJointCount; ++k) {
+    q[kJoints[k].slot] = rig.ifs.pos[k]->get();
+    any = any || q[kJoints[k].slot] != 0.0;
+  }
+  if (any) {
+    for (size_t g = 0; g < kGroupCount; ++g) {
+      *torn += consistent_group(q, nullptr, g, nullptr) ? 0U : 1U;
+    }
+  }
+  return any;
+}
+
+// A controller command carrying `code` in every joint's position target (and its stiffness).
+ControllerCommand coded_command(uint32_t code) {
+  ControllerCommand cmd;
+  for (const Joint& j : kJoints) {
+    cmd.q[j.slot] = encode_position(j, code);
+    cmd.dq[j.slot] = 0.0;
+    cmd.kp[j.slot] = 1.0 + (code % 7);
+    cmd.kd[j.slot] = 0.5;
+    cmd.ff[j.slot] = 0.0;
+  }
+  return cmd;
+}
+
+void test_threads(int duration_ms) {
+  rhi_check::Section section("threads");
+  fresh_process();
+  Rig rig;
+  if (!start_threaded(rig)) {
     return;
   }
   RobotThreads robot;
@@ -2214,29 +2253,12 @@ void test_threads(int duration_ms) {
   uint64_t cycles = 0, states_seen = 0, torn_states = 0;
   uint32_t code = 500;
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
-  ControllerCommand cmd;
   while (std::chrono::steady_clock::now() < end) {
     rig.hw->read(kTime, kPeriod);
-    std::array<double, N> q{};
-    bool any = false;
-    for (size_t k = 0; k < kJointCount; ++k) {
-      q[kJoints[k].slot] = rig.ifs.pos[k]->get();
-      any = any || q[kJoints[k].slot] != 0.0;
-    }
-    if (any) {
+    if (controller_reads_state(rig, &torn_states)) {
       ++states_seen;
-      for (size_t g = 0; g < kGroupCount; ++g) {
-        torn_states += consistent_group(q, nullptr, g, nullptr) ? 0U : 1U;
-      }
     }
-    for (const Joint& j : kJoints) {
-      cmd.q[j.slot] = encode_position(j, code);
-      cmd.dq[j.slot] = 0.0;
-      cmd.kp[j.slot] = 1.0 + (code % 7);
-      cmd.kd[j.slot] = 0.5;
-      cmd.ff[j.slot] = 0.0;
-    }
-    apply_command(rig.ifs, cmd);
+    apply_command(rig.ifs, coded_command(code));
     rig.hw->write(kTime, kPeriod);
     ++code;
     ++cycles;
@@ -2270,13 +2292,7 @@ void test_async(int duration_ms) {
   rhi_check::Section section("async");
   fresh_process();
   Rig rig;
-  rig.t.use_real_threads(true);
-  hardware_interface::HardwareInfo info = make_hardware_info();
-  info.hardware_parameters["state_timeout_ms"] = "2000";  // sanitizers slow everything down
-  info.hardware_parameters["fault_timeout_ms"] = "20000";
-  if (!setup(rig, info) || !activate(rig)) {
-    teardown(rig);
-    rig.t.use_real_threads(false);
+  if (!start_threaded(rig)) {
     return;
   }
   RobotThreads robot;
@@ -2312,7 +2328,6 @@ void test_async(int duration_ms) {
   const std::vector<std::string> all = interface_names([](size_t, const std::string&) { return true; });
   uint64_t cycles = 0, states_seen = 0, torn_states = 0, switches = 0;
   uint32_t code = 500;
-  ControllerCommand cmd;
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
   // The controllers run while read()/write() may: ros2_control locks its handles one at a time, so a
   // controller may see (and write() may take) joints of two cycles. What the driver guarantees is
@@ -2324,29 +2339,15 @@ void test_async(int duration_ms) {
     if (checked) {
       pause();
     }
-    std::array<double, N> q{};
-    bool any = false;
-    for (size_t k = 0; k < kJointCount; ++k) {
-      q[kJoints[k].slot] = rig.ifs.pos[k]->get();
-      any = any || q[kJoints[k].slot] != 0.0;
-    }
-    if (any && checked) {
+    uint64_t torn = 0;
+    if (controller_reads_state(rig, &torn) && checked) {
       ++states_seen;
-      for (size_t g = 0; g < kGroupCount; ++g) {
-        torn_states += consistent_group(q, nullptr, g, nullptr) ? 0U : 1U;
-      }
+      torn_states += torn;
     }
     if (checked) {
       ++code;
     }
-    for (const Joint& j : kJoints) {
-      cmd.q[j.slot] = encode_position(j, code);
-      cmd.dq[j.slot] = 0.0;
-      cmd.kp[j.slot] = 1.0 + (code % 7);
-      cmd.kd[j.slot] = 0.5;
-      cmd.ff[j.slot] = 0.0;
-    }
-    apply_command(rig.ifs, cmd);
+    apply_command(rig.ifs, coded_command(code));
     if (cycles % 40 == 5) {  // a controller switch while write() may run: release, then claim again
       switch_claims(rig, {}, all);
       switch_claims(rig, all, {});

@@ -41,11 +41,10 @@ def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild) -> Path:
     source = cpp_build.fake_robot_source(rb.package_dir, m.vendor, m.robot)
     assert source is not None, f"{m.vendor}/{m.robot} has no fake robot"
     includes = [rb.package_dir / "include", *cpp_build.DISTROS[DISTRO].include_dirs]
-    digest = [cpp_build.package_digest(rb.package_dir)]
     tag = f"{m.vendor}_{m.robot}"
-    objects = [builder.compile(source, FLAGS, includes, digest_parts=digest, name=f"benchfake_robot_{tag}",
+    objects = [builder.compile(source, FLAGS, includes, package=rb.package_dir, name=f"benchfake_robot_{tag}",
                                distro=DISTRO, transport=m.transport),
-               builder.compile(BENCH_SOURCE, FLAGS, includes, digest_parts=digest, name=f"benchfake_{tag}",
+               builder.compile(BENCH_SOURCE, FLAGS, includes, package=rb.package_dir, name=f"benchfake_{tag}",
                                distro=DISTRO, transport=m.transport)]
     for o in objects:
         if not o.ok:

@@ -101,7 +101,7 @@ def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild, distro: str) 
     pkg_include = rb.package_dir / "include"
     tag = f"{m.vendor}_{m.robot}_{distro}"
     driver = builder.compile(cpp_build.driver_source(rb.package_dir, m.vendor, m.robot), FLAGS,
-                             [pkg_include, *standins], digest_parts=[cpp_build.package_digest(rb.package_dir)],
+                             [pkg_include, *standins], package=rb.package_dir,
                              name=f"bench_driver_{tag}", distro=distro, transport=m.transport)
     bench = builder.compile(BENCH_SOURCE, FLAGS, [rb.data_dir, cpp_build.HARNESS_DIR, *standins],
                             digest_parts=[rb.data_header, builder._harness], name=f"bench_{tag}", distro=distro,

@@ -3,7 +3,7 @@
 For every robot of the driver harness matrix (tests/cpp/test_cpp_drivers.py: MATRIX) the harness's
 check counts per section, exit code, sanitizer verdict, allocation/thread/decimation lines and the
 compile and run times; then the DataBuffer stress (tests/cpp/test_cpp_data_buffer.py) per flavour.
-It builds exactly what those tests build, with the same code (their build_cells / run_cells /
+It builds exactly what those tests build, with the same code (their build_and_run_cells /
 build_and_run_stress), so RHI_CPP_CACHE=<dir> makes it fast after a test run. Exit 1 when a cell
 failed to build or a check failed (the tests say which and why):
 
@@ -24,9 +24,8 @@ from tests.cpp.test_cpp_drivers import (
     MATRIX,
     ROBOTS,
     SECTION_ORDER,
-    build_cells,
+    build_and_run_cells,
     in_cell,
-    run_cells,
 )
 from tests.support import vendor_msgs
 from tests.support.cpp_build import session_builder, session_reference_package
@@ -44,10 +43,8 @@ class TempDirs:
 
 def driver_report(reference, builder) -> tuple[list[str], bool]:
     start = time.monotonic()
-    binaries = build_cells(reference, builder)
-    built = time.monotonic()
-    runs = run_cells(binaries)
-    ran = time.monotonic()
+    binaries, runs = build_and_run_cells(reference, builder)
+    done = time.monotonic()
     ok = True
     lines = ["C++ driver harness (tests/cpp/test_cpp_drivers.py)", ""]
     for label in ROBOTS:
@@ -84,7 +81,7 @@ def driver_report(reference, builder) -> tuple[list[str], bool]:
                 for line in run.stdout.splitlines():
                     if line.startswith(prefix) and flavour in ("plain", "tsan"):
                         lines.append(f"             {line}")
-    lines += ["", f"times: build (parallel) {built - start:.1f}s, run (2 at a time) {ran - built:.1f}s"]
+    lines += ["", f"time: built and run (runs overlapping the compiles) in {done - start:.1f}s"]
     return lines, ok
 
 

@@ -39,9 +39,10 @@ import subprocess
 import pytest
 
 from rhi_gen.render.fake_robot_views import has_fake_robot
-from tests.support import vendor_msgs
+from tests.support import shared_use, vendor_msgs
 from tests.support.cpp_build import (
     HARNESS_ROBOTS,
+    OVERLAP_WORKERS,
     PACKAGE,
     WARNING_FLAGS,
     build_driver_object,
@@ -96,36 +97,45 @@ def in_cell(label: str, distro: str, flavour: str) -> bool:
 
 DISTRO = "humble"  # what the headers-alone checks compile against
 
-def build_cells(reference, builder) -> dict:
-    """{(robot, distro, flavour): (link result, [compile results])}, built in parallel, each once."""
+def build_and_run_cells(reference, builder) -> tuple[shared_use.Recorded, shared_use.Recorded]:
+    """({(robot, distro, flavour): (link result, [compile results])}, {same key: HarnessRun} for every RUN cell
+    that linked). Each cell is built, then run, by one of OVERLAP_WORKERS threads: the builder keeps the
+    compilers to one per core, and a run (which mostly waits on its timers) overlaps the next compiles.
+    Each cell records what it read of ../shared (only the X2's: tests/support/shared_use.py)."""
     jobs = [(b, distro, flavour) for b in reference.builds for distro, flavour in MATRIX
-            if not vendor_msgs.skip_reason(b.model.transport) and in_cell(b.label, distro, flavour)]
+            if in_cell(b.label, distro, flavour)]
 
-    def build(job):
+    def build_and_run(job):
         b, distro, flavour = job
-        if (distro, flavour) in COMPILE_MATRIX:
-            return build_driver_object(builder, b, flavour, distro=distro)
-        return build_harness(builder, b, flavour, distro=distro)
+        with shared_use.recording() as used:
+            if vendor_msgs.skip_reason(b.model.transport):
+                return None, None, set(used)
+            if (distro, flavour) in COMPILE_MATRIX:
+                return build_driver_object(builder, b, flavour, distro=distro), None, set(used)
+            built = build_harness(builder, b, flavour, distro=distro)
+            run = run_binary_retrying(built[0].path, [f"--threads-ms={THREADS_MS}"]) if built[0].ok else None
+            return built, run, set(used)
 
-    results = run_parallel(jobs, build)
-    return {(b.label, distro, flavour): result for (b, distro, flavour), result in zip(jobs, results, strict=True)}
-
-
-def run_cells(binaries: dict) -> dict:
-    """{(robot, distro, flavour): HarnessRun} for every binary of a RUN cell that linked; two at a time."""
-    linked = [(key, link.path) for key, (link, _) in binaries.items() if link.ok and key[1:] in RUN_MATRIX]
-    runs = run_parallel(linked, lambda item: run_binary_retrying(item[1], [f"--threads-ms={THREADS_MS}"]), workers=2)
-    return {key: run for (key, _), run in zip(linked, runs, strict=True)}
-
-
-@pytest.fixture(scope="module")
-def harness_binaries(reference, cpp_builder):
-    return build_cells(reference, cpp_builder)
+    results = dict(zip(((b.label, d, f) for b, d, f in jobs), run_parallel(jobs, build_and_run, OVERLAP_WORKERS),
+                       strict=True))
+    binaries = {key: (built, used) for key, (built, _, used) in results.items() if built is not None}
+    runs = {key: (run, used) for key, (_, run, used) in results.items() if run is not None}
+    return shared_use.Recorded(binaries), shared_use.Recorded(runs)
 
 
 @pytest.fixture(scope="module")
-def harness_runs(harness_binaries):
-    return run_cells(harness_binaries)
+def harness_cells(reference, cpp_builder):
+    return build_and_run_cells(reference, cpp_builder)
+
+
+@pytest.fixture(scope="module")
+def harness_binaries(harness_cells):
+    return harness_cells[0]
+
+
+@pytest.fixture(scope="module")
+def harness_runs(harness_cells):
+    return harness_cells[1]
 
 
 def _robot(reference, label):
@@ -163,7 +173,7 @@ def test_driver_header_compiles_on_its_own(reference, label, tmp_path):
     src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
     proc = subprocess.run([cxx, *WARNING_FLAGS, "-fsyntax-only",
                            f"-I{reference.package_dir / 'include'}", *standin_flags(DISTRO),
-                           *message_include_flags(), str(src)], capture_output=True, text=True)
+                           *message_include_flags(b.model.transport), str(src)], capture_output=True, text=True)
     assert proc.returncode == 0, f"{rel} does not compile on its own:\n{proc.stderr[:4000]}"
 
 

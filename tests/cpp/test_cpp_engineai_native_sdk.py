@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 from tests.support import vendor_msgs
-from tests.support.cpp_build import DISTROS, FLAVOURS, RobotBuild, package_digest, run_parallel
+from tests.support.cpp_build import DISTROS, FLAVOURS, RobotBuild, run_parallel
 
 LABEL = "engineai/pm01"
 VARIANT = vendor_msgs.ENGINEAI_NATIVE_SDK
@@ -79,7 +79,7 @@ def test_pm01_compiles_against_the_native_sdk_messages(reference, cpp_builder, d
     def compile_one(source: Path):
         return cpp_builder.compile(source, FLAVOURS["plain"], [rb.package_dir / "include",
                                                                *DISTROS[distro].include_dirs],
-                                   digest_parts=[package_digest(rb.package_dir)],
+                                   package=rb.package_dir,
                                    name=f"native_sdk_{source.stem}_{distro}", distro=distro,
                                    transport=m.transport, variants=(VARIANT,))
 

@@ -24,7 +24,6 @@ from tests.support.cpp_build import (
     DISTROS,
     FLAVOURS,
     fake_robot_source,
-    package_digest,
     project_robot_labels,
     run_parallel,
 )
@@ -46,7 +45,7 @@ def build_objects(builder, rb, distro: str):
     m = rb.model
     pkg = rb.package_dir
     includes = [pkg / "include", *DISTROS[distro].include_dirs]
-    objects = [builder.compile(source, FLAVOURS["plain"], includes, digest_parts=[package_digest(pkg)],
+    objects = [builder.compile(source, FLAVOURS["plain"], includes, package=pkg,
                                name=f"fakeexe_{source.stem}_{m.vendor}_{m.robot}_{distro}", distro=distro,
                                transport=m.transport)
                for source in (pkg / "src" / "fake_robot_main.cpp", fake_robot_source(pkg, m.vendor, m.robot))

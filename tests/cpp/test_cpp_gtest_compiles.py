@@ -30,7 +30,7 @@ import pytest
 import yaml
 
 from rhi_gen.cli import main
-from tests.support import vendor_msgs
+from tests.support import shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DISTROS,
     ENV_C,
@@ -105,18 +105,23 @@ JOBS = [(label, distro) for label in LABELS for distro in GTEST_DISTROS] + \
     [(label, distro) for label in CUSTOM_LABELS for distro in DISTROS]
 
 
-def _flags(package: Path, distro: str) -> list[str]:
+def _flags(package: Path, distro: str, label: str) -> list[str]:
+    """Only the robot's own vendor messages on the include path (the X2's come from ../shared, the others' not)."""
     # WARNING_FLAGS has -Wpedantic: the generated CMakeLists.txt adds -Wall -Wextra -Wpedantic.
-    return [*WARNING_FLAGS, *standin_flags(distro), f"-I{package / 'include'}", *message_include_flags()]
+    return [*WARNING_FLAGS, *standin_flags(distro), f"-I{package / 'include'}",
+            *message_include_flags(_transport(label))]
+
+
+def _transport(label: str) -> str:
+    path = REPO / "robots" / f"{label}.yaml"
+    if not path.is_file():
+        path = HARNESS_ROBOTS / f"{label}.yaml"
+    return str(yaml.safe_load(path.read_text(encoding="utf-8"))["transport"])
 
 
 def _skip_reason(label: str) -> str | None:
     """Set when the robot's transport needs vendor messages that cannot be generated (no ../shared)."""
-    path = REPO / "robots" / f"{label}.yaml"
-    if not path.is_file():
-        path = HARNESS_ROBOTS / f"{label}.yaml"
-    transport = yaml.safe_load(path.read_text(encoding="utf-8"))["transport"]
-    return vendor_msgs.skip_reason(transport)
+    return vendor_msgs.skip_reason(_transport(label))
 
 
 def _source(package: Path, label: str) -> Path:
@@ -131,40 +136,45 @@ class GtestResult:
 
 
 @pytest.fixture(scope="module")
-def results(package_dir, tmp_path_factory) -> dict[tuple[str, str], GtestResult]:
+def results(package_dir, tmp_path_factory) -> shared_use.Recorded:
     """Per robot and distro, 2 in parallel: build with the driver (the stand-in
     ResourceManager creates the plugin from the registry PLUGINLIB_EXPORT_CLASS fills, as pluginlib
     loads it), link with gmock_main and run."""
     if not _toolchain_ok():
-        return {}  # every test then fails in require_toolchain()
+        return shared_use.Recorded({})  # every test then fails in require_toolchain()
     out_dir = tmp_path_factory.mktemp("gtest_bin")
 
-    def one(job: tuple[str, str]) -> tuple[tuple[str, str], GtestResult]:
+    def one(job: tuple[str, str]) -> tuple[tuple[str, str], tuple[GtestResult, set[str]]]:
+        with shared_use.recording() as used:  # per job: the X2's reads of ../shared are the X2 tests' alone
+            result = build_and_run(job)
+        return job, (result, set(used))
+
+    def build_and_run(job: tuple[str, str]) -> GtestResult:
         label, distro = job
         result = GtestResult()
         if _skip_reason(label):
-            return job, result
+            return result
         source = _source(package_dir, label)
         if not source.is_file():
             result.syntax_error = f"{label}: {source.name} was not generated"
-            return job, result
+            return result
         vendor, robot = label.split("/")
         driver = package_dir / "src" / vendor / f"{robot}.cpp"
         binary = out_dir / f"gtest_{label.replace('/', '_')}_{distro}"
         try:  # one g++ run: the gtest and its driver compiled (-Werror) and linked with gmock_main
-            run_compiler([*_flags(package_dir, distro), "-O0", "-pthread", str(source), str(driver), *GMOCK_LIBS,
-                          "-o", str(binary)], what=f"{label} gtest with its driver ({distro}, gmock_main)")
+            run_compiler([*_flags(package_dir, distro, label), "-O0", "-pthread", str(source), str(driver),
+                          *GMOCK_LIBS, "-o", str(binary)], what=f"{label} gtest with its driver ({distro}, gmock_main)")
         except AssertionError as exc:
             result.syntax_error = str(exc)
-            return job, result
+            return result
         # What pluginlib reads through the ament index: the package's plugin description (4.x+
         # stand-in ResourceManagers resolve the <plugin> lookup name through it, as upstream does).
         env = {**ENV_C, "RHI_FAKE_PLUGIN_XML": str(package_dir / f"{PACKAGE}.xml"), "RHI_FAKE_LOG_ECHO": "1"}
         result.run = subprocess.run([str(binary)], capture_output=True, text=True, env=env, timeout=120)
-        return job, result
+        return result
 
     with ThreadPoolExecutor(max_workers=2) as pool:
-        return dict(pool.map(one, JOBS))
+        return shared_use.Recorded(dict(pool.map(one, JOBS)))
 
 
 def test_every_robot_has_a_gtest(package_dir):

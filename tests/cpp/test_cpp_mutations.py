@@ -20,9 +20,10 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import vendor_msgs
+from tests.support import shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DEFAULT_DISTRO,
+    OVERLAP_WORKERS,
     PACKAGE,
     HarnessRun,
     RenderedPackage,
@@ -357,8 +358,14 @@ def outcomes(tmp_path_factory):
     builder = session_builder(tmp_path_factory)
     tmp_root = tmp_path_factory.mktemp("mutations")
     jobs = [None, *MUTATIONS]
-    results = run_parallel(jobs, lambda job: _run_one(job, tmp_root, builder))
-    return {(job.id if job else "control"): result for job, result in zip(jobs, results, strict=True)}
+
+    def run_one(job):  # each job records what it read of ../shared (the X2's mutations), not the whole fixture
+        with shared_use.recording() as used:
+            return _run_one(job, tmp_root, builder), set(used)
+
+    results = run_parallel(jobs, run_one, OVERLAP_WORKERS)  # runs overlap the compiles (cpp_build.py)
+    return shared_use.Recorded({(job.id if job else "control"): result
+                                for job, result in zip(jobs, results, strict=True)})
 
 
 def _built(outcomes_of_one: list[Outcome]) -> list[Outcome]:

@@ -54,8 +54,11 @@ ENV_C = {**os.environ, "LC_ALL": "C", "LANG": "C"}
 WORKERS = os.cpu_count() or 2
 
 
-def _cxxflags(distro: str) -> list[str]:
-    return [*WARNING_FLAGS, "-pthread", *standin_flags(distro), *message_include_flags()]
+def _cxxflags(distro: str, vendor_messages: bool = False) -> list[str]:
+    """``vendor_messages``: the generated vendor packages on the include path too (the self-test's vendor
+    part); without, the ROS 2 wheels' messages only, which is all the stand-ins' own headers include."""
+    return [*WARNING_FLAGS, "-pthread", *standin_flags(distro),
+            *message_include_flags(None if vendor_messages else "")]
 
 
 def _public_headers(distro: str) -> list[str]:
@@ -143,7 +146,8 @@ def selftest_binaries(tmp_path_factory) -> dict[tuple[str, str], tuple[Path, sub
     def build(job: tuple[str, str]):
         distro, flavour = job
         binary = out_dir / f"selftest_{distro}_{flavour}"
-        cmd = [cxx, *_cxxflags(distro), *vendor, *FLAVOURS[flavour], str(SELFTEST), "-o", str(binary)]
+        cmd = [cxx, *_cxxflags(distro, vendor_messages=True), *vendor, *FLAVOURS[flavour], str(SELFTEST),
+               "-o", str(binary)]
         return job, binary, subprocess.run(cmd, capture_output=True, text=True, env=ENV_C)
 
     jobs = [(d, f) for d in DISTROS for f in FLAVOURS]

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from tests.support import vendor_msgs
+from tests.support import shared_use, vendor_msgs
 from tests.support.repo import REPO
 from tests.support.ros_msgs import wheel_include_dirs, wheels_digest
 from tests.support.xml_tree import attribute
@@ -165,6 +165,15 @@ FLAVOURS: dict[str, tuple[str, ...]] = {
                    "-fno-sanitize-recover=all"),
     "tsan": ("-O1", "-g1", "-fsanitize=thread"),
 }
+
+
+def harness_flags(flavour: str) -> tuple[str, ...]:
+    """The flavour's flags with -Og for the harness's own translation unit: test code, compiled in about half
+    the time of -O2 (-O1 with a sanitizer), still instrumented alike. The driver and fake robot objects it
+    links keep the flavour's optimisation (a release build's, for plain)."""
+    return (*(f for f in FLAVOURS[flavour] if not f.startswith("-O")), "-Og")
+
+
 SANITIZER_ENV = {
     "ASAN_OPTIONS": "abort_on_error=0:halt_on_error=1:detect_leaks=1",
     "UBSAN_OPTIONS": "halt_on_error=1:print_stacktrace=1",
@@ -642,6 +651,50 @@ class CompileResult:
     cached: bool = False
 
 
+class PackageDeps:
+    """Which files of a generated package one object was compiled from, as a manifest beside the object:
+    one line per package content seen, listing the package files g++ read (-MD), relative to the package.
+    A later compile of the same source and flags is a hit when those files hash the same (ccache's
+    "direct mode", for the one folder whose content varies between test packages)."""
+
+    def __init__(self, manifest: Path, package: Path) -> None:
+        self.manifest = manifest
+        self.package = package
+
+    def candidates(self) -> list[tuple[str, ...]]:
+        try:
+            lines = self.manifest.read_text(encoding="utf-8").splitlines()
+        except FileNotFoundError:
+            return []
+        return list(dict.fromkeys(tuple(line.split("\t")) for line in lines if line))
+
+    def digest(self, files: Sequence[str]) -> str | None:
+        """The files' names and contents in this package; None when one of them is missing here."""
+        h = hashlib.sha256()
+        for rel in files:
+            try:
+                data = (self.package / rel).read_bytes()
+            except FileNotFoundError:
+                return None
+            h.update(rel.encode() + b"\0" + data + b"\0")
+        return h.hexdigest()
+
+    def record(self, depfile: Path) -> tuple[str, ...]:
+        """The package files a g++ depfile lists, appended to the manifest (one write: O_APPEND keeps
+        lines whole across sessions sharing the cache)."""
+        root = Path(os.path.normpath(self.package.resolve()))
+        text = depfile.read_text(encoding="utf-8").replace("\\\n", " ")
+        names = set()
+        for token in text.split()[1:]:
+            path = Path(os.path.normpath(Path(token).resolve()))
+            if path.is_relative_to(root):
+                names.add(path.relative_to(root).as_posix())
+        files = tuple(sorted(names))
+        with self.manifest.open("a", encoding="utf-8") as out:
+            out.write("\t".join(files) + "\n")
+        return files
+
+
 class CppBuilder:
     """Compiles and links with a content-addressed cache (key = everything that goes in).
 
@@ -652,14 +705,17 @@ class CppBuilder:
         self.cache_dir = cache_dir
         cache_dir.mkdir(parents=True, exist_ok=True)
         self.jobs = jobs or max(1, os.cpu_count() or 1)
+        # At most ``jobs`` compilers at once, however many threads ask: a pool can then run more workers
+        # than cores, each building and then running its binary, and the runs (which mostly wait on
+        # timers) overlap the next compiles instead of leaving the cores idle.
+        self._slots = threading.BoundedSemaphore(self.jobs)
         version = subprocess.run([self.cxx, "--version"], capture_output=True, text=True).stdout
         self._salt = hashlib.sha256(version.encode()).hexdigest()
         self._standins = _tree_digest(STANDINS, (".hpp", ".h"))  # every distro's headers
         # Message headers per transport (None: every available vendor package). A compile for one robot
         # gets only its transport's vendor packages, so its key does not change with packages it cannot
         # include (a clone without the AimDK messages reuses the G1 objects of a session that had them).
-        self._message_flags: dict[tuple[str | None, tuple[str, ...]], list[str]] = {}
-        self._messages: dict[tuple[str | None, tuple[str, ...]], str] = {}
+        self._messages: dict[tuple[str | None, tuple[str, ...]], tuple[list[str], str, set[str]]] = {}
         # .inc: the sections and mutants driver_harness.cpp includes
         self._harness = _tree_digest(HARNESS_DIR, (".hpp", ".h", ".cpp", ".inc")) + \
             _tree_digest(TOY_BUS_DIR, (".hpp", ".in"))
@@ -677,20 +733,26 @@ class CppBuilder:
             h.update(b"\0")
         return h.hexdigest()[:24]
 
-    def _run(self, key: str, out: Path, cmd: list[str]) -> CompileResult:
+    def _claim(self, key: str) -> tuple[CompileResult | None, threading.Event]:
+        """(the result, when this session has it or another thread is making it: waits), else (None, the
+        event to set once this thread has stored the result under ``key``)."""
         with self._lock:
             if key in self._results:
                 self.reused += 1
-                return self._results[key]
+                return self._results[key], threading.Event()
             event = self._inflight.get(key)
-            owner = event is None
             if event is None:
                 event = self._inflight[key] = threading.Event()
-        if not owner:
-            event.wait()
-            with self._lock:
-                self.reused += 1
-                return self._results[key]
+                return None, event
+        event.wait()
+        with self._lock:
+            self.reused += 1
+            return self._results[key], event
+
+    def _run(self, key: str, out: Path, cmd: list[str]) -> CompileResult:
+        done, event = self._claim(key)
+        if done is not None:
+            return done
         if out.exists():
             result = CompileResult(True, out, cmd, cached=True)
         else:
@@ -698,7 +760,8 @@ class CppBuilder:
             # per process: sessions sharing RHI_CPP_CACHE must not write one file (an exec of it fails: ETXTBSY)
             tmp = out.with_name(f"{out.name}.{os.getpid()}.tmp")
             full = [*cmd, "-o", str(tmp)]
-            proc = subprocess.run(full, capture_output=True, text=True, env=ENV_C)
+            with self._slots:
+                proc = subprocess.run(full, capture_output=True, text=True, env=ENV_C)
             seconds = time.monotonic() - start
             if proc.returncode == 0:
                 os.replace(tmp, out)
@@ -712,28 +775,74 @@ class CppBuilder:
         return result
 
     def _message_parts(self, transport: str | None, variants: tuple[str, ...]) -> tuple[list[str], str]:
+        """Include flags and digest of the vendor messages, once per builder; a use counts as reading what
+        their generation read (the AimDK headers come from ../shared: tests/support/shared_use.py)."""
+        which = (transport, variants)
         with self._lock:
-            which = (transport, variants)
-            if which not in self._messages:
-                self._message_flags[which] = message_include_flags(transport, variants)
-                self._messages[which] = messages_digest(transport, variants)
-            return self._message_flags[which], self._messages[which]
+            hit = self._messages.get(which)
+        if hit is None:
+            with shared_use.recording() as used:
+                hit = (message_include_flags(transport, variants), messages_digest(transport, variants), set(used))
+            with self._lock:
+                hit = self._messages.setdefault(which, hit)
+        shared_use.replay(hit[2])
+        return hit[0], hit[1]
 
     def compile(self, source: Path, flags: Sequence[str], includes: Sequence[Path], *,
-                digest_parts: Sequence[str], name: str, distro: str = DEFAULT_DISTRO,
-                transport: str | None = None, variants: tuple[str, ...] = ()) -> CompileResult:
+                digest_parts: Sequence[str] = (), name: str, distro: str = DEFAULT_DISTRO,
+                transport: str | None = None, variants: tuple[str, ...] = (),
+                package: Path | None = None) -> CompileResult:
         """``transport``: the robot's; only its vendor message packages are on the include path and in
         the key (None: every available one). ``variants``: other releases of those packages to compile
-        against instead of the default ones (tests/support/vendor_msgs.py: VARIANTS)."""
+        against instead of the default ones (tests/support/vendor_msgs.py: VARIANTS). ``package``: a
+        generated package the source includes from; only the package files the compiler actually read
+        are in the key (PackageDeps), so a change to one header rebuilds only what includes it."""
         # Paths are not part of the key (the same sources in another folder give the same object),
         # so the distro, which picks the stand-in folders, is.
         message_flags, messages = self._message_parts(transport, variants)
         key = self._key("compile", source.name, source.read_text(encoding="utf-8"), *flags,
                         self._standins, messages, f"distro={distro}", *digest_parts)
-        out = self.cache_dir / f"{name}-{key}.o"
         cmd = [self.cxx, *WARNING_FLAGS, "-pthread", *flags, *(f"-I{p}" for p in includes),
                *message_flags, "-c", str(source)]
-        return self._run(key, out, cmd)
+        if package is None:
+            return self._run(key, self.cache_dir / f"{name}-{key}.o", cmd)
+        return self._run_tracked(key, name, cmd, PackageDeps(self.cache_dir / f"{name}-{key}.deps", package))
+
+    def _run_tracked(self, base: str, name: str, cmd: list[str], deps: PackageDeps) -> CompileResult:
+        """_run for a source that includes a generated package: the object's key is ``base`` plus the
+        contents of the package files it read (recorded by g++ -MD in the manifest the first time)."""
+        for files in deps.candidates():
+            digest = deps.digest(files)
+            if digest is not None:
+                key = self._key(base, digest)
+                out = self.cache_dir / f"{name}-{key}.o"
+                if out.exists() or key in self._results:
+                    return self._run(key, out, cmd)
+        # Not built for this package content yet: compiled once per (base, whole package) in this session.
+        whole = self._key(base, "package", package_digest(deps.package))
+        done, event = self._claim(whole)
+        if done is not None:
+            return done
+        start = time.monotonic()
+        tmp = self.cache_dir / f"{name}-{whole}.{os.getpid()}.tmp"
+        depfile = tmp.with_suffix(".d")
+        full = [*cmd, "-MD", "-MF", str(depfile), "-o", str(tmp)]
+        with self._slots:
+            proc = subprocess.run(full, capture_output=True, text=True, env=ENV_C)
+        seconds = time.monotonic() - start
+        out, key = tmp, whole
+        if proc.returncode == 0:
+            key = self._key(base, deps.digest(deps.record(depfile)) or "")
+            out = self.cache_dir / f"{name}-{key}.o"
+            os.replace(tmp, out)
+        depfile.unlink(missing_ok=True)
+        result = CompileResult(proc.returncode == 0, out, full, proc.stderr, seconds)
+        with self._lock:
+            self.compile_seconds += seconds
+            self.compiled += 1
+            self._results[whole] = self._results[key] = result
+            event.set()
+        return result
 
     def link(self, objects: Sequence[CompileResult], flags: Sequence[str], name: str) -> CompileResult:
         key = self._key("link", *(o.path.name for o in objects), *flags)
@@ -792,11 +901,11 @@ def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
     its section includes the package's fake robot headers)."""
     m = rb.model
     fake = fake_robot_source(rb.package_dir, m.vendor, m.robot) is not None
-    return builder.compile(HARNESS_DIR / "driver_harness.cpp", FLAVOURS[flavour],
+    return builder.compile(HARNESS_DIR / "driver_harness.cpp", harness_flags(flavour),
                            [rb.data_dir, HARNESS_DIR, TOY_BUS_DIR, *([rb.package_dir / "include"] if fake else []),
                             *DISTROS[distro].include_dirs],
-                           digest_parts=[rb.data_header, builder._harness,
-                                         package_digest(rb.package_dir) if fake else ""],
+                           digest_parts=[rb.data_header, builder._harness],
+                           package=rb.package_dir if fake else None,
                            name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
                            transport=m.transport)
 
@@ -810,7 +919,7 @@ def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
     toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
     obj = builder.compile(driver_source(rb.package_dir, m.vendor, m.robot), FLAVOURS[flavour],
                           [rb.package_dir / "include", *toy_bus, *DISTROS[distro].include_dirs],
-                          digest_parts=[package_digest(rb.package_dir)],
+                          package=rb.package_dir,
                           name=f"driver_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
                           transport=m.transport)
     return obj, [obj]
@@ -826,18 +935,17 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
     flags = FLAVOURS[flavour]
     pkg_include = rb.package_dir / "include"
     standins = DISTROS[distro].include_dirs
-    pkg = package_digest(rb.package_dir)
     tag = f"{m.vendor}_{m.robot}_{flavour}_{distro}"
     driver_src = driver_source(rb.package_dir, m.vendor, m.robot)
     # A custom-transport driver's filled regions include the toy bus (tests/cpp/toy_bus/).
     toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
     steps = [builder.compile(driver_src, flags, [pkg_include, *toy_bus, *standins],
-                             digest_parts=[pkg, builder._harness if toy_bus else ""],
+                             digest_parts=[builder._harness if toy_bus else ""], package=rb.package_dir,
                              name=f"driver_{tag}", distro=distro, transport=m.transport)]
     steps.append(compile_harness_object(builder, rb, flavour, distro))
     fake = fake_robot_source(rb.package_dir, m.vendor, m.robot)
     if fake is not None:
-        steps.append(builder.compile(fake, flags, [pkg_include, *standins], digest_parts=[pkg],
+        steps.append(builder.compile(fake, flags, [pkg_include, *standins], package=rb.package_dir,
                                      name=f"fake_{tag}", distro=distro, transport=m.transport))
     if m.transport == "unitree_dds":
         family = unitree_family(m)
@@ -849,7 +957,7 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
             rel = header.relative_to(pkg_include).as_posix()
             probe_flags = (*flags, f'-DRHI_CRC_HEADER="{rel}"', f"-DRHI_UNITREE_FAMILY_{family.upper()}=1")
             steps.append(builder.compile(HARNESS_DIR / "crc_probe.cpp", probe_flags,
-                                         [pkg_include, *standins], digest_parts=[pkg],
+                                         [pkg_include, *standins], package=rb.package_dir,
                                          name=f"crcprobe_{tag}", distro=distro, transport=m.transport))
     failed = [s for s in steps if not s.ok]
     if failed:
@@ -905,6 +1013,11 @@ def run_binary(binary: Path, args: Sequence[str] = (), timeout: float = 300,
         err = exc.stderr.decode(errors="replace") if isinstance(exc.stderr, bytes) else (exc.stderr or "")
         return _parse_run(-9, out, err + f"\n(time-out after {timeout:.0f} s)", time.monotonic() - start)
     return _parse_run(proc.returncode, proc.stdout, proc.stderr, time.monotonic() - start)
+
+
+# Threads for a pool whose jobs build (the builder allows one compiler per core) and then run a binary that
+# mostly sleeps: the runs overlap the compiles.
+OVERLAP_WORKERS = (os.cpu_count() or 1) + 3
 
 
 def run_parallel(jobs, fn, workers: int | None = None) -> list:
@@ -1014,7 +1127,7 @@ def project_robot_labels(extra_robots: bool = True) -> list[str]:
 def compile_data_buffer_stress(builder: CppBuilder, package_dir: Path, flavour: str) -> CompileResult:
     src = HARNESS_DIR / "data_buffer_stress.cpp"
     obj = builder.compile(src, FLAVOURS[flavour], [package_dir / "include", HARNESS_DIR],
-                          digest_parts=[package_digest(package_dir), builder._harness],
+                          digest_parts=[builder._harness], package=package_dir,
                           name=f"data_buffer_{flavour}", transport="")
     if not obj.ok:
         return obj
@@ -1027,7 +1140,7 @@ def compile_transmission_checks(builder: CppBuilder, package_dir: Path, flavour:
     includes = [package_dir / "include", HARNESS_DIR, *DISTROS[distro].include_dirs]
     name = f"transmission_checks_{distro}_{flavour}"
     obj = builder.compile(src, FLAVOURS[flavour], includes, name=name, distro=distro, transport="",
-                          digest_parts=[package_digest(package_dir), builder._harness])
+                          digest_parts=[builder._harness], package=package_dir)
     if not obj.ok:
         return obj
     return builder.link([obj], FLAVOURS[flavour], name)

@@ -31,7 +31,6 @@ Anything else (a missing wheel, a generator error) fails.
 """
 from __future__ import annotations
 
-import functools
 import hashlib
 import json
 import os
@@ -43,6 +42,7 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
+from tests.support import shared_use
 from tests.support.repo import REPO
 from tests.support.ros_msgs import require_dir, wheel_versions
 
@@ -248,6 +248,8 @@ def package_root(p: VendorPackage) -> Path:
         raise FileNotFoundError(reason)
     key = package_key(p)
     target = cache_root() / f"{p.name}{f'-{p.variant}' if p.variant else ''}-{key}"
+    if not p.in_repo:  # generated from ../shared: reading these headers reads it (tests/support/shared_use.py)
+        shared_use.watch(target)
     if (target / "complete").is_file():
         return target
     target.parent.mkdir(parents=True, exist_ok=True)
@@ -272,7 +274,7 @@ def header_dir(name: str, kind: str = "msg", variant: str = "") -> Path:
         return package_root(p) / "include" / name / name / kind
 
 
-@functools.cache
+@shared_use.cached
 def _include_dir(p: VendorPackage) -> Path:
     return package_root(p) / "include" / p.name
 

@@ -6,10 +6,16 @@ from pathlib import Path
 
 import pytest
 
+from tests.support import fresh_clone_selection, shared_use, vendor_msgs
 from tests.support.cli import cli
 from tests.support.repo import copy_project
 
 REPORTS = pytest.StashKey[list[str]]()
+FIXTURE_READS = pytest.StashKey[dict[object, set[str]]]()
+
+shared_use.install()
+shared_use.watch(vendor_msgs.UPSTREAM)
+shared_use.watch(vendor_msgs.UPSTREAM_MSGS)
 
 
 @pytest.fixture
@@ -20,7 +26,11 @@ def report(request: pytest.FixtureRequest) -> Callable[[str], None]:
 
 
 def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
-    texts = terminalreporter.config.stash.get(REPORTS, [])
+    texts: list[str] = [*terminalreporter.config.stash.get(REPORTS, [])]
+    if fresh_clone_selection.recorded():
+        texts.append(f"tests that read ../shared: {fresh_clone_selection.recorded()} (a fresh clone re-runs them; "
+                     f"{fresh_clone_selection.LIST_ENV}=<file> lists them)")
+        fresh_clone_selection.write_list()
     if texts:
         terminalreporter.section("reports")
         for text in texts:
@@ -44,6 +54,44 @@ def project(robots_project: Path, capsys: pytest.CaptureFixture[str]) -> Path:
 
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list[pytest.Item]) -> None:
     """tests/cli/test_fresh_clone.py runs last, so the clone it tests reuses every object the session
-    compiled (its RHI_CPP_CACHE)."""
+    compiled (its RHI_CPP_CACHE) and knows which tests read ../shared. In that clone, the selection the
+    outer session passes on (tests/support/fresh_clone_selection.py) deselects the rest."""
     last = [item for item in items if item.nodeid.split("::")[0].endswith("test_fresh_clone.py")]
     items[:] = [item for item in items if item not in last] + last
+    dropped = fresh_clone_selection.apply(items)
+    if dropped:
+        config.hook.pytest_deselected(items=dropped)
+
+
+# ------------------------------------------------------------------------ reads of ../shared (shared_use.py)
+@pytest.hookimpl(wrapper=True)
+def pytest_make_collect_report(collector: pytest.Collector):
+    """A module whose collection read ../shared (parameters from it): each of its tests counts as reading it."""
+    with shared_use.recording(main=True) as used:
+        report = yield
+    if used and isinstance(collector, pytest.Module):
+        fresh_clone_selection.note_module(collector.nodeid)
+    return report
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_fixture_setup(fixturedef: pytest.FixtureDef[object], request: pytest.FixtureRequest):
+    """A fixture's reads count for every test that uses it (its value may carry what it read)."""
+    with shared_use.recording(main=True) as used:
+        result = yield
+    if used:
+        request.config.stash.setdefault(FIXTURE_READS, {})[fixturedef] = set(used)
+    return result
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None):
+    with shared_use.recording(main=True) as used:
+        result = yield
+    reads = item.config.stash.get(FIXTURE_READS, {})
+    info = getattr(item, "_fixtureinfo", None)  # a test function's; other items have no fixtures
+    by_name = info.name2fixturedefs if info else {}
+    defs = [d for name in getattr(item, "fixturenames", ()) for d in by_name.get(name, ())]
+    if used or any(d in reads for d in defs):
+        fresh_clone_selection.note_test(item.nodeid)
+    return result

@@ -10,14 +10,24 @@ the README's own commands, parsed from README.md so the test runs them word for 
 * "Benchmarks": the command with `--robot g1 --robot pm01` measures both; with `--robot x2` it says in
   one line that it skipped X2 and why (no raw compiler error).
 
+What the clone runs: when this session ran the whole suite, it knows which tests read ../shared
+(tests/support/shared_use.py records every open, listing, stat and compiler argument under it, through
+fixtures and cached values too), and the clone runs exactly those, the whole quick tier (no compiler: the
+CLI, the install it runs from, the gates) and any test this session did not run
+(tests/support/fresh_clone_selection.py, passed in RHI_FRESH_CLONE_SELECT; the README command is still run
+word for word). The rest of the C++ tier would compile the clone's files, the session's byte for byte, into
+the same objects and run them again. Run alone (or with -k, -m, paths), this file runs the whole suite in
+the clone. The skip count above checks the record: a test that skips in the clone but did not read
+../shared here would be missing from the clone's run, and the count would fall short.
+
 Cost: this runs last in the session (tests/conftest.py) and passes the session's compiled-object cache
 to the clone (RHI_CPP_CACHE: object keys hold contents, never paths, so the clone's compiles are cache
-hits); pip installs from its own cache. What is left is the Python tests, the uncached compiles (the
-stand-in self-tests, -fsyntax-only checks, gtests) and running the harness binaries again. The clone
-tests HEAD: commit first when running this on a working tree with changes.
+hits); pip installs from its own cache. The clone tests HEAD: commit first when running this on a
+working tree with changes.
 """
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
@@ -27,7 +37,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import cpp_build
+from tests.support import cpp_build, fresh_clone_selection, vendor_msgs
 from tests.support.repo import REPO
 
 pytestmark = pytest.mark.cpp  # it runs the whole suite, compiles included, in the clone
@@ -60,7 +70,7 @@ def readme_skip_count() -> int:
 
 
 @pytest.fixture(scope="module")
-def clone(tmp_path_factory):
+def clone(tmp_path_factory, request):
     if os.environ.get(INNER):
         pytest.skip(f"inner run of tests/cli/test_fresh_clone.py ({INNER} is set): a fresh clone does not clone "
                     "itself again")
@@ -77,6 +87,11 @@ def clone(tmp_path_factory):
     # The session's object cache (the same content gives the same key in any folder).
     env["RHI_CPP_CACHE"] = str(os.environ.get("RHI_CPP_CACHE") or
                                cpp_build.session_builder(tmp_path_factory).cache_dir)
+    if fresh_clone_selection.whole_suite(request.config):
+        # this session ran every test and knows which read ../shared: the clone runs those and the quick tier
+        chosen = fresh_clone_selection.selection(request.session.items, request.node.nodeid.split("::")[0])
+        fresh_clone_selection.write(root / "selection.json", chosen)
+        env[fresh_clone_selection.ENV] = str(root / "selection.json")
     return dest, env
 
 
@@ -86,8 +101,24 @@ def run(cmd: str, cwd: Path, env: dict[str, str]) -> tuple[subprocess.CompletedP
     return proc, time.monotonic() - start
 
 
+# What the record must have found in a whole-suite session (with ../shared beside it), and what not.
+READS_SHARED = ("tests/gates/test_vendor_data.py::test_the_copies_are_byte_identical_to_the_shared_vendor_data",
+                "tests/cpp/test_cpp_drivers.py::test_driver_against_simulated_robot[agibot/x2-jazzy-plain]",
+                "tests/cpp/test_cpp_mutations.py::test_mutation_is_caught[take_control_refusal_ignored]",
+                "tests/cpp/test_cpp_gtest_compiles.py::test_gtest_runs_against_the_standin[agibot/x2-rolling]")
+READS_NOTHING_SHARED = ("tests/cpp/test_cpp_drivers.py::test_driver_against_simulated_robot[unitree/g1-jazzy-plain]",
+                        "tests/cpp/test_cpp_mutations.py::test_mutation_is_caught[crc_polynomial]",
+                        "tests/cpp/test_cpp_gtest_compiles.py::test_gtest_runs_against_the_standin[engineai/pm01-humble]")
+
+
 def test_readme_test_command_passes_in_a_fresh_clone(clone, report):
     dest, env = clone
+    if fresh_clone_selection.ENV in env and vendor_msgs.UPSTREAM.is_dir():
+        chosen = json.loads(Path(env[fresh_clone_selection.ENV]).read_text(encoding="utf-8"))
+        run_ids = set(chosen["run"])
+        assert set(READS_SHARED) <= run_ids, f"not recorded as reading ../shared: {set(READS_SHARED) - run_ids}"
+        assert not set(READS_NOTHING_SHARED) & run_ids, \
+            f"recorded as reading ../shared: {set(READS_NOTHING_SHARED) & run_ids}"
     command = readme_block("Run the tests")
     proc, seconds = run(command, dest, env)
     tail = proc.stdout[-6000:] + proc.stderr[-3000:]
@@ -95,6 +126,10 @@ def test_readme_test_command_passes_in_a_fresh_clone(clone, report):
     assert proc.returncode == 0, f"exit {proc.returncode} after {seconds:.0f} s:\n{tail}"
     summary = proc.stdout.strip().splitlines()[-1]
     report(f"fresh clone: {summary}")
+    if fresh_clone_selection.ENV in env:
+        chosen = json.loads(Path(env[fresh_clone_selection.ENV]).read_text(encoding="utf-8"))
+        report(f"fresh clone: ran {len(chosen['run'])} of this session's {len(chosen['outer'])} tests (every test "
+               "that read ../shared, and the quick tier) and this file's own two")
     skipped = int(m[1]) if (m := re.search(r"(\d+) skipped", summary)) else 0
     assert skipped == readme_skip_count() + INNER_SELF_SKIPS, (
         f"README says {readme_skip_count()} tests skip without the AimDK message definitions "

@@ -230,6 +230,16 @@ class XacroView:
     detected_health: tuple[str, ...] = ()  # motor health the driver exports beyond this description, if found
 
 
+@dataclass(frozen=True)
+class TestView:
+    """test/test_<robot>_hardware_interface.cpp: what the template cannot read off the model."""
+    detected_health: tuple[str, ...] = ()  # motor health the driver may export beyond the description
+
+
+def test_view(robot: RobotModel) -> TestView:
+    return TestView(detected_health=transports.get(robot.transport).detected_motor_health(robot.transport_options))
+
+
 IMU_INTERFACES = ("orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
                   "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
                   "linear_acceleration.z")
@@ -297,5 +307,5 @@ def xacro_view(robot: RobotModel) -> XacroView:
         mock_parameters=mock_parameters(robot),
         mock_note=_mock_note(robot),
         imu_initial=tuple((name, "1.0" if name == "orientation.w" else "0.0") for name in IMU_INTERFACES),
-        detected_health=transports.get(robot.transport).detected_motor_health(robot.transport_options),
+        detected_health=test_view(robot).detected_health,
     )

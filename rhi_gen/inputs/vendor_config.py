@@ -159,10 +159,14 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     hands = v.optional(data, "", "hands", lambda x, q: v.choice(x, q, HANDS), "none")
     options = transport.resolve_hands(v, hands, options, vendor=vendor, robot=robot)
     options = transport.resolve_options(v, options, vendor=vendor, robot=robot, motor_count=motor_count)
-    if params.motor_error_fault_mask and "error_code" not in transport.motor_health(options):
+    # EngineAI's error codes travel only with one release of its messages: the driver, compiled against the
+    # installed one, refuses a mask when its messages have none (system_driver.hpp: error_codes_travel()).
+    if params.motor_error_fault_mask and "error_code" not in (*transport.motor_health(options),
+                                                              *transport.detected_motor_health(options)):
         raise v.error("parameters.motor_error_fault_mask", f"the {transport.name} state carries no motor error "
                       "codes, so no error code can fault a motor",
-                      fix="remove motor_error_fault_mask (Unitree hg and AgiBot robots report error codes)")
+                      fix="remove motor_error_fault_mask (Unitree hg and AgiBot robots, and EngineAI robots with "
+                          "the native SDK's interface_protocol, report error codes)")
 
     joint_map = _joint_map(v, data["joint_map"], motor_count)
     transport.check_hand_map(v, options, joint_map)

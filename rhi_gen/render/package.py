@@ -21,7 +21,7 @@ from .driver_views import driver_view
 from .environment import make_environment
 from .fake_robot_views import fake_robot_view, has_fake_robot
 from .static_files import copy_static
-from .views import controllers_view, package_view, xacro_view
+from .views import controllers_view, package_view, test_view, xacro_view
 
 DEFAULT_PACKAGE = PackageInfo()
 
@@ -68,6 +68,7 @@ ROBOT_VIEWS: dict[str, Callable[[RobotModel], object]] = {
     "templates/robot/driver.cpp.j2": driver_view,
     "templates/robot/controllers.yaml.j2": controllers_view,
     "templates/robot/ros2_control.xacro.j2": xacro_view,
+    "templates/robot/test.cpp.j2": test_view,
     "templates/robot/description.urdf.xacro.j2": description_view,
     "templates/robot/urdf.j2": urdf_view,
     "templates/robot/launch.py.j2": launch_view,

@@ -227,6 +227,17 @@ class XacroView:
     health_states: tuple[str, ...] = HEALTH_STATE_INTERFACES  # the health GPIO's state interfaces
     estop: str = ESTOP_INTERFACE                              # ... and its command interface
     health_suffix: str = HEALTH_GPIO_SUFFIX                   # <gpio name="${name}_health">
+    detected_health: tuple[str, ...] = ()  # motor health the driver exports beyond this description, if found
+
+
+@dataclass(frozen=True)
+class TestView:
+    """test/test_<robot>_hardware_interface.cpp: what the template cannot read off the model."""
+    detected_health: tuple[str, ...] = ()  # motor health the driver may export beyond the description
+
+
+def test_view(robot: RobotModel) -> TestView:
+    return TestView(detected_health=transports.get(robot.transport).detected_motor_health(robot.transport_options))
 
 
 IMU_INTERFACES = ("orientation.x", "orientation.y", "orientation.z", "orientation.w", "angular_velocity.x",
@@ -296,4 +307,5 @@ def xacro_view(robot: RobotModel) -> XacroView:
         mock_parameters=mock_parameters(robot),
         mock_note=_mock_note(robot),
         imu_initial=tuple((name, "1.0" if name == "orientation.w" else "0.0") for name in IMU_INTERFACES),
+        detected_health=test_view(robot).detected_health,
     )

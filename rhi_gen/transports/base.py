@@ -183,6 +183,12 @@ class Transport(ABC):
         velocity and effort), in MOTOR_HEALTH_INTERFACES order: none unless the transport says."""
         return ()
 
+    def detected_motor_health(self, options: TransportOptions) -> tuple[str, ...]:
+        """Health interfaces only some releases of the vendor's messages carry (MOTOR_HEALTH_INTERFACES
+        order): not in the description; the driver finds them in the installed messages when it is compiled
+        and then exports them beyond the description (C++ DriverTransport::detected_motor_health())."""
+        return ()
+
     def command_interfaces(self, mode: str) -> tuple[str, ...]:
         """A joint's command interfaces: a position-commanded joint takes the full PD command, a
         velocity-commanded one (a wheel) no position or stiffness; gains only where they travel."""

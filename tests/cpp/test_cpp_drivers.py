@@ -50,6 +50,7 @@ from tests.support.cpp_build import (
     expand_description,
     label_yaml,
     message_include_flags,
+    message_variants,
     project_robot_labels,
     render_test_package,
     require_compiler,
@@ -77,7 +78,9 @@ RUN_MATRIX = (("humble", "plain"), ("humble", "tsan"), ("jazzy", "plain"), ("rol
               ("rolling", "asan_ubsan"), ("rolling", "tsan"))
 COMPILE_MATRIX = (("kilted", "plain"),)
 MATRIX = RUN_MATRIX + COMPILE_MATRIX
-ONLY = {("humble", "tsan"): {"unitree/g1", "agibot/x2"}}  # cells not built for every robot
+# cells not built for every robot; the native-SDK PM01 runs in every cell: its error codes and offline motors
+# are the only ones that arrive in a MotorDebug of their own
+ONLY = {("humble", "tsan"): {"unitree/g1", "agibot/x2", "engineai/pm01_native_sdk"}}
 # A feature robot (a harness test robot that sets authority, hands or take_control) shares every code path but
 # its feature with a reference robot: it skips plain Rolling, whose path its Rolling sanitizer cells run too.
 FEATURE_SKIPS = (("rolling", "plain"),)
@@ -234,6 +237,8 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
         expected.add("hands")
     if yaml_take_control(label_yaml(label)):  # AimDK's system-state services around the commands
         expected.add("take_control")
+    if vendor_msgs.ENGINEAI_NATIVE_SDK in message_variants(label):  # MotorDebug.offline: an offline motor faults
+        expected.add("offline")
     missing = expected - set(run.sections)
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 

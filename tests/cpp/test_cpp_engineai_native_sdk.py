@@ -47,7 +47,9 @@ def _pm01_sources(rb: RobotBuild) -> list[Path]:
     """Every generated source the PM01's targets compile (its driver, its fake robot and the shared fake robot
     main, its gtest) that includes interface_protocol."""
     pkg, m = rb.package_dir, rb.model
-    candidates = [*sorted((pkg / "src" / m.vendor).glob(f"{m.robot}*.cpp")), pkg / "src" / "fake_robot_main.cpp",
+    # its own sources by name: the harness's pm01_native_sdk shares the folder and the prefix
+    candidates = [pkg / "src" / m.vendor / f"{m.robot}.cpp", pkg / "src" / m.vendor / f"{m.robot}_fake_robot.cpp",
+                  pkg / "src" / "fake_robot_main.cpp",
                   pkg / "test" / f"test_{m.robot}_hardware_interface.cpp"]
     assert all(c.is_file() for c in candidates), candidates
     return [c for c in candidates if _includes_interface_protocol(c, [pkg / "include"])]

@@ -2,9 +2,10 @@
 
 Each mutation renders the reference G1 (unitree_dds hg, float, CRC) and PM01 (a ROS topic transport,
 double), or the robots it names (the harness's go2w test robot for the unitree go family, scara,
-x2), with one thing broken, builds tests/cpp/harness/driver_harness.cpp against the result (plain
-flavour) and runs it. The run must fail, with failed checks in the section that guards the broken
-property. A mutation changes a parsed or generated structure, never template text (tests/support/cpp_mutate.py):
+x2, pm01_native_sdk for the EngineAI native SDK's messages), with one thing broken, builds
+tests/cpp/harness/driver_harness.cpp against the result (plain flavour) and runs it. The run must fail,
+with failed checks in the section that guards the broken property. A mutation changes a parsed or
+generated structure, never template text (tests/support/cpp_mutate.py):
 - a data mutation (``SwapSlots``) changes the RobotModel before rendering;
 - a logic mutation (``TokenEdit``) changes one generated file, named by its package path, as C++
   tokens: the pattern must match exactly ``count`` times (a renamed identifier fails loudly with
@@ -47,8 +48,10 @@ ARM_SDK_ROBOTS = ("unitree/g1_upper_body",)  # tests/cpp/harness/robots/: author
 DEX3_ROBOTS = ("unitree/g1_dex3",)  # tests/cpp/harness/robots/: hands: dex3
 TAKE_CONTROL_ROBOTS = ("agibot/x2_take_control",)  # tests/cpp/harness/robots/: transport_options.take_control
 OMNIHAND_ROBOTS = ("agibot/x2_omnihand",)  # tests/cpp/harness/robots/: hands: omnihand
+# tests/cpp/harness/robots/: the PM01 built against the EngineAI native SDK's interface_protocol
+NATIVE_SDK_ROBOTS = ("engineai/pm01_native_sdk",)
 # every robot a mutation runs on passes unmodified
-CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS)
+CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS, *NATIVE_SDK_ROBOTS)
 THREADS_MS = 100
 
 # Generated files, by their path in the package (what the edits change, wherever the source lives).
@@ -73,6 +76,7 @@ UNITREE_DDS = TRANSPORT + "unitree_dds.hpp"
 UNITREE_DEX3 = TRANSPORT + "unitree_dex3.hpp"
 AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
 AGIBOT_SYSTEM_STATE = TRANSPORT + "agibot_system_state.hpp"
+ENGINEAI_TOPICS = TRANSPORT + "engineai_topics.hpp"
 AGIBOT_TOPICS = TRANSPORT + "agibot_topics.hpp"
 PM01_FAKE_ROBOT = "src/engineai/pm01_fake_robot.cpp"
 G1_FAKE_ROBOT = "src/unitree/g1_fake_robot.cpp"
@@ -217,6 +221,11 @@ MUTATIONS = (
     Mutation("motor_error_mask_ignored", "a motor error code with a bit of motor_error_fault_mask does not fault",
              TokenEdit(SYSTEM_DRIVER, "core_.parameters().motor_error_fault_mask) != 0U;", "0U) != 0U;"),
              ("diagnostics",), robots=("unitree/g1",)),
+    Mutation("engineai_offline_ignored", "the EngineAI transport drops the native SDK's MotorDebug offline flags: "
+             "an offline motor neither faults nor shows",
+             TokenEdit(ENGINEAI_TOPICS, "health.offline[slot] = msg.offline[slot] != 0U;",
+                       "health.offline[slot] = false;"),
+             ("offline",), robots=NATIVE_SDK_ROBOTS),
     Mutation("motor_groups_mixed_up", "every /diagnostics motor group status lists the first group's joints",
              TokenEdit(DRIVER_DIAGNOSTICS, "if (joint.motor_group != group) {",
                        "if (joint.motor_group != 0 * group) {"),

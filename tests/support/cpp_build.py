@@ -179,6 +179,18 @@ SANITIZER_ENV = {
     "UBSAN_OPTIONS": "halt_on_error=1:print_stacktrace=1",
     "TSAN_OPTIONS": "halt_on_error=1:second_deadlock_stack=1",
 }
+# Harness robots compiled against another release of their vendor messages (tests/support/vendor_msgs.py
+# VARIANTS) than the default: the PM01 against the EngineAI native SDK's interface_protocol, whose MotorDebug
+# carries voltage, error codes and offline motors. Their robot_data.hpp says so (VARIANT_MACROS).
+MESSAGE_VARIANTS: dict[str, tuple[str, ...]] = {"engineai/pm01_native_sdk": (vendor_msgs.ENGINEAI_NATIVE_SDK,)}
+VARIANT_MACROS = {vendor_msgs.ENGINEAI_NATIVE_SDK: "RHI_ENGINEAI_NATIVE_SDK"}
+
+
+def message_variants(label: str) -> tuple[str, ...]:
+    """The message releases the robot "vendor/robot" is compiled against instead of the default ones."""
+    return MESSAGE_VARIANTS.get(label, ())
+
+
 TRANSPORT_MACROS = {
     "unitree_dds": "RHI_TRANSPORT_UNITREE_DDS",
     "agibot_topics": "RHI_TRANSPORT_AGIBOT_TOPICS",
@@ -484,6 +496,8 @@ def robot_data_header(loaded, package_dir: Path, work_dir: Path) -> str:
         lines.append("#define RHI_TRANSPORT_ROS 1")
     if fake_robot_source(package_dir, model.vendor, model.robot) is not None:
         lines.append("#define RHI_FAKE_ROBOT 1  // its fake robot is linked in: section fake_robot")
+    for variant in message_variants(f"{model.vendor}/{model.robot}"):
+        lines.append(f"#define {VARIANT_MACROS[variant]} 1  // compiled against the {variant} messages")
     family = ""
     motor_modes: tuple[int, ...] = ()
     if model.transport == "unitree_dds":
@@ -907,7 +921,7 @@ def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
                            digest_parts=[rb.data_header, builder._harness],
                            package=rb.package_dir if fake else None,
                            name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
-                           transport=m.transport)
+                           transport=m.transport, variants=message_variants(rb.label))
 
 
 def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
@@ -921,7 +935,7 @@ def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
                           [rb.package_dir / "include", *toy_bus, *DISTROS[distro].include_dirs],
                           package=rb.package_dir,
                           name=f"driver_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
-                          transport=m.transport)
+                          transport=m.transport, variants=message_variants(rb.label))
     return obj, [obj]
 
 
@@ -939,14 +953,15 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
     driver_src = driver_source(rb.package_dir, m.vendor, m.robot)
     # A custom-transport driver's filled regions include the toy bus (tests/cpp/toy_bus/).
     toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
+    variants = message_variants(rb.label)
     steps = [builder.compile(driver_src, flags, [pkg_include, *toy_bus, *standins],
                              digest_parts=[builder._harness if toy_bus else ""], package=rb.package_dir,
-                             name=f"driver_{tag}", distro=distro, transport=m.transport)]
+                             name=f"driver_{tag}", distro=distro, transport=m.transport, variants=variants)]
     steps.append(compile_harness_object(builder, rb, flavour, distro))
     fake = fake_robot_source(rb.package_dir, m.vendor, m.robot)
     if fake is not None:
         steps.append(builder.compile(fake, flags, [pkg_include, *standins], package=rb.package_dir,
-                                     name=f"fake_{tag}", distro=distro, transport=m.transport))
+                                     name=f"fake_{tag}", distro=distro, transport=m.transport, variants=variants))
     if m.transport == "unitree_dds":
         family = unitree_family(m)
         header = crc_header(rb.package_dir, family)

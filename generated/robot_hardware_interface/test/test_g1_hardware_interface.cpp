@@ -183,7 +183,8 @@ const RobotUnderTest kRobot{
       {"position", "velocity", "effort", "temperature", "voltage", "error_code"}, 28},
   },
   "base_imu", "base_imu", "imu_in_pelvis",
-  184, 145};
+  184, 145,
+  {}};
 
 }  // namespace
 

@@ -158,7 +158,8 @@ const RobotUnderTest kRobot{
       {"position", "velocity", "effort", "temperature"}, 23},
   },
   "base_imu", "base_imu", "LINK_BASE",
-  106, 120};
+  106, 120,
+  {"voltage", "error_code"}};
 
 }  // namespace
 

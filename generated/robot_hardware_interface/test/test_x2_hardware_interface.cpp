@@ -206,7 +206,8 @@ const RobotUnderTest kRobot{
       {"position", "velocity", "effort", "error_code"}, 28},
   },
   "base_imu", "base_imu", "imu_in_torso_link",
-  134, 155};
+  134, 155,
+  {}};
 
 }  // namespace
 

@@ -120,9 +120,9 @@ public:
   }
 
   // "<hardware>: left leg motors": one entry per joint of motor group `group` of `robot` and
-  // field the state carries; ERROR when a motor is at or above temperature_error_c or reports an
-  // error code with a bit of error_fault_mask, WARN with another error code or at or above
-  // temperature_warn_c. `fields`: MotorHealthField bits.
+  // field the state carries; ERROR when the robot reports a motor offline, a motor is at or above
+  // temperature_error_c or reports an error code with a bit of error_fault_mask, WARN with another
+  // error code or at or above temperature_warn_c. `fields`: MotorHealthField bits.
   template<typename Frame>
   static void describe_motors(
     Status & status, const Frame & frame, const RobotSpec & robot, size_t group, uint8_t fields,
@@ -132,6 +132,7 @@ public:
     double hottest_c = 0.0;
     std::string in_error;
     std::string faulted;
+    std::string offline;
     for (size_t j = 0; j < robot.joint_count; ++j) {
       const JointSpec & joint = robot.joints[j];
       if (joint.motor_group != group) {
@@ -158,10 +159,18 @@ public:
           list += (list.empty() ? "" : ", ") + name + " (" + code + ")";
         }
       }
+      if ((fields & kMotorOffline) != 0U) {
+        add(status, name + " offline", frame.offline[slot] ? "true" : "false");
+        if (frame.offline[slot]) {
+          offline += (offline.empty() ? "" : ", ") + name;
+        }
+      }
     }
     const std::string hot =
       hottest == nullptr ? std::string() : std::string(hottest) + " at " + number(hottest_c) + " C";
-    if (hottest != nullptr && hottest_c >= limits.temperature_error_c) {
+    if (!offline.empty()) {
+      set(status, Status::ERROR, "motor offline: " + offline);
+    } else if (hottest != nullptr && hottest_c >= limits.temperature_error_c) {
       set(
         status, Status::ERROR, "motor too hot: " + hot + " (motor_temperature_error_c " +
         number(limits.temperature_error_c, "%.0f") + ")");

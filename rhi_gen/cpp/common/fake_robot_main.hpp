@@ -113,7 +113,8 @@ inline int run_fake_robot(int argc, char ** argv, std::unique_ptr<FakeRobot> rob
       "  --network-interface IF   the SDK's network interface (default lo; SDK transports)\n"
       "  --allow-network          start even where ROS 2 discovery or the SDK reaches other hosts\n"
       "Faults: ros2 param set /%s fault REQUEST   (or --ros-args -p fault:=REQUEST at start)\n"
-      "  REQUEST: silent | corrupt | hot <joint> <deg C> | error <joint> <code> | clear\n",
+      "  REQUEST: silent | corrupt | hot <joint> <deg C> | error <joint> <code> |\n"
+      "           offline <joint> | clear   (those its messages can carry)\n",
       argv[0], robot->transport(), robot->rate_hz(), robot->node_name());
     return 0;
   }

@@ -13,6 +13,9 @@
 //     HardwareComponentInterfaceParams &); the framework creates the handles from the description
 //     (on_export_*_interfaces()) and owns their values; the component gets its logger from it.
 //     The old on_init and the raw-pointer handles are deprecated (4.x, 5.x) or gone (6.x).
+//   - State interfaces the description does not list (unlisted_state_names(): motor health found
+//     in the installed messages): exported beside the listed ones on Humble,
+//     export_unlisted_state_interface_descriptions() from 4.34 on.
 //   - 5.10+ (Kilted, Lyrical, Rolling): the HardwareStatus hooks
 //     (ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS), which the driver overrides.
 // Drivers derive from SystemInterfaceAdapter, keep their values in plain doubles, and call
@@ -82,13 +85,33 @@ public:
     return initialize(info_, get_logger());
   }
 
+  // State interfaces of the description's joints that the description does not list
+  // (unlisted_state_names()): the framework creates their handles like the listed ones'.
+  std::vector<hardware_interface::InterfaceDescription>
+  export_unlisted_state_interface_descriptions() override
+  {
+    std::vector<hardware_interface::InterfaceDescription> unlisted;
+    for (const auto & joint : info_.joints) {
+      for (const std::string & name : unlisted_state_names(joint)) {
+        hardware_interface::InterfaceInfo interface{};
+        interface.name = name;
+        interface.initial_value = "0.0";
+        interface.data_type = "double";
+        unlisted.emplace_back(joint.name, interface);
+      }
+    }
+    return unlisted;
+  }
+
   std::vector<hardware_interface::StateInterface::ConstSharedPtr>
   on_export_state_interfaces() override
   {
     auto exported = hardware_interface::SystemInterface::on_export_state_interfaces();
     state_links_.clear();
     slow_state_links_.clear();
-    for (const auto * handles : {&joint_states_, &sensor_states_, &gpio_states_}) {
+    for (const auto * handles :
+      {&joint_states_, &sensor_states_, &gpio_states_, &unlisted_states_})
+    {
       for (const auto & handle : *handles) {
         const double * value = state_value(handle->get_prefix_name(), handle->get_interface_name());
         if (value != nullptr) {
@@ -146,6 +169,16 @@ public:
         }
       }
     }
+    // Interfaces the description does not list (unlisted_state_names()): the ResourceManager
+    // takes every exported interface and checks only that the listed ones are among them.
+    for (const auto & joint : info_.joints) {
+      for (const std::string & name : unlisted_state_names(joint)) {
+        double * value = state_value(joint.name, name);
+        if (value != nullptr) {
+          exported.emplace_back(joint.name, name, value);
+        }
+      }
+    }
     return exported;
   }
 
@@ -179,6 +212,13 @@ protected:
   // The driver-owned double behind an interface, nullptr for one the driver does not provide.
   virtual double * state_value(const std::string & prefix, const std::string & name) = 0;
   virtual double * command_value(const std::string & prefix, const std::string & name) = 0;
+  // State interfaces of joint `joint` the driver provides although the description does not list
+  // them (found in the installed messages when it was compiled); none by default.
+  virtual std::vector<std::string> unlisted_state_names(
+    const hardware_interface::ComponentInfo & /*joint*/) const
+  {
+    return {};
+  }
   // Whether the state double `value` changes only now and then (motor health): published by
   // publish_slow_state_values() when it changed, not by every read().
   virtual bool slow_state_value(const double * /*value*/) {return false;}

@@ -54,6 +54,9 @@ struct RobotUnderTest
   // What the generator counted, so that a data mix-up cannot pass as an empty list.
   size_t state_interface_count;
   size_t command_interface_count;
+  // Motor health the driver exports beyond the description where the installed vendor messages
+  // carry it (EngineAI: the native SDK's interface_protocol): every joint has it, or none does.
+  std::vector<std::string> detected_state_interfaces;
 };
 
 inline const std::vector<std::string> & imu_state_interfaces()
@@ -203,6 +206,18 @@ TEST_P(HardwareInterfaceTest, exports_every_state_interface)
     }
   }
   EXPECT_EQ(expected.size(), robot.state_interface_count);
+  for (const std::string & interface : robot.detected_state_interfaces) {
+    const bool found = !robot.joints.empty() &&
+      rm_->state_interface_exists(robot.joints.front().name + "/" + interface);
+    for (const TestJoint & joint : robot.joints) {
+      const std::string key = joint.name + "/" + interface;
+      EXPECT_EQ(rm_->state_interface_exists(key), found)
+        << key << ": the driver exports " << interface << " for every joint or for none";
+      if (found) {
+        expected.push_back(key);
+      }
+    }
+  }
   for (const std::string & interface : health_state_interfaces()) {
     const std::string key = health_gpio(robot) + "/" + interface;
     EXPECT_TRUE(rm_->state_interface_exists(key)) << "missing health state interface " << key;

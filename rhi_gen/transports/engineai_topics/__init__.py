@@ -3,7 +3,8 @@
 Facts from EngineAI's SDK: /hardware/joint_command (JointCommand: position, velocity,
 feed_forward_torque, torque, stiffness, damping, parallel_parser_type), /hardware/joint_state,
 /hardware/imu_info (ImuInfo), /hardware/motor_debug (MotorDebug: motor_temperature per motor, 50 Hz or
-more); best effort, volatile, keep last 3; the robot must be in joint_bridge mode.
+more; the native SDK's release of interface_protocol also voltage, error_code, offline); best effort,
+volatile, keep last 3; the robot must be in joint_bridge mode.
 """
 from __future__ import annotations
 
@@ -60,6 +61,11 @@ class EngineaiTopics(Transport):
     def motor_health(self, options: TransportOptions) -> tuple[str, ...]:
         """MotorDebug.motor_temperature (both interface_protocol versions; only the native SDK's has more)."""
         return ("temperature",)
+
+    def detected_motor_health(self, options: TransportOptions) -> tuple[str, ...]:
+        """The native SDK's MotorDebug voltage and error_code (its offline flag faults, no interface); the
+        driver exports them where the interface_protocol it is compiled against has them."""
+        return ("voltage", "error_code")
 
     def read_options(self, v: Validator, options: dict[str, Any], motor_count: int) -> EngineaiTopicsOptions:
         p = "transport_options"

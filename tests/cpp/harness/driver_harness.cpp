@@ -1059,7 +1059,7 @@ void test_parameters() {
   {
     rhi_check::Section section("parameters");
     const std::string description_timeout = std::to_string(kDescriptionTimeoutMs);
-    const std::vector<std::pair<const char*, const char*>> invalid = {
+    std::vector<std::pair<const char*, const char*>> invalid = {
         {"command_writer_period_us", "abc"}, {"command_writer_period_us", ""},
         {"command_writer_period_us", "-1"},  {"command_writer_period_us", "0"},
         {"command_writer_period_us", "12x"}, {"command_writer_period_us", "99999999999999999999999"},
@@ -1075,6 +1075,9 @@ void test_parameters() {
         // not above the default motor_temperature_warn_c (70)
         {"motor_temperature_error_c", "70"},
     };
+    if (!kMotorHealth[2]) {  // a mask where no error code travels: refused, not silently idle
+      invalid.emplace_back("motor_error_fault_mask", "12");
+    }
     fresh_process();
     rhi_fake::hw::Framework fw;
     for (const auto& [name, value] : invalid) {
@@ -1909,6 +1912,30 @@ void check_motor_groups(const DiagnosticArray& a, const std::string& hw, size_t 
   }
 }
 
+// The description of the motor fault checks: every frame processed, no dead link meanwhile, /diagnostics
+// every 20 ms.
+hardware_interface::HardwareInfo motor_fault_info() {
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["state_decimation"] = "1";
+  info.hardware_parameters["fault_timeout_ms"] = "60000";
+  info.hardware_parameters["diagnostics_period_ms"] = "20";
+  return info;
+}
+
+// One cycle of the motor fault checks: a state with its motor health (due after 10 ms), read(); while active
+// also the controller's `cmd`, write() and a send. Returns what read() said.
+hardware_interface::return_type motor_fault_step(Rig& rig, const StateFrame& f, const ControllerCommand& cmd) {
+  std::this_thread::sleep_for(std::chrono::milliseconds(12));  // a motor health frame is due
+  rig.t.deliver_state(f);
+  const hardware_interface::return_type r = rig.hw->read(kTime, kPeriod);
+  if (rig.active) {
+    apply_command(rig.ifs, cmd);
+    rig.hw->write(kTime, kPeriod);
+    rig.t.tick_writer();
+  }
+  return r;
+}
+
 // motor_error_fault_mask (0xc here): an error code with one of its bits faults an active robot like a hot
 // motor: read() ERROR with one line naming the joint and the code, its group's /diagnostics status ERROR,
 // damping-only after on_error. A code without those bits only shows (WARN); once the code cleared,
@@ -1917,10 +1944,7 @@ void check_motor_error_faults() {
   using hardware_interface::return_type;
   fresh_process();
   Rig rig;
-  hardware_interface::HardwareInfo info = make_hardware_info();
-  info.hardware_parameters["state_decimation"] = "1";
-  info.hardware_parameters["fault_timeout_ms"] = "60000";
-  info.hardware_parameters["diagnostics_period_ms"] = "20";
+  hardware_interface::HardwareInfo info = motor_fault_info();
   info.hardware_parameters["motor_error_fault_mask"] = "12";
   if (!setup(rig, info) || !activate(rig)) {
     teardown(rig);
@@ -1934,15 +1958,7 @@ void check_motor_error_faults() {
     return f;
   };
   const ControllerCommand cmd = distinct_command(6);
-  const auto step = [&rig, &cmd](const StateFrame& f) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(12));  // a motor health frame is due
-    rig.t.deliver_state(f);
-    const return_type r = rig.hw->read(kTime, kPeriod);
-    apply_command(rig.ifs, cmd);
-    rig.hw->write(kTime, kPeriod);
-    rig.t.tick_writer();
-    return r;
-  };
+  const auto step = [&rig, &cmd](const StateFrame& f) { return motor_fault_step(rig, f, cmd); };
   const std::string hw = info.name;
   const std::string joint = kJoints[0].name;
   CHECK(step(coded(801, 0.0)) == return_type::OK, "read() without motor error codes");
@@ -2094,6 +2110,85 @@ void test_diagnostics() {
   if (kMotorHealth[2]) {
     check_motor_error_faults();
   }
+}
+
+// ================================================================ offline (EngineAI native SDK)
+// A motor the robot reports offline (the native SDK's MotorDebug.offline): its group's /diagnostics
+// status ERROR naming the joint, also while inactive, where read() stays OK; once active, read() ERROR
+// and ERROR again, the health GPIO's fault, exactly one error line naming the joint, "offline" and
+// set_hardware_component_state; on_error holds damping only; configure + activate with the motor back:
+// OK, and the status OK again.
+void test_motor_offline() {
+  using hardware_interface::return_type;
+  rhi_check::Section section("offline");
+  fresh_process();
+  Rig rig;
+  const hardware_interface::HardwareInfo info = motor_fault_info();
+  if (!setup(rig, info)) {
+    teardown(rig);
+    return;
+  }
+  const size_t k = kJointCount - 1;  // the last joint: another group than the first one's
+  const std::string joint = kJoints[k].name;
+  const std::string hw = info.name;
+  const auto frame = [k](uint32_t code, bool offline) {
+    StateFrame f = coded_state(code);
+    f.temperature.fill(40.0);
+    f.error_code.fill(0.0);
+    f.offline.fill(false);
+    f.offline[kJoints[k].slot] = offline;
+    return f;
+  };
+  const ControllerCommand cmd = distinct_command(7);
+  const auto step = [&rig, &cmd](const StateFrame& f) { return motor_fault_step(rig, f, cmd); };
+  DiagnosticArray a;
+  CHECK(step(frame(901, true)) == return_type::OK, "read() of an inactive component with %s offline", joint.c_str());
+  if (next_diagnostics(a, "an offline motor, inactive")) {
+    check_status(a, hw, kJointMotorGroup[k], DiagnosticStatus::ERROR, ("motor offline: " + joint).c_str(),
+                 "a motor offline");
+    const DiagnosticStatus* m = status_named(a, hw + ": " + kJointMotorGroup[k]);
+    if (m != nullptr) {
+      CHECK(value_of(*m, joint + " offline") == "true", "the status lists %s offline", joint.c_str());
+      if (std::string(kJointMotorGroup[k - 1]) == kJointMotorGroup[k]) {
+        CHECK(value_of(*m, std::string(kJoints[k - 1].name) + " offline") == "false",
+              "and %s of its group online", kJoints[k - 1].name);
+      }
+    }
+    const DiagnosticStatus* first = status_named(a, hw + ": " + kJointMotorGroup[0]);
+    if (first != nullptr && std::string(kJointMotorGroup[0]) != kJointMotorGroup[k]) {
+      CHECK_EQ(static_cast<int>(first->level), static_cast<int>(DiagnosticStatus::OK),
+               "another group's status stays OK (%s)", first->message.c_str());
+    }
+  }
+  if (!activate(rig)) {
+    teardown(rig);
+    return;
+  }
+  CHECK(step(frame(902, false)) == return_type::OK, "read() of the active robot with every motor online");
+  rhi_fake::logs::clear();
+  CHECK(step(frame(903, true)) == return_type::ERROR, "read() of the active robot with %s offline", joint.c_str());
+  CHECK(rig.hw->read(kTime, kPeriod) == return_type::ERROR, "and keeps returning ERROR");
+  CHECK_EQ(health(rig, kFault), 1.0, "the health GPIO's fault while a motor is offline");
+  CHECK_EQ(rhi_fake::logs::count(Severity::Error), 1U, "one error line for the offline motor");
+  CHECK(rhi_fake::logs::contains("motor offline", Severity::Error) &&
+            rhi_fake::logs::contains(joint + " (SDK slot", Severity::Error) &&
+            rhi_fake::logs::contains("set_hardware_component_state", Severity::Error),
+        "the error line names the joint, says offline and how to recover");
+  enter_error(rig);
+  rig.t.tick_writer();
+  CommandFrame c;
+  if (last_command(rig.t, c, "motor offline, after on_error")) {
+    check_damping_only(c, "motor offline, after on_error");
+  }
+  if (recover(rig)) {
+    CHECK(step(frame(904, false)) == return_type::OK, "with the motor back online, configure + activate: read() OK");
+    if (next_diagnostics(a, "every motor back online")) {
+      const DiagnosticStatus* m = status_named(a, hw + ": " + kJointMotorGroup[k]);
+      CHECK(m != nullptr && m->level == DiagnosticStatus::OK, "the group's status is OK again (%s)",
+            m != nullptr ? m->message.c_str() : "missing");
+    }
+  }
+  teardown(rig);
 }
 
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
@@ -2710,6 +2805,7 @@ int main(int argc, char** argv) {
     if (selected(only, "faults")) test_faults();
     if (selected(only, "health")) test_health();
     if (selected(only, "diagnostics")) test_diagnostics();
+    if (kMotorOffline && selected(only, "offline")) test_motor_offline();
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
     if (selected(only, "crc")) test_crc_functions();
 #endif

@@ -46,6 +46,7 @@ struct StateFrame {
   std::array<double, N> temperature{};
   std::array<double, N> voltage{};
   std::array<double, N> error_code{};
+  std::array<bool, N> offline{};  // the robot reports the motor offline (EngineAI native SDK)
 };
 
 // What the fake robot received, per SDK slot.
@@ -265,7 +266,9 @@ inline std::vector<std::string> joint_commands(size_t k) {
 
 // Motor health per joint, after position, velocity and effort: what each robot's state message carries
 // (SDK_FACTS.md: hg MotorState_ temperature[0], vol, motorstate; go MotorState_ temperature; AimDK
-// hal JointState v1.0.0 error_code; EngineAI MotorDebug motor_temperature; the others nothing).
+// hal JointState v1.0.0 error_code; EngineAI MotorDebug motor_temperature, and with the native SDK's
+// interface_protocol (RHI_ENGINEAI_NATIVE_SDK, robot_data.hpp) voltage and error_code, which the driver
+// exports beyond the description; the others nothing). kMotorOffline: the message reports offline motors.
 constexpr std::array<const char*, 3> kMotorHealthNames = {"temperature", "voltage", "error_code"};
 #if defined(RHI_TRANSPORT_UNITREE_DDS) && defined(RHI_UNITREE_FAMILY_GO)
 constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
@@ -273,6 +276,8 @@ constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
 constexpr std::array<bool, 3> kMotorHealth = {true, true, true};
 #elif defined(RHI_TRANSPORT_AGIBOT_TOPICS)
 constexpr std::array<bool, 3> kMotorHealth = {false, false, true};
+#elif defined(RHI_TRANSPORT_ENGINEAI_TOPICS) && defined(RHI_ENGINEAI_NATIVE_SDK)
+constexpr std::array<bool, 3> kMotorHealth = {true, true, true};
 #elif defined(RHI_TRANSPORT_ENGINEAI_TOPICS)
 constexpr std::array<bool, 3> kMotorHealth = {true, false, false};
 #else
@@ -280,6 +285,11 @@ constexpr std::array<bool, 3> kMotorHealth = {false, false, false};
 #endif
 constexpr size_t kMotorHealthCount = (kMotorHealth[0] ? 1U : 0U) + (kMotorHealth[1] ? 1U : 0U) +
                                      (kMotorHealth[2] ? 1U : 0U);
+#if defined(RHI_ENGINEAI_NATIVE_SDK)
+constexpr bool kMotorOffline = true;
+#else
+constexpr bool kMotorOffline = false;
+#endif
 
 // The driver's health GPIO (README "See the driver's health"): its state interfaces and its e-stop.
 constexpr std::array<const char*, 7> kHealthStates = {"state_age_ms", "invalid_states", "stale_holds",

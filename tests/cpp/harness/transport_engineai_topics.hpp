@@ -1,9 +1,13 @@
 // Fake robot side of the engineai_topics transport (interface_protocol): JointState arrays
-// indexed by SDK slot, MotorDebug (motor temperatures, same index) with every state, ImuInfo,
-// JointCommand arrays out.
+// indexed by SDK slot, MotorDebug (motor temperatures, same index; with the EngineAI native SDK's
+// release also voltage, error_code and offline) with every state, ImuInfo, JointCommand arrays out.
+// Which release it is built against is said by robot_data.hpp (RHI_ENGINEAI_NATIVE_SDK) and checked
+// here against the message itself; the members of the other release are never compiled.
 #pragma once
 
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include <interface_protocol/msg/imu_info.hpp>
 #include <interface_protocol/msg/joint_command.hpp>
@@ -14,6 +18,17 @@
 
 namespace rhi_test {
 
+// The harness's own test of what the message has (not the driver's trait): tau_cmd is
+// engineai_ros2_workspace's, error_code the native SDK's.
+template <typename Debug, typename = void>
+struct HasTauCmd : std::false_type {};
+template <typename Debug>
+struct HasTauCmd<Debug, std::void_t<decltype(std::declval<Debug&>().tau_cmd)>> : std::true_type {};
+template <typename Debug, typename = void>
+struct HasErrorCode : std::false_type {};
+template <typename Debug>
+struct HasErrorCode<Debug, std::void_t<decltype(std::declval<Debug&>().error_code)>> : std::true_type {};
+
 class Transport : public RosTransportBase {
 public:
   using StateMsg = interface_protocol::msg::JointState;
@@ -22,14 +37,18 @@ public:
   using DebugMsg = interface_protocol::msg::MotorDebug;
   static constexpr const char* kName = "engineai_topics";
   static constexpr bool kHasGains = true;
+  static constexpr bool kNativeSdk = HasErrorCode<DebugMsg>::value;
+#if defined(RHI_ENGINEAI_NATIVE_SDK)
+  static_assert(kNativeSdk && !HasTauCmd<DebugMsg>::value, "built for the native SDK's MotorDebug, got another");
+#else
+  static_assert(!kNativeSdk && HasTauCmd<DebugMsg>::value, "built for engineai_ros2_workspace's MotorDebug");
+#endif
 
   Transport() {
     state_msg_.position.assign(N, 0.0);
     state_msg_.velocity.assign(N, 0.0);
     state_msg_.torque.assign(N, 0.0);
-    debug_msg_.tau_cmd.assign(N, 0.0);
-    debug_msg_.mos_temperature.assign(N, 0.0);
-    debug_msg_.motor_temperature.assign(N, 0.0);
+    size_debug(debug_msg_);
   }
 
   void prepare_state(const StateFrame& f) {
@@ -40,9 +59,8 @@ public:
       state_msg_.position[i] = f.q[i];
       state_msg_.velocity[i] = f.dq[i];
       state_msg_.torque[i] = f.tau[i];
-      debug_msg_.motor_temperature[i] = f.temperature[i];
-      debug_msg_.mos_temperature[i] = 20.0 + static_cast<double>(i);  // not exported
     }
+    fill_debug(f, debug_msg_);
     // ImuInfo: geometry_msgs quaternion x, y, z, w.
     imu_info_.quaternion.w = f.quat_wxyz[0];
     imu_info_.quaternion.x = f.quat_wxyz[1];
@@ -67,7 +85,7 @@ public:
     if (short_array) {
       bad.motor_temperature.pop_back();
     } else {
-      bad.motor_temperature[kJoints[0].slot] = std::numeric_limits<double>::quiet_NaN();
+      bad.motor_temperature[kJoints[0].slot] = std::numeric_limits<Celsius>::quiet_NaN();
     }
     return rhi_fake::ros::deliver<DebugMsg>(kMotorDebugTopic, bad);
   }
@@ -128,6 +146,39 @@ public:
   }
 
 private:
+  using Celsius = typename decltype(DebugMsg::motor_temperature)::value_type;
+
+  template <typename Debug>
+  static void size_debug(Debug& d) {
+    if constexpr (HasTauCmd<Debug>::value) {
+      d.tau_cmd.assign(N, 0.0);
+    }
+    d.mos_temperature.assign(N, 0.0F);
+    d.motor_temperature.assign(N, 0.0F);
+    if constexpr (HasErrorCode<Debug>::value) {
+      d.voltage.assign(N, 0.0F);
+      d.current.assign(N, 0.0F);
+      d.error_code.assign(N, 0);
+      d.offline.assign(N, 0U);
+      d.enable.assign(N, 1U);
+    }
+  }
+
+  // The frame's motor health (integers and quarter volts: exact as float32 too).
+  template <typename Debug>
+  static void fill_debug(const StateFrame& f, Debug& d) {
+    for (size_t i = 0; i < N; ++i) {
+      d.motor_temperature[i] = static_cast<Celsius>(f.temperature[i]);
+      d.mos_temperature[i] = static_cast<Celsius>(20.0 + static_cast<double>(i));  // not exported
+      if constexpr (HasErrorCode<Debug>::value) {
+        d.voltage[i] = static_cast<float>(f.voltage[i]);
+        d.current[i] = 1.5F;  // not exported
+        d.error_code[i] = static_cast<int32_t>(static_cast<uint32_t>(f.error_code[i]));
+        d.offline[i] = f.offline[i] ? 1U : 0U;
+      }
+    }
+  }
+
   StateMsg state_msg_;
   DebugMsg debug_msg_;
   ImuMsg imu_info_;

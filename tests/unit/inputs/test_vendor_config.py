@@ -210,9 +210,11 @@ def test_yaml_booleans_as_joint_names_stay_names(tmp_path):
     assert [n for n, _ in cfg.joint_map] == ["on", "no", "j3"]
 
 
-@pytest.mark.parametrize("robot", ["unitree/g1", "agibot/x2"])
+@pytest.mark.parametrize("robot", ["unitree/g1", "agibot/x2", "engineai/pm01"])
 def test_motor_error_fault_mask_is_read_where_error_codes_travel(tmp_path, robot):
-    """Hex as in a vendor's error table, 0 (codes never fault) by default, at most 32 bits."""
+    """Hex as in a vendor's error table, 0 (codes never fault) by default, at most 32 bits. EngineAI: only the
+    native SDK's interface_protocol carries error codes, which the driver finds when it is compiled (it refuses
+    a mask in on_init without them), so the YAML takes it."""
     source = (REPO / "robots" / f"{robot}.yaml").read_text(encoding="utf-8")
     assert load_config(REPO / "robots" / f"{robot}.yaml").parameters.motor_error_fault_mask == 0
     with_block = source if "\nparameters:\n" in source else source.replace("\njoint_map:", "\nparameters:\njoint_map:")

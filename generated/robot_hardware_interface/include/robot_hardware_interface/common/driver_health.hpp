@@ -149,6 +149,7 @@ enum MotorHealthField : uint8_t
   kMotorTemperature = 1U << 0,  // "temperature": winding temperature [deg C]
   kMotorVoltage = 1U << 1,      // "voltage": supply voltage [V]
   kMotorErrorCode = 1U << 2,    // "error_code": the motor's error bits (vendor), 0: none
+  kMotorOffline = 1U << 3,      // the robot reports the motor unreachable (no interface: a fault)
 };
 
 // The bits of an error_code value (a motor health double holds the vendor's unsigned code).
@@ -175,6 +176,7 @@ struct MotorHealthFrame
   std::array<double, N> temperature{};
   std::array<double, N> voltage{};
   std::array<double, N> error_code{};
+  std::array<bool, N> offline{};  // kMotorOffline: not an interface, it faults an active robot
   uint64_t sequence{0};  // 0: never published
 
   // The double of field `name` of `slot`, nullptr for an unknown name or a field not in `fields`.

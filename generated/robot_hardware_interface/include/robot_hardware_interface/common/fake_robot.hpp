@@ -66,6 +66,7 @@ struct FakeRobotModel
   FakeJointDynamics<N> dynamics;
   std::array<double, N> temperature{};  // [deg C]
   std::array<uint32_t, N> error_code{};  // the vendor's bit field, 0 = no error
+  std::array<bool, N> offline{};  // the robot reports the motor unreachable
   FakeFaults faults;
   uint64_t steps{0};  // physics steps since start: transports publish slower messages every k-th
 };
@@ -81,9 +82,11 @@ public:
   // whether another one can be chosen (--network-interface).
   virtual const char * network_interface() const {return "";}
   virtual bool set_network_interface(const char * /*name*/) {return false;}
-  // Whether its messages carry motor temperatures (`hot` needs them) and error codes (`error`).
+  // Whether its messages carry motor temperatures (`hot` needs them), error codes (`error`) and
+  // offline motors (`offline`).
   virtual bool carries_temperatures() const {return false;}
   virtual bool carries_error_codes() const {return false;}
+  virtual bool carries_offline() const {return false;}
   // Create the subscriptions and publishers and size every message (no allocation afterwards).
   virtual void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) = 0;
   // Before each physics step: commands received on another thread (an SDK's) into the model.
@@ -267,7 +270,7 @@ private:
     return result;
   }
 
-  // silent | corrupt | hot <joint> <deg C> | error <joint> <code> | clear
+  // silent | corrupt | hot <joint> <deg C> | error <joint> <code> | offline <joint> | clear
   bool apply_fault(const char * request, std::string * why)
   {
     char verb[16] = {0};
@@ -286,18 +289,29 @@ private:
       model_.faults = FakeFaults{};
       model_.temperature.fill(kFakeAmbientTemperature);
       model_.error_code.fill(0U);
+      model_.offline.fill(false);
       return true;
     }
     const bool hot = std::strcmp(verb, "hot") == 0;
     const bool error = std::strcmp(verb, "error") == 0;
-    if (n != 3 || (!hot && !error)) {
-      *why = "expected one of: silent, corrupt, hot <joint> <deg C>, error <joint> <code>, clear";
+    const bool offline = n == 2 && std::strcmp(verb, "offline") == 0;
+    if (!offline && (n != 3 || (!hot && !error))) {
+      *why = "expected one of: silent, corrupt, hot <joint> <deg C>, error <joint> <code>, "
+        "offline <joint>, clear";
       return false;
     }
     const FakeJointSpec * spec = find_joint(joint);
     if (spec == nullptr) {
       *why = std::string("no joint named '") + joint + "' on this robot";
       return false;
+    }
+    if (offline) {
+      if (!transport_->carries_offline()) {
+        *why = std::string("the ") + transport_->name() + " messages carry no offline motors";
+        return false;
+      }
+      model_.offline[spec->slot] = true;
+      return true;
     }
     char * end = nullptr;
     if (hot && !transport_->carries_temperatures()) {

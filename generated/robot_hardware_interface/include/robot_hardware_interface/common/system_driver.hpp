@@ -60,6 +60,12 @@ public:
   virtual bool carries_gains() const {return true;}
   // The MotorHealthField bits the robot's state carries (DriverCore::publish_motor_health()).
   virtual uint8_t motor_health() const {return 0U;}
+  // Those of them the generated description cannot list because they were found in the vendor's
+  // installed messages when the driver was compiled (a message package with two releases): their
+  // interfaces are exported for every joint of the description that does not list them.
+  virtual uint8_t detected_motor_health() const {return 0U;}
+  // Why no motor error code travels, for the refusal of a motor_error_fault_mask.
+  virtual const char * no_error_codes_reason() const {return "its messages carry none";}
 };
 
 // The ros2_control face of every driver: SystemInterface lifecycle and read()/write() around a
@@ -420,19 +426,26 @@ private:
            core_.parameters().motor_error_fault_mask) != 0U;
   }
 
-  // read(), on a new motor health frame: the first driven slot too hot or in error, -1 for none.
+  // Whether the robot reports the motor of `slot` offline (where the state says so).
+  bool motor_offline(size_t slot) const
+  {
+    return (motor_health_ & kMotorOffline) != 0U && core_.motor_health().offline[slot];
+  }
+
+  // read(), on a new motor health frame: the first driven slot offline, too hot or in error, -1
+  // for none.
   ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE int faulty_motor_slot()
   {
     for (const size_t slot : core_.slots().mapped_slots()) {
-      if (motor_too_hot(slot) || motor_in_error(slot)) {
+      if (motor_offline(slot) || motor_too_hot(slot) || motor_in_error(slot)) {
         return static_cast<int>(slot);
       }
     }
     return -1;
   }
 
-  // read() of an active robot with a motor too hot or in error: ERROR (ros2_control stops the
-  // controllers and on_error holds every joint damping-only), said once per activation.
+  // read() of an active robot with a motor offline, too hot or in error: ERROR (ros2_control
+  // stops the controllers and on_error holds every joint damping-only), said once per activation.
   ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE return_type report_motor_fault()
   {
     if (motor_fault_reported_) {
@@ -441,6 +454,13 @@ private:
     motor_fault_reported_ = true;
     const auto slot = static_cast<size_t>(faulty_slot_);
     const char * joint = core_.slots().slot_joint_names()[slot];
+    if (motor_offline(slot)) {
+      RCLCPP_ERROR(
+        core_.logger(), "motor offline: the robot reports %s (SDK slot %zu) offline: read() "
+        "returns ERROR, ros2_control stops the controllers and the joints are held damping-only. "
+        "Check the motor's power and cable, then %s", joint, slot, recovery_hint().c_str());
+      return return_type::ERROR;
+    }
     if (!motor_too_hot(slot)) {
       RCLCPP_ERROR(
         core_.logger(), "motor error: %s (SDK slot %zu) reports error code 0x%" PRIX64 ", a bit of "
@@ -512,7 +532,7 @@ private:
     motor_health_ = transport_->motor_health();
     health_gpio_ = info.gpios.empty() ? info.name + "_health" : info.gpios.front().name;
     if (!read_driver_parameters(log, info.hardware_parameters, core_.parameters()) ||
-      !description_is_driven(info))
+      !error_codes_travel() || !description_is_driven(info))
     {
       return CallbackReturn::ERROR;
     }
@@ -549,6 +569,48 @@ private:
       p.fault_timeout_ms,
       p.enable_monitor ? "on" : "off");
     return CallbackReturn::SUCCESS;
+  }
+
+  // A motor_error_fault_mask needs error codes: refused (one line) where the messages this driver
+  // was compiled against carry none, rather than never faulting.
+  bool error_codes_travel() const
+  {
+    const uint64_t mask = core_.parameters().motor_error_fault_mask;
+    if (mask == 0U || (motor_health_ & kMotorErrorCode) != 0U) {
+      return true;
+    }
+    RCLCPP_ERROR(
+      core_.logger(), "parameter motor_error_fault_mask 0x%" PRIX64 ": the %s state this driver "
+      "was built with carries no motor error codes (%s), so no code can fault a motor; set it to "
+      "0 (vendor YAML parameters.motor_error_fault_mask, or the <param> of the description)", mask,
+      transport_->name(), transport_->no_error_codes_reason());
+    return false;
+  }
+
+  // Interfaces of the motor health the transport found in the installed messages
+  // (detected_motor_health()) that joint `joint` of the description does not list: exported
+  // beyond the description, so the same description serves either release of the messages.
+  std::vector<std::string> unlisted_state_names(
+    const hardware_interface::ComponentInfo & joint) const override
+  {
+    std::vector<std::string> names;
+    const uint8_t detected = transport_->detected_motor_health();
+    if (detected == 0U || core_.slots().slot_of(joint.name) < 0) {
+      return names;
+    }
+    for (const MotorHealthInterface & interface : kMotorHealthInterfaces) {
+      if ((detected & interface.field) == 0U) {
+        continue;
+      }
+      bool listed = false;
+      for (const auto & described : joint.state_interfaces) {
+        listed = listed || described.name == interface.name;
+      }
+      if (!listed) {
+        names.emplace_back(interface.name);
+      }
+    }
+    return names;
   }
 
   // Every joint, interface and sensor of the description must be one this driver drives: a typo

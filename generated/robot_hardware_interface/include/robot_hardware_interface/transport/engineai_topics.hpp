@@ -8,7 +8,8 @@
 #define ROBOT_HARDWARE_INTERFACE__TRANSPORT__ENGINEAI_TOPICS_HPP_
 
 // EngineAI robots over ROS 2 topics (interface_protocol): JointCommand / JointState arrays indexed
-// by motor slot, ImuInfo for the IMU, MotorDebug for the motor temperatures. The robot must be in
+// by motor slot, ImuInfo for the IMU, MotorDebug for the motor health (temperatures; with the
+// native SDK's release also voltages, error codes and offline motors). The robot must be in
 // joint_bridge mode.
 //
 // EngineAI publishes two releases of interface_protocol whose MotorDebug differs:
@@ -50,6 +51,18 @@ template<typename Debug>
 struct MotorDebugHasTauCmd<Debug, std::void_t<decltype(std::declval<Debug &>().tau_cmd)>>
   : std::true_type {};
 
+// Whether a MotorDebug has the native SDK's per-motor health: voltage, error_code and offline
+// (all three or none: engineai_robotics_native_sdk's release has them, engineai_ros2_workspace's
+// does not). With them the driver exports `voltage` and `error_code` per joint beyond the
+// description (DriverTransport::detected_motor_health()) and an offline motor faults the robot.
+template<typename Debug, typename = void>
+struct MotorDebugHasMotorHealth : std::false_type {};
+template<typename Debug>
+struct MotorDebugHasMotorHealth<Debug, std::void_t<
+    decltype(std::declval<Debug &>().voltage), decltype(std::declval<Debug &>().error_code),
+    decltype(std::declval<Debug &>().offline)>>
+  : std::true_type {};
+
 // transport_options of the vendor YAML.
 struct EngineaiTopicsOptions
 {
@@ -68,6 +81,11 @@ class EngineaiTopicsTransport final : public DriverTransport<N, T>
   using JointState = interface_protocol::msg::JointState;
   using ImuInfo = interface_protocol::msg::ImuInfo;
   using MotorDebug = interface_protocol::msg::MotorDebug;
+  // The MotorHealthField bits the MotorDebug carries: the temperature (both releases), and the
+  // native SDK's voltage, error code and offline flag.
+  static constexpr uint8_t kDebugHealth = MotorDebugHasMotorHealth<MotorDebug>::value ?
+    static_cast<uint8_t>(kMotorTemperature | kMotorVoltage | kMotorErrorCode | kMotorOffline) :
+    static_cast<uint8_t>(kMotorTemperature);
 
 public:
   explicit EngineaiTopicsTransport(const EngineaiTopicsOptions & options)
@@ -76,7 +94,17 @@ public:
   }
 
   const char * name() const override {return "engineai_topics";}
-  uint8_t motor_health() const override {return kMotorTemperature;}
+  uint8_t motor_health() const override {return kDebugHealth;}
+  // The description lists the temperature (both releases carry it); the rest is found here.
+  uint8_t detected_motor_health() const override
+  {
+    return static_cast<uint8_t>(kDebugHealth & ~kMotorTemperature);
+  }
+  const char * no_error_codes_reason() const override
+  {
+    return "its interface_protocol MotorDebug has no error_code (engineai_ros2_workspace's "
+           "release; the EngineAI native SDK's has one)";
+  }
 
   bool configure(DriverCore<N, T> & core, const rclcpp::Node::SharedPtr & node) override
   {
@@ -158,31 +186,70 @@ private:
     core_->monitor().check_state_latency(start);
   }
 
-  // Executor thread: MotorDebug (50 Hz or more), motor_temperature indexed by motor slot like
-  // JointState. Both interface_protocol versions have it (float64 in engineai_ros2_workspace,
-  // float32 in the native SDK). A message too short or with a non-finite temperature is dropped:
-  // the last good temperatures stay.
+  // Executor thread: MotorDebug (50 Hz or more), arrays indexed by motor slot like JointState.
+  // Both interface_protocol versions have motor_temperature (float64 in engineai_ros2_workspace,
+  // float32 in the native SDK); the native SDK's also voltage, error_code and offline. A message
+  // too short or with a non-finite value is dropped: the last good health stays.
   void on_motor_debug(const MotorDebug & msg)
   {
     const int64_t now_ns = steady_ns(std::chrono::steady_clock::now());
     if (!core_->motor_health_due(now_ns)) {
       return;
     }
-    if (msg.motor_temperature.size() < N) {
-      reject_motor_debug("motor_temperature shorter than the motor count");
+    const char * problem = motor_debug_problem(msg);
+    if (problem != nullptr) {
+      reject_motor_debug(problem);
       return;
-    }
-    for (const size_t slot : core_->slots().mapped_slots()) {
-      if (!all_finite(msg.motor_temperature[slot])) {
-        reject_motor_debug("non-finite temperature in a driven motor slot");
-        return;
-      }
     }
     auto & health = core_->motor_health_frame();
     for (const size_t slot : core_->slots().mapped_slots()) {
       health.temperature[slot] = static_cast<double>(msg.motor_temperature[slot]);
     }
+    fill_native_health(msg, health);
     core_->publish_motor_health(now_ns);
+  }
+
+  // Why a MotorDebug cannot be used, nullptr when it can. A template on the message type: the
+  // native SDK's members are only compiled where the message has them.
+  template<typename Debug>
+  const char * motor_debug_problem(const Debug & msg) const
+  {
+    if (msg.motor_temperature.size() < N) {
+      return "motor_temperature shorter than the motor count";
+    }
+    if constexpr (MotorDebugHasMotorHealth<Debug>::value) {
+      if (msg.voltage.size() < N || msg.error_code.size() < N || msg.offline.size() < N) {
+        return "voltage/error_code/offline shorter than the motor count";
+      }
+    }
+    for (const size_t slot : core_->slots().mapped_slots()) {
+      if (!all_finite(msg.motor_temperature[slot])) {
+        return "non-finite temperature in a driven motor slot";
+      }
+      if constexpr (MotorDebugHasMotorHealth<Debug>::value) {
+        if (!all_finite(msg.voltage[slot])) {
+          return "non-finite voltage in a driven motor slot";
+        }
+      }
+    }
+    return nullptr;
+  }
+
+  // The native SDK's voltage, error code (int32: its bits as the vendor's unsigned code) and
+  // offline flag; nothing with engineai_ros2_workspace's MotorDebug.
+  template<typename Debug>
+  void fill_native_health(const Debug & msg, MotorHealthFrame<N> & health) const
+  {
+    if constexpr (MotorDebugHasMotorHealth<Debug>::value) {
+      for (const size_t slot : core_->slots().mapped_slots()) {
+        health.voltage[slot] = static_cast<double>(msg.voltage[slot]);
+        health.error_code[slot] = static_cast<double>(static_cast<uint32_t>(msg.error_code[slot]));
+        health.offline[slot] = msg.offline[slot] != 0U;
+      }
+    } else {
+      static_cast<void>(msg);
+      static_cast<void>(health);
+    }
   }
 
   void reject_motor_debug(const char * reason)

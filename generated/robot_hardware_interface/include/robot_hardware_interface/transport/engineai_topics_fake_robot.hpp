@@ -13,7 +13,8 @@
 // step), ImuInfo at rest (every step) and MotorDebug temperatures (every 10th step: 50 Hz at the
 // robot's 500 Hz), on the driver's topics with the driver's QoS. `corrupt` publishes JointState
 // arrays one motor short, which the driver must drop. MotorDebug is filled as far as the release of
-// interface_protocol it is built against has the members (engineai_topics.hpp).
+// interface_protocol it is built against has the members (engineai_topics.hpp): with the native
+// SDK's, also a 48 V supply, the `error` codes and the `offline` motors.
 
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +41,7 @@ class EngineaiTopicsFakeRobot final : public FakeRobotTransport<N>
   using ImuInfo = interface_protocol::msg::ImuInfo;
   using MotorDebug = interface_protocol::msg::MotorDebug;
   static constexpr uint64_t kMotorDebugEvery = 10;
+  static constexpr double kFakeSupplyVoltage = 48.0;  // [V], the native SDK's MotorDebug only
 
 public:
   explicit EngineaiTopicsFakeRobot(const EngineaiTopicsOptions & options)
@@ -49,6 +51,9 @@ public:
 
   const char * name() const override {return "engineai_topics";}
   bool carries_temperatures() const override {return true;}
+  // The native SDK's MotorDebug only (engineai_topics.hpp: MotorDebugHasMotorHealth).
+  bool carries_error_codes() const override {return MotorDebugHasMotorHealth<MotorDebug>::value;}
+  bool carries_offline() const override {return MotorDebugHasMotorHealth<MotorDebug>::value;}
 
   void configure(const rclcpp::Node::SharedPtr & node, FakeRobotModel<N> & model) override
   {
@@ -93,6 +98,7 @@ public:
       for (size_t i = 0; i < N; ++i) {
         debug_.motor_temperature[i] = static_cast<Celsius>(model.temperature[i]);
       }
+      fill_native_health(model, debug_);
       debug_publisher_->publish(debug_);
     }
   }
@@ -111,6 +117,29 @@ private:
     }
     debug.mos_temperature.assign(N, static_cast<Celsius>(kFakeAmbientTemperature));
     debug.motor_temperature.assign(N, static_cast<Celsius>(kFakeAmbientTemperature));
+    if constexpr (MotorDebugHasMotorHealth<Debug>::value) {
+      using Volts = typename decltype(Debug::voltage)::value_type;
+      debug.voltage.assign(N, static_cast<Volts>(kFakeSupplyVoltage));
+      debug.current.assign(N, 0.0F);
+      debug.error_code.assign(N, 0);
+      debug.offline.assign(N, 0U);
+      debug.enable.assign(N, 1U);
+    }
+  }
+
+  // The native SDK's error codes (the vendor's bits, int32 on the wire) and offline flags.
+  template<typename Debug>
+  static void fill_native_health(const FakeRobotModel<N> & model, Debug & debug)
+  {
+    if constexpr (MotorDebugHasMotorHealth<Debug>::value) {
+      for (size_t i = 0; i < N; ++i) {
+        debug.error_code[i] = static_cast<int32_t>(model.error_code[i]);
+        debug.offline[i] = model.offline[i] ? 1U : 0U;
+      }
+    } else {
+      static_cast<void>(model);
+      static_cast<void>(debug);
+    }
   }
 
   // A JointCommand too short for every motor is ignored whole, as a malformed frame.

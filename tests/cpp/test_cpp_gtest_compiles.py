@@ -36,13 +36,14 @@ from tests.support.cpp_build import (
     ENV_C,
     HARNESS_ROBOTS,
     WARNING_FLAGS,
+    label_yaml,
     message_include_flags,
     project_robot_labels,
     require_compiler,
     run_compiler,
     standin_flags,
 )
-from tests.support.repo import REPO, copy_project
+from tests.support.repo import copy_project
 
 PACKAGE = "robot_hardware_interface"
 LABELS = project_robot_labels(extra_robots=False)  # vendor/robot of robots/*/*.yaml
@@ -113,10 +114,7 @@ def _flags(package: Path, distro: str, label: str) -> list[str]:
 
 
 def _transport(label: str) -> str:
-    path = REPO / "robots" / f"{label}.yaml"
-    if not path.is_file():
-        path = HARNESS_ROBOTS / f"{label}.yaml"
-    return str(yaml.safe_load(path.read_text(encoding="utf-8"))["transport"])
+    return str(yaml.safe_load(label_yaml(label).read_text(encoding="utf-8"))["transport"])
 
 
 def _skip_reason(label: str) -> str | None:

@@ -35,7 +35,7 @@ class PackageInfo:
 class Parameters:
     """hardware_parameters written into the ros2_control description (spec defaults)."""
     network_interface: str = "lo"
-    enable_monitor: bool = True
+    enable_monitor: bool = False          # console timing warnings; overruns are on /diagnostics anyway
     command_writer_period_us: int = 2000
     state_decimation: int = 1
     state_timeout_ms: int = 100

@@ -25,7 +25,8 @@ ARGUMENT_HELP = {
     "use_fake_robot": "true: also start <robot>_fake_robot, a simulated robot that answers the driver on the "
                       "robot's own topics, with ROS 2 discovery kept on this host (no robot needed)",
     "network_interface": "network interface of the robot (driver parameter network_interface)",
-    "enable_monitor": "true: the driver logs latency and rates (driver parameter enable_monitor)",
+    "enable_monitor": "true: the driver warns on the console about read/write latency and send jitter above "
+                      "its thresholds, for timing bring-up (driver parameter enable_monitor)",
     "command_writer_period_us": "period of the command writer in microseconds",
     "state_decimation": "process every n-th state message",
     "state_timeout_ms": "milliseconds without state before the driver holds the joints",

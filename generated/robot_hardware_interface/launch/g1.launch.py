@@ -29,7 +29,7 @@ ARGUMENTS = [
     ('network_interface', 'eth0',
      'network interface of the robot (driver parameter network_interface)'),
     ('enable_monitor', 'true',
-     'true: the driver logs latency and rates (driver parameter enable_monitor)'),
+     'true: the driver warns on the console about read/write latency and send jitter above its thresholds, for timing bring-up (driver parameter enable_monitor)'),
     ('command_writer_period_us', '2000',
      'period of the command writer in microseconds'),
     ('state_decimation', '1',

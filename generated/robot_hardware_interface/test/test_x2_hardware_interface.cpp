@@ -29,7 +29,7 @@ using robot_hardware_interface_test::RobotUnderTest;
 const RobotUnderTest kRobot{
   "x2_hardware", "robot_hardware_interface/agibot/X2HardwareInterface",
   "      <param name=\"network_interface\">lo</param>\n"
-  "      <param name=\"enable_monitor\">true</param>\n"
+  "      <param name=\"enable_monitor\">false</param>\n"
   "      <param name=\"command_writer_period_us\">2000</param>\n"
   "      <param name=\"state_decimation\">1</param>\n"
   "      <param name=\"state_timeout_ms\">100</param>\n"

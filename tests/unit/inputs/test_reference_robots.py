@@ -222,10 +222,37 @@ def test_x2_yaml_groups_match_aimdk_order():
 def test_x2_yaml_slot_comments():
     """Each joint_map line carries a '# group[i]' comment consistent with its slot."""
     text = (REPO / "robots" / "agibot" / "x2.yaml").read_text(encoding="utf-8")
-    lines = text.split("joint_map:", 1)[1].splitlines()[1:]
+    after = text.split("joint_map:", 1)[1].splitlines()[1:]
+    lines = after[:next((i for i, ln in enumerate(after) if ln and not ln[0].isspace()), len(after))]
     expected = [f"{g}[{i}]" for g, js in X2_GROUPS for i in range(len(js))]
     comments = [ln.split("#", 1)[1].strip() for ln in lines if ln.strip() and ":" in ln]
     assert comments == expected
+
+
+@pytest.mark.parametrize("vendor,robot", [("unitree", "g1"), ("agibot", "x2"), ("engineai", "pm01")])
+def test_reference_robot_has_default_gains_for_every_joint(vendor, robot):
+    """A position-only controller on a reference robot is never limp, and the driver's start-up line
+    about joints without default stiffness (a warning on every launch) never comes."""
+    cfg = _yaml(vendor, robot)
+    gains = cfg["default_gains"]
+    assert set(gains) == set(cfg["joint_map"])
+    assert all(g["stiffness"] > 0 and g["damping"] > 0 for g in gains.values())
+
+
+def test_x2_and_pm01_default_gains_are_the_vendor_examples():
+    """X2: AimDK motocontrol.cpp (hip 40/4, yaw 30/3, knee 80/8, ankle 40/4 and 20/2, waist 20/4, arms
+    and head 20/2); PM01: the native SDK's pd_stand task in motor order."""
+    x2 = _yaml("agibot", "x2")["default_gains"]
+    assert x2["left_hip_yaw_joint"] == {"stiffness": 30.0, "damping": 3.0}
+    assert x2["right_knee_joint"] == {"stiffness": 80.0, "damping": 8.0}
+    assert x2["left_ankle_roll_joint"] == {"stiffness": 20.0, "damping": 2.0}
+    assert x2["waist_pitch_joint"] == {"stiffness": 20.0, "damping": 4.0}
+    assert x2["head_pitch_joint"] == {"stiffness": 20.0, "damping": 2.0}
+    pm01 = _yaml("engineai", "pm01")["default_gains"]
+    stiffness = [pm01[name]["stiffness"] for name in PM01_ORDER]
+    damping = [pm01[name]["damping"] for name in PM01_ORDER]
+    assert stiffness == [200, 200, 380, 450, 400, 200] * 2 + [200] + [250] * 10 + [100]
+    assert damping == [5, 5, 5, 5, 2, 2] * 2 + [1] * 12
 
 
 def test_pm01_yaml_is_identity():

@@ -37,7 +37,7 @@ def test_base_config_loads_with_transport_defaults(tmp_path):
     assert cfg.joint_map == (("j1", 0), ("j2", 1), ("j3", 2))
     assert cfg.float_type == "double"
     assert cfg.parameters.command_writer_period_us == 2000 and cfg.parameters.state_decimation == 1
-    assert cfg.parameters.enable_monitor is True and cfg.parameters.network_interface == "lo"
+    assert cfg.parameters.enable_monitor is False and cfg.parameters.network_interface == "lo"
     assert cfg.parameters.state_timeout_ms == 100 and cfg.parameters.fault_timeout_ms == 1000
     options = cfg.transport_options
     assert isinstance(options, GenericTopicsOptions)

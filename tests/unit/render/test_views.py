@@ -79,7 +79,7 @@ def test_xacro_view_interfaces_comments_and_defaults():
     grouped = replace(robot.joints[0], group="leg--x", group_position=3)
     view = xacro_view(replace(robot, joints=(grouped, robot.joints[1])))
     assert view.macro_name == "arm_ros2_control" and view.joint_count == 2
-    assert view.defaults == {"name": "arm_hardware", "network_interface": "lo", "enable_monitor": "true",
+    assert view.defaults == {"name": "arm_hardware", "network_interface": "lo", "enable_monitor": "false",
                              "command_writer_period_us": "2000", "state_decimation": "1", "state_timeout_ms": "100",
                              "fault_timeout_ms": "1000", "first_state_timeout_ms": "10000", "calibration_file": "",
                              "is_async": "false", "rw_rate": "0"}

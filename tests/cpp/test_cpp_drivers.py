@@ -39,7 +39,7 @@ import subprocess
 import pytest
 
 from rhi_gen.render.fake_robot_views import has_fake_robot
-from tests.support import shared_use, vendor_msgs
+from tests.support import selected, shared_use, vendor_msgs
 from tests.support.cpp_build import (
     HARNESS_ROBOTS,
     OVERLAP_WORKERS,
@@ -100,13 +100,15 @@ def in_cell(label: str, distro: str, flavour: str) -> bool:
 
 DISTRO = "humble"  # what the headers-alone checks compile against
 
-def build_and_run_cells(reference, builder) -> tuple[shared_use.Recorded, shared_use.Recorded]:
+def build_and_run_cells(reference, builder, labels: set[str] | None = None
+                        ) -> tuple[shared_use.Recorded, shared_use.Recorded]:
     """({(robot, distro, flavour): (link result, [compile results])}, {same key: HarnessRun} for every RUN cell
-    that linked). Each cell is built, then run, by one of OVERLAP_WORKERS threads: the builder keeps the
-    compilers to one per core, and a run (which mostly waits on its timers) overlaps the next compiles.
-    Each cell records what it read of ../shared (only the X2's: tests/support/shared_use.py)."""
-    jobs = [(b, distro, flavour) for b in reference.builds for distro, flavour in MATRIX
-            if in_cell(b.label, distro, flavour)]
+    that linked), for the robots ``labels`` (None: all). Each cell is built, then run, by one of OVERLAP_WORKERS
+    threads: the builder keeps the compilers to one per core, and a run (which mostly waits on its timers)
+    overlaps the next compiles. Each cell records what it read of ../shared (only the X2's:
+    tests/support/shared_use.py)."""
+    jobs = [(b, distro, flavour) for b in selected.keep(reference.builds, labels, key=lambda b: b.label)
+            for distro, flavour in MATRIX if in_cell(b.label, distro, flavour)]
 
     def build_and_run(job):
         b, distro, flavour = job
@@ -127,8 +129,9 @@ def build_and_run_cells(reference, builder) -> tuple[shared_use.Recorded, shared
 
 
 @pytest.fixture(scope="module")
-def harness_cells(reference, cpp_builder):
-    return build_and_run_cells(reference, cpp_builder)
+def harness_cells(reference, cpp_builder, request):
+    """Every cell of the robots the session's selected tests name (all of them in a whole run)."""
+    return build_and_run_cells(reference, cpp_builder, selected.values(request, "label"))
 
 
 @pytest.fixture(scope="module")

@@ -30,7 +30,7 @@ import pytest
 import yaml
 
 from rhi_gen.cli import main
-from tests.support import shared_use, vendor_msgs
+from tests.support import selected, shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DISTROS,
     ENV_C,
@@ -134,10 +134,10 @@ class GtestResult:
 
 
 @pytest.fixture(scope="module")
-def results(package_dir, tmp_path_factory) -> shared_use.Recorded:
-    """Per robot and distro, 2 in parallel: build with the driver (the stand-in
-    ResourceManager creates the plugin from the registry PLUGINLIB_EXPORT_CLASS fills, as pluginlib
-    loads it), link with gmock_main and run."""
+def results(package_dir, tmp_path_factory, request) -> shared_use.Recorded:
+    """Per robot and distro the session's selected tests name (all in a whole run), 2 in parallel: build
+    with the driver (the stand-in ResourceManager creates the plugin from the registry PLUGINLIB_EXPORT_CLASS
+    fills, as pluginlib loads it), link with gmock_main and run."""
     if not _toolchain_ok():
         return shared_use.Recorded({})  # every test then fails in require_toolchain()
     out_dir = tmp_path_factory.mktemp("gtest_bin")
@@ -172,7 +172,8 @@ def results(package_dir, tmp_path_factory) -> shared_use.Recorded:
         return result
 
     with ThreadPoolExecutor(max_workers=2) as pool:
-        return shared_use.Recorded(dict(pool.map(one, JOBS)))
+        wanted = selected.values(request, "label")
+        return shared_use.Recorded(dict(pool.map(one, selected.keep(JOBS, wanted, key=lambda job: job[0]))))
 
 
 def test_every_robot_has_a_gtest(package_dir):

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import shared_use, vendor_msgs
+from tests.support import selected, shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DEFAULT_DISTRO,
     OVERLAP_WORKERS,
@@ -363,10 +363,11 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
 
 
 @pytest.fixture(scope="module")
-def outcomes(tmp_path_factory):
+def outcomes(tmp_path_factory, request):
+    """The control (None) and the mutations the session's selected tests name (all of them in a whole run)."""
     builder = session_builder(tmp_path_factory)
     tmp_root = tmp_path_factory.mktemp("mutations")
-    jobs = [None, *MUTATIONS]
+    jobs = selected.keep([None, *MUTATIONS], selected.values(request, "mutation", unparametrized=None))
 
     def run_one(job):  # each job records what it read of ../shared (the X2's mutations), not the whole fixture
         with shared_use.recording() as used:

@@ -26,7 +26,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import vendor_msgs
+from tests.support import selected, vendor_msgs
 from tests.support.cpp_build import (
     DISTROS,
     STANDINS,
@@ -39,6 +39,7 @@ from tests.support.cpp_build import (
 
 SELFTEST_DIR = STANDINS / "selftest"
 SELFTEST = SELFTEST_DIR / "selftest.cpp"
+VENDOR_SELFTEST = SELFTEST_DIR / "selftest_vendor_msgs.cpp"
 COMPILE_FAIL = sorted((SELFTEST_DIR / "compile_fail").glob("*.cpp"))
 
 VENDOR_CHECKS = "selftest: vendor messages checked"
@@ -136,49 +137,77 @@ def _snippet_meta(snippet: Path) -> tuple[str | None, list[str]]:
 SNIPPET_CASES = [(s, d) for s in COMPILE_FAIL for d in _snippet_meta(s)[1]]
 
 
-@pytest.fixture(scope="session")
-def selftest_binaries(tmp_path_factory) -> dict[tuple[str, str], tuple[Path, subprocess.CompletedProcess]]:
-    """The self-test of every distro in every flavour, in parallel: {(distro, flavour): (binary, result)}."""
+def _build_selftests(out_dir: Path, source: Path, jobs: list[tuple[str, str]], vendor_messages: bool):
+    """``source`` built for every (distro, flavour) of ``jobs``, in parallel: {(distro, flavour): (binary, result)}."""
     cxx = require_compiler()
-    out_dir = tmp_path_factory.mktemp("standins")
-    vendor = [] if vendor_msgs.missing_reason() else ["-DRHI_SELFTEST_VENDOR_MSGS"]
 
     def build(job: tuple[str, str]):
         distro, flavour = job
-        binary = out_dir / f"selftest_{distro}_{flavour}"
-        cmd = [cxx, *_cxxflags(distro, vendor_messages=True), *vendor, *FLAVOURS[flavour], str(SELFTEST),
+        binary = out_dir / f"{source.stem}_{distro}_{flavour}"
+        cmd = [cxx, *_cxxflags(distro, vendor_messages=vendor_messages), *FLAVOURS[flavour], str(source),
                "-o", str(binary)]
         return job, binary, subprocess.run(cmd, capture_output=True, text=True, env=ENV_C)
 
-    jobs = [(d, f) for d in DISTROS for f in FLAVOURS]
     with ThreadPoolExecutor(max_workers=WORKERS) as pool:
         results = list(pool.map(build, jobs))
     return {job: (binary, proc) for job, binary, proc in results}
+
+
+def _run_selftest(binary: Path) -> subprocess.CompletedProcess:
+    env = {**ENV_C, "ASAN_OPTIONS": "abort_on_error=0:halt_on_error=1",
+           "UBSAN_OPTIONS": "halt_on_error=1:print_stacktrace=1",
+           "TSAN_OPTIONS": "halt_on_error=1:second_deadlock_stack=1"}
+    return subprocess.run([str(binary)], capture_output=True, text=True, env=env, timeout=300)
+
+
+SELFTEST_JOBS = [(d, f) for d in DISTROS for f in FLAVOURS]
+
+
+@pytest.fixture(scope="session")
+def selftest_binaries(tmp_path_factory, request) -> dict[tuple[str, str], tuple[Path, subprocess.CompletedProcess]]:
+    """The self-test of every distro in every flavour the session's selected tests name: the ROS 2 wheels'
+    messages only, so it builds and runs the same with or without ../shared."""
+    jobs = selected.keep(SELFTEST_JOBS, selected.values(request, ("distro", "flavour")))
+    return _build_selftests(tmp_path_factory.mktemp("standins"), SELFTEST, jobs, vendor_messages=False)
+
+
+@pytest.fixture(scope="session")
+def vendor_selftest_binaries(tmp_path_factory, request
+                             ) -> dict[tuple[str, str], tuple[Path, subprocess.CompletedProcess]]:
+    """The vendor messages' self-test of every distro and flavour the session's selected tests name (none
+    without ../shared: the tests skip)."""
+    if vendor_msgs.missing_reason():
+        return {}
+    jobs = selected.keep(SELFTEST_JOBS, selected.values(request, ("distro", "flavour")))
+    return _build_selftests(tmp_path_factory.mktemp("standins_vendor"), VENDOR_SELFTEST, jobs, vendor_messages=True)
+
+
+def _check_selftest_run(binary: Path, build: subprocess.CompletedProcess, what: str) -> str:
+    assert build.returncode == 0, f"{what} does not compile:\n{build.stderr[-8000:]}"
+    run = _run_selftest(binary)
+    assert run.returncode == 0, f"{what} failed:\n{run.stdout}\n{run.stderr[-8000:]}"
+    assert re.search(r"selftest: all \d+ checks passed", run.stdout), run.stdout
+    assert "WARNING: ThreadSanitizer" not in run.stderr, run.stderr[-8000:]
+    return run.stdout
 
 
 @pytest.mark.parametrize("flavour", list(FLAVOURS))
 @pytest.mark.parametrize("distro", list(DISTROS))
 def test_selftest_compiles_and_passes(selftest_binaries, distro, flavour):
     binary, build = selftest_binaries[(distro, flavour)]
-    assert build.returncode == 0, f"selftest ({distro}, {flavour}) does not compile:\n{build.stderr[-8000:]}"
-    env = {**ENV_C, "ASAN_OPTIONS": "abort_on_error=0:halt_on_error=1",
-           "UBSAN_OPTIONS": "halt_on_error=1:print_stacktrace=1",
-           "TSAN_OPTIONS": "halt_on_error=1:second_deadlock_stack=1"}
-    run = subprocess.run([str(binary)], capture_output=True, text=True, env=env, timeout=300)
-    assert run.returncode == 0, f"selftest ({distro}, {flavour}) failed:\n{run.stdout}\n{run.stderr[-8000:]}"
-    assert re.search(r"selftest: all \d+ checks passed", run.stdout), run.stdout
-    assert "WARNING: ThreadSanitizer" not in run.stderr, run.stderr[-8000:]
+    _check_selftest_run(binary, build, f"selftest ({distro}, {flavour})")
 
 
-def test_selftest_checks_the_vendor_messages(selftest_binaries):
+@pytest.mark.parametrize("flavour", list(FLAVOURS))
+@pytest.mark.parametrize("distro", list(DISTROS))
+def test_selftest_checks_the_vendor_messages(vendor_selftest_binaries, distro, flavour):
     """The rosidl-generated aimdk_msgs / interface_protocol and the ROS hooks with them (needs ../shared)."""
     reason = vendor_msgs.missing_reason()
     if reason:
         pytest.skip(reason)
-    binary, build = selftest_binaries[("humble", "plain")]
-    assert build.returncode == 0, build.stderr[-8000:]
-    run = subprocess.run([str(binary)], capture_output=True, text=True, env=ENV_C, timeout=300)
-    assert run.returncode == 0 and VENDOR_CHECKS in run.stdout, run.stdout[-3000:] + run.stderr[-3000:]
+    binary, build = vendor_selftest_binaries[(distro, flavour)]
+    stdout = _check_selftest_run(binary, build, f"vendor message selftest ({distro}, {flavour})")
+    assert VENDOR_CHECKS in stdout, stdout[-3000:]
 
 
 def _headers_to_check(distro: str) -> list[str]:

@@ -17,13 +17,16 @@ import sys
 import time
 
 import pytest
+import yaml
 
+from rhi_gen import transports
 from rhi_gen.render.fake_robot_views import has_fake_robot
 from tests.support import vendor_msgs
 from tests.support.cpp_build import (
     DISTROS,
     FLAVOURS,
     fake_robot_source,
+    label_yaml,
     message_variants,
     project_robot_labels,
     run_parallel,
@@ -94,54 +97,72 @@ def test_fake_robot_sources_compile_with_werror(reference, cpp_builder, distro):
     run_parallel(builds, lambda rb: build_objects(cpp_builder, rb, distro))
 
 
-def test_fake_robot_executable_guards_the_network(reference, cpp_builder):
-    for rb in _buildable(reference):
-        binary = build_executable(cpp_builder, rb, RUN_DISTRO)
-        name = f"{rb.model.robot}_fake_robot"
+def _transport(label: str) -> str:
+    return str(yaml.safe_load(label_yaml(label).read_text(encoding="utf-8"))["transport"])
 
-        helped = run(binary, "--help")
-        assert helped.returncode == 0 and "--allow-network" in helped.stdout
-        assert f"ros2 param set /{name} fault" in helped.stdout
 
-        sdk = rb.model.transport == "unitree_dds"
-        if sdk:  # the SDK on lo: it starts whatever ROS 2 discovery does; another interface is refused
-            eth = run(binary, "--network-interface", "eth0")
-            assert eth.returncode == 2 and "network interface 'eth0'" in eth.stderr, eth
-            assert len(eth.stderr.strip().splitlines()) == 1 and "--allow-network" in eth.stderr
-        else:
-            refused = run(binary)
-            assert refused.returncode == 2, refused
-            lines = refused.stderr.strip().splitlines()
-            assert len(lines) == 1 and lines[0].startswith(f"{name}: refusing to start: "), refused.stderr
-            assert "ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST" in lines[0] and "--allow-network" in lines[0]
-            assert "use_fake_robot:=true" in lines[0]
-            subnet = run(binary, env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET", "ROS_LOCALHOST_ONLY": "1"})
-            assert subnet.returncode == 2 and "ROS_AUTOMATIC_DISCOVERY_RANGE is SUBNET" in subnet.stderr
-            peers = run(binary, env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST", "ROS_STATIC_PEERS": "10.0.0.7"})
-            assert peers.returncode == 2 and "ROS_STATIC_PEERS" in peers.stderr
-            no_interface = run(binary, "--network-interface", "lo", env={"ROS_LOCALHOST_ONLY": "1"})
-            assert no_interface.returncode == 2 and "has none" in no_interface.stderr
+# Known before anything is rendered (the YAML's transport), so each robot is a test of its own: only the X2's
+# read ../shared (its messages), and a fresh clone re-runs only those (tests/support/fresh_clone_selection.py).
+EXECUTABLE_LABELS = [label for label in project_robot_labels()
+                     if transports.get(_transport(label)).fake_robot_header and not message_variants(label)]
 
-        bad_rate = run(binary, "--rate", "0", env={"ROS_LOCALHOST_ONLY": "1"})
-        assert bad_rate.returncode == 2 and "--rate 0: expected a rate in Hz" in bad_rate.stderr
-        unknown = run(binary, "--fast", env={"ROS_LOCALHOST_ONLY": "1"})
-        assert unknown.returncode == 2 and "unknown argument '--fast'" in unknown.stderr
 
-        # Discovery on this host (or --allow-network): it starts and spins until stopped.
-        starts = [({"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}, ()), ({"ROS_LOCALHOST_ONLY": "1"}, ()),
-                  ({}, ("--allow-network",)), ({"ROS_LOCALHOST_ONLY": "1"}, ("--ros-args", "-p", "x:=1"))]
-        if sdk:
-            starts += [({}, ()), ({}, ("--network-interface", "eth0", "--allow-network"))]
-        # all at once: each must still be running half a second later (a refusal exits at once)
-        started = [subprocess.Popen([str(binary), *args], env={**CLEAN_ENV, **env}, stdout=subprocess.DEVNULL,
-                                    stderr=subprocess.PIPE, text=True) for env, args in starts]
-        time.sleep(0.5)
-        exited = [(starts[i], p.poll(), p) for i, p in enumerate(started)]
-        for p in started:
-            p.kill()
-        for (env, args), code, p in exited:
-            _, err = p.communicate()
-            assert code is None, f"{name} {args} with {env} exited with {code}: {err}"
+def test_executable_labels_are_the_robots_with_a_fake_robot(reference):
+    assert fake_robot_labels(reference) == EXECUTABLE_LABELS
+
+
+@pytest.mark.parametrize("label", EXECUTABLE_LABELS)
+def test_fake_robot_executable_guards_the_network(reference, cpp_builder, label):
+    rb = reference.build(label)
+    reason = vendor_msgs.skip_reason(rb.model.transport)
+    if reason:
+        pytest.skip(reason)
+    binary = build_executable(cpp_builder, rb, RUN_DISTRO)
+    name = f"{rb.model.robot}_fake_robot"
+
+    helped = run(binary, "--help")
+    assert helped.returncode == 0 and "--allow-network" in helped.stdout
+    assert f"ros2 param set /{name} fault" in helped.stdout
+
+    sdk = rb.model.transport == "unitree_dds"
+    if sdk:  # the SDK on lo: it starts whatever ROS 2 discovery does; another interface is refused
+        eth = run(binary, "--network-interface", "eth0")
+        assert eth.returncode == 2 and "network interface 'eth0'" in eth.stderr, eth
+        assert len(eth.stderr.strip().splitlines()) == 1 and "--allow-network" in eth.stderr
+    else:
+        refused = run(binary)
+        assert refused.returncode == 2, refused
+        lines = refused.stderr.strip().splitlines()
+        assert len(lines) == 1 and lines[0].startswith(f"{name}: refusing to start: "), refused.stderr
+        assert "ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST" in lines[0] and "--allow-network" in lines[0]
+        assert "use_fake_robot:=true" in lines[0]
+        subnet = run(binary, env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET", "ROS_LOCALHOST_ONLY": "1"})
+        assert subnet.returncode == 2 and "ROS_AUTOMATIC_DISCOVERY_RANGE is SUBNET" in subnet.stderr
+        peers = run(binary, env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST", "ROS_STATIC_PEERS": "10.0.0.7"})
+        assert peers.returncode == 2 and "ROS_STATIC_PEERS" in peers.stderr
+        no_interface = run(binary, "--network-interface", "lo", env={"ROS_LOCALHOST_ONLY": "1"})
+        assert no_interface.returncode == 2 and "has none" in no_interface.stderr
+
+    bad_rate = run(binary, "--rate", "0", env={"ROS_LOCALHOST_ONLY": "1"})
+    assert bad_rate.returncode == 2 and "--rate 0: expected a rate in Hz" in bad_rate.stderr
+    unknown = run(binary, "--fast", env={"ROS_LOCALHOST_ONLY": "1"})
+    assert unknown.returncode == 2 and "unknown argument '--fast'" in unknown.stderr
+
+    # Discovery on this host (or --allow-network): it starts and spins until stopped.
+    starts = [({"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}, ()), ({"ROS_LOCALHOST_ONLY": "1"}, ()),
+              ({}, ("--allow-network",)), ({"ROS_LOCALHOST_ONLY": "1"}, ("--ros-args", "-p", "x:=1"))]
+    if sdk:
+        starts += [({}, ()), ({}, ("--network-interface", "eth0", "--allow-network"))]
+    # all at once: each must still be running half a second later (a refusal exits at once)
+    started = [subprocess.Popen([str(binary), *args], env={**CLEAN_ENV, **env}, stdout=subprocess.DEVNULL,
+                                stderr=subprocess.PIPE, text=True) for env, args in starts]
+    time.sleep(0.5)
+    exited = [(starts[i], p.poll(), p) for i, p in enumerate(started)]
+    for p in started:
+        p.kill()
+    for (env, args), code, p in exited:
+        _, err = p.communicate()
+        assert code is None, f"{name} {args} with {env} exited with {code}: {err}"
 
 
 def test_benchmark_reports_rate_and_jitter(tmp_path):

@@ -161,7 +161,8 @@ ENV_C = {**os.environ, "LC_ALL": "C", "LANG": "C"}
 FLAVOURS: dict[str, tuple[str, ...]] = {
     # -O2 is how a release build of the driver runs
     "plain": ("-O2",),
-    "asan_ubsan": ("-O1", "-g1", "-fno-omit-frame-pointer", "-fsanitize=address,undefined",
+    # -O0 under ASan: every access instrumented, and the objects compile in about two thirds of -O1's time
+    "asan_ubsan": ("-O0", "-g1", "-fno-omit-frame-pointer", "-fsanitize=address,undefined",
                    "-fno-sanitize-recover=all"),
     "tsan": ("-O1", "-g1", "-fsanitize=thread"),
 }

@@ -95,6 +95,13 @@ def clone(tmp_path_factory, request):
     return dest, env
 
 
+def slowest(stdout: str, count: int) -> list[str]:
+    """The first ``count`` lines of pytest's durations table in ``stdout`` (what the clone spent its time on)."""
+    lines = stdout.splitlines()
+    start = next((i for i, line in enumerate(lines) if "slowest" in line and "durations" in line), None)
+    return [] if start is None else [line for line in lines[start + 1:start + 1 + count] if line.strip()]
+
+
 def run(cmd: str, cwd: Path, env: dict[str, str]) -> tuple[subprocess.CompletedProcess, float]:
     start = time.monotonic()
     proc = subprocess.run(["bash", "-c", cmd], cwd=cwd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
@@ -126,6 +133,8 @@ def test_readme_test_command_passes_in_a_fresh_clone(clone, report):
     assert proc.returncode == 0, f"exit {proc.returncode} after {seconds:.0f} s:\n{tail}"
     summary = proc.stdout.strip().splitlines()[-1]
     report(f"fresh clone: {summary}")
+    for line in slowest(proc.stdout, 8):
+        report(f"fresh clone, slowest: {line}")
     if fresh_clone_selection.ENV in env:
         chosen = json.loads(Path(env[fresh_clone_selection.ENV]).read_text(encoding="utf-8"))
         report(f"fresh clone: ran {len(chosen['run'])} of this session's {len(chosen['outer'])} tests (every test "

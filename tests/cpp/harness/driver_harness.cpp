@@ -2245,6 +2245,8 @@ bool group_published(const std::array<bool, N>& present, size_t group) {
 struct RobotThreads {
   std::atomic<bool> stop{false};
   std::atomic<uint64_t> produced{0}, commands_seen{0}, torn_commands{0}, crc_errors{0};
+  // The codes of the commands that arrived whole (every group published and carrying that code).
+  std::array<std::atomic<bool>, kCodes> arrived_whole{};
   std::thread producer, monitor;
 
   void start() {
@@ -2264,12 +2266,24 @@ struct RobotThreads {
       while (!stop.load()) {
         if (t.last_command(c)) {
           commands_seen.fetch_add(1);
+          int whole = -1;  // the code every group carries; -2 once two groups differ or one is missing
           for (size_t g = 0; g < kGroupCount; ++g) {
             // One message per group: a group whose first message is still on its way (the writer
             // publishes the groups one after another) is not torn, just not there yet.
-            if (group_published(c.present, g) && !consistent_group(c.q, &c.present, g, nullptr)) {
+            int code = -1;
+            const bool published = group_published(c.present, g);
+            const bool consistent = published && consistent_group(c.q, &c.present, g, &code);
+            if (published && !consistent) {
               torn_commands.fetch_add(1);
             }
+            if (!consistent) {
+              whole = -2;
+            } else if (code >= 0 && whole != -2) {  // a group without a position joint carries no code
+              whole = (whole == -1 || whole == code) ? code : -2;
+            }
+          }
+          if (whole >= 0) {
+            arrived_whole[static_cast<size_t>(whole)].store(true);
           }
 #if defined(RHI_TRANSPORT_UNITREE_DDS)
           // One snapshot: every last_raw_command() call refreshes the buffer, so comparing the CRC
@@ -2383,6 +2397,11 @@ void test_threads(int duration_ms) {
 // framework's handles and switches their claims, the transport's threads deliver state and send
 // commands, and the handler is paused (the current cycle finished) before on_deactivate.
 #if RHI_FAKE_HI_MAJOR >= 4
+// Above every state code the producer reaches in a 300 ms section (2000 frames a second), so that a
+// command holding the measured pose is never taken for a checked command, and below kCodes for the
+// checked commands of such a section (one every 4th cycle of 2 ms).
+constexpr uint32_t kAsyncFirstCode = 900;
+
 void test_async(int duration_ms) {
   rhi_check::Section section("async");
   fresh_process();
@@ -2422,7 +2441,7 @@ void test_async(int duration_ms) {
   };
   const std::vector<std::string> all = interface_names([](size_t, const std::string&) { return true; });
   uint64_t cycles = 0, states_seen = 0, torn_states = 0, switches = 0;
-  uint32_t code = 500;
+  uint32_t code = kAsyncFirstCode;
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(duration_ms);
   // The controllers run while read()/write() may: ros2_control locks its handles one at a time, so a
   // controller may see (and write() may take) joints of two cycles. What the driver guarantees is
@@ -2477,7 +2496,20 @@ void test_async(int duration_ms) {
   CHECK(robot.commands_seen.load() > 5, "the robot received commands while read()/write() ran asynchronously");
   CHECK(switches > 0, "claims were switched while the asynchronous thread ran");
   CHECK_EQ(torn_states, 0U, "torn state frames seen by the controllers");
-  CHECK_EQ(robot.torn_commands.load(), 0U, "torn command frames received by the robot");
+  // What the driver guarantees here: a command written while read()/write() were idle reaches the
+  // robot as one frame. Torn frames in between are counted above, not failed: ros2_control's
+  // per-handle locks let write() take joints of two cycles (seen under load, with ASan and TSan).
+  // Each checked command stays for four cycles; under load the writer may not send one of them
+  // before the next replaces it, so half of them must arrive whole (a driver that tears its frames
+  // delivers none whole).
+  uint32_t whole_checked = 0;
+  for (uint32_t c = kAsyncFirstCode + 1; c <= code; ++c) {
+    whole_checked += robot.arrived_whole[c % kCodes].load() ? 1U : 0U;
+  }
+  const uint32_t checked_codes = code - kAsyncFirstCode;
+  std::printf("async: %u of %u checked commands reached the robot whole\n", whole_checked, checked_codes);
+  CHECK(checked_codes >= 5, "the controllers wrote checked commands");
+  CHECK(whole_checked * 2 >= checked_codes, "the checked commands reached the robot whole");
   CHECK_EQ(robot.crc_errors.load(), 0U, "commands with a wrong CRC");
   CHECK_EQ(read_errors.load(), 0U, "read() errors on the asynchronous thread (the link stayed up)");
   CHECK_EQ(write_errors.load(), 0U, "write() errors on the asynchronous thread");

@@ -17,7 +17,6 @@ import sys
 import time
 
 import pytest
-import yaml
 
 from rhi_gen import transports
 from rhi_gen.render.fake_robot_views import has_fake_robot
@@ -26,7 +25,7 @@ from tests.support.cpp_build import (
     DISTROS,
     FLAVOURS,
     fake_robot_source,
-    label_yaml,
+    label_transport,
     message_variants,
     project_robot_labels,
     run_parallel,
@@ -97,14 +96,10 @@ def test_fake_robot_sources_compile_with_werror(reference, cpp_builder, distro):
     run_parallel(builds, lambda rb: build_objects(cpp_builder, rb, distro))
 
 
-def _transport(label: str) -> str:
-    return str(yaml.safe_load(label_yaml(label).read_text(encoding="utf-8"))["transport"])
-
-
 # Known before anything is rendered (the YAML's transport), so each robot is a test of its own: only the X2's
 # read ../shared (its messages), and a fresh clone re-runs only those (tests/support/fresh_clone_selection.py).
 EXECUTABLE_LABELS = [label for label in project_robot_labels()
-                     if transports.get(_transport(label)).fake_robot_header and not message_variants(label)]
+                     if transports.get(label_transport(label)).fake_robot_header and not message_variants(label)]
 
 
 def test_executable_labels_are_the_robots_with_a_fake_robot(reference):

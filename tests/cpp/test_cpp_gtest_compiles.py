@@ -36,7 +36,7 @@ from tests.support.cpp_build import (
     ENV_C,
     HARNESS_ROBOTS,
     WARNING_FLAGS,
-    label_yaml,
+    label_transport,
     message_include_flags,
     project_robot_labels,
     require_compiler,
@@ -110,16 +110,12 @@ def _flags(package: Path, distro: str, label: str) -> list[str]:
     """Only the robot's own vendor messages on the include path (the X2's come from ../shared, the others' not)."""
     # WARNING_FLAGS has -Wpedantic: the generated CMakeLists.txt adds -Wall -Wextra -Wpedantic.
     return [*WARNING_FLAGS, *standin_flags(distro), f"-I{package / 'include'}",
-            *message_include_flags(_transport(label))]
-
-
-def _transport(label: str) -> str:
-    return str(yaml.safe_load(label_yaml(label).read_text(encoding="utf-8"))["transport"])
+            *message_include_flags(label_transport(label))]
 
 
 def _skip_reason(label: str) -> str | None:
     """Set when the robot's transport needs vendor messages that cannot be generated (no ../shared)."""
-    return vendor_msgs.skip_reason(_transport(label))
+    return vendor_msgs.skip_reason(label_transport(label))
 
 
 def _source(package: Path, label: str) -> Path:

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import pytest
+import yaml
 
 from tests.support import shared_use, vendor_msgs
 from tests.support.repo import REPO
@@ -1132,6 +1133,11 @@ def label_yaml(label: str) -> Path:
     """The vendor YAML of "vendor/robot": robots/, else the harness's test robots."""
     path = REPO / "robots" / f"{label}.yaml"
     return path if path.is_file() else HARNESS_ROBOTS / f"{label}.yaml"
+
+
+def label_transport(label: str) -> str:
+    """The transport "vendor/robot"'s YAML names, known before anything is rendered."""
+    return str(yaml.safe_load(label_yaml(label).read_text(encoding="utf-8"))["transport"])
 
 
 def project_robot_labels(extra_robots: bool = True) -> list[str]:

@@ -10,11 +10,14 @@ generated structure, never template text (tests/support/cpp_mutate.py):
 - a logic mutation (``TokenEdit``) changes one generated file, named by its package path, as C++
   tokens: the pattern must match exactly ``count`` times (a renamed identifier fails loudly with
   "pattern not found in <file>"), formatting and comments do not count.
-The DataBuffer mutation builds tests/cpp/harness/data_buffer_stress.cpp instead. A control run of the
+The harness's fake robot is built from the unmutated package (the robot as it really is, like the harness's
+expectations) unless the mutation breaks the fake robot itself; its objects are then the control's. The
+DataBuffer mutation builds tests/cpp/harness/data_buffer_stress.cpp instead. A control run of the
 unmodified package must pass, so the failures come from the mutations, not from the machinery.
 """
 from __future__ import annotations
 
+import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -335,7 +338,31 @@ class Outcome:
     not_applied: str | None = None  # the mutation does not apply as written (MutationError)
 
 
-def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
+def breaks_the_robot(mutation: Mutation) -> bool:
+    """Whether ``mutation`` breaks the fake robot (its own sources) rather than the driver."""
+    change = mutation.change
+    return isinstance(change, TokenEdit) and Path(change.file).stem.endswith("_fake_robot")
+
+
+class RobotSides:
+    """The unmutated package of each set of robots, rendered once: a mutation of the driver is run against the
+    fake robot as the robot really is (the same objects as the control's, so they are compiled once), as the
+    harness's expectations (robot_data.hpp) already are."""
+
+    def __init__(self, root: Path) -> None:
+        self._root = root
+        self._lock = threading.Lock()
+        self._packages: dict[tuple[str, ...], RenderedPackage] = {}
+
+    def package(self, robots: tuple[str, ...]) -> RenderedPackage:
+        with self._lock:
+            if robots not in self._packages:
+                self._packages[robots] = render_mutated_package(self._root / f"robots{len(self._packages)}", None,
+                                                                robots)
+            return self._packages[robots]
+
+
+def _run_one(job, tmp_root: Path, builder, robot_sides: RobotSides) -> list[Outcome]:
     mutation: Mutation | None = job
     name = mutation.id if mutation else "control"
     root = tmp_root / name
@@ -345,6 +372,8 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
         package = render_mutated_package(root, mutation, robots or ROBOTS[:1])
     except MutationError as err:  # this mutation's test fails with the message; the others run
         return [Outcome(mutation, "-", False, "", None, time.monotonic() - start, not_applied=str(err))]
+    robot_side = package if mutation is None or breaks_the_robot(mutation) or not robots else \
+        robot_sides.package(robots)
     outcomes = []
     if mutation is None or mutation.data_buffer:
         link = compile_data_buffer_stress(builder, package.package_dir, "plain")
@@ -356,7 +385,7 @@ def _run_one(job, tmp_root: Path, builder) -> list[Outcome]:
             outcomes.append(Outcome(mutation, label, False, "", None, 0.0, skipped=reason))
             continue
         distro = mutation.distro if mutation else DEFAULT_DISTRO
-        link, _ = build_harness(builder, package.build(label), "plain", distro)
+        link, _ = build_harness(builder, package.build(label), "plain", distro, robot_side.build(label))
         run = run_binary(link.path, [f"--threads-ms={THREADS_MS}"], timeout=120) if link.ok else None
         outcomes.append(Outcome(mutation, label, link.ok, link.stderr, run, time.monotonic() - start))
     return outcomes
@@ -369,9 +398,11 @@ def outcomes(tmp_path_factory, request):
     tmp_root = tmp_path_factory.mktemp("mutations")
     jobs = selected.keep([None, *MUTATIONS], selected.values(request, "mutation", unparametrized=None))
 
+    robot_sides = RobotSides(tmp_root / "robot_sides")
+
     def run_one(job):  # each job records what it read of ../shared (the X2's mutations), not the whole fixture
         with shared_use.recording() as used:
-            return _run_one(job, tmp_root, builder), set(used)
+            return _run_one(job, tmp_root, builder, robot_sides), set(used)
 
     results = run_parallel(jobs, run_one, OVERLAP_WORKERS)  # runs overlap the compiles (cpp_build.py)
     return shared_use.Recorded({(job.id if job else "control"): result

@@ -911,17 +911,26 @@ def package_digest(package_dir: Path) -> str:
     return _tree_digest(package_dir / "include")
 
 
+# The fake robot is another process on a real robot's network: in the harness binary its code (and the harness's
+# fake-robot section, which includes the same headers) is moved to a namespace of its own, so that none of its
+# symbols can merge with the driver's (the inline CRC tables, the templates both instantiate). A driver built
+# from other sources than the fake robot (a mutation: tests/cpp/test_cpp_mutations.py) then links without an
+# ODR violation, and each side runs its own code, as two processes do.
+ROBOT_SIDE_FLAGS = ("-Drobot_hardware_interface=rhi_harness_robot_side",)
+
+
 def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
-                           distro: str = DEFAULT_DISTRO) -> CompileResult:
+                           distro: str = DEFAULT_DISTRO, robot_side: RobotBuild | None = None) -> CompileResult:
     """driver_harness.cpp for one robot against ``distro``'s stand-ins (no driver needed; with a fake robot,
-    its section includes the package's fake robot headers)."""
+    its section includes the fake robot headers of ``robot_side``'s package, ``rb``'s by default)."""
     m = rb.model
-    fake = fake_robot_source(rb.package_dir, m.vendor, m.robot) is not None
-    return builder.compile(HARNESS_DIR / "driver_harness.cpp", harness_flags(flavour),
-                           [rb.data_dir, HARNESS_DIR, TOY_BUS_DIR, *([rb.package_dir / "include"] if fake else []),
+    robot_package = (robot_side or rb).package_dir
+    fake = fake_robot_source(robot_package, m.vendor, m.robot) is not None
+    return builder.compile(HARNESS_DIR / "driver_harness.cpp", (*harness_flags(flavour), *ROBOT_SIDE_FLAGS),
+                           [rb.data_dir, HARNESS_DIR, TOY_BUS_DIR, *([robot_package / "include"] if fake else []),
                             *DISTROS[distro].include_dirs],
                            digest_parts=[rb.data_header, builder._harness],
-                           package=rb.package_dir if fake else None,
+                           package=robot_package if fake else None,
                            name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
                            transport=m.transport, variants=message_variants(rb.label))
 
@@ -941,10 +950,12 @@ def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
     return obj, [obj]
 
 
-def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
-                  distro: str = DEFAULT_DISTRO) -> tuple[CompileResult, list[CompileResult]]:
-    """Driver object (-Werror), harness object, CRC probe (unitree) and the linked binary, all
-    against ``distro``'s stand-ins.
+def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str = DEFAULT_DISTRO,
+                  robot_side: RobotBuild | None = None) -> tuple[CompileResult, list[CompileResult]]:
+    """Driver object (-Werror), harness object, fake robot object (where the package has one), CRC probe
+    (unitree) and the linked binary, all against ``distro``'s stand-ins. ``robot_side``: the same robot in
+    another rendered package to build the fake robot from (the robot as it really is, when ``rb``'s driver
+    is broken on purpose); ``rb`` by default.
 
     Returns (link result, [object results]); a failed step leaves later ones out."""
     m = rb.model
@@ -959,11 +970,13 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str,
     steps = [builder.compile(driver_src, flags, [pkg_include, *toy_bus, *standins],
                              digest_parts=[builder._harness if toy_bus else ""], package=rb.package_dir,
                              name=f"driver_{tag}", distro=distro, transport=m.transport, variants=variants)]
-    steps.append(compile_harness_object(builder, rb, flavour, distro))
-    fake = fake_robot_source(rb.package_dir, m.vendor, m.robot)
+    steps.append(compile_harness_object(builder, rb, flavour, distro, robot_side))
+    robot_package = (robot_side or rb).package_dir
+    fake = fake_robot_source(robot_package, m.vendor, m.robot)
     if fake is not None:
-        steps.append(builder.compile(fake, flags, [pkg_include, *standins], package=rb.package_dir,
-                                     name=f"fake_{tag}", distro=distro, transport=m.transport, variants=variants))
+        steps.append(builder.compile(fake, (*flags, *ROBOT_SIDE_FLAGS), [robot_package / "include", *standins],
+                                     package=robot_package, name=f"fake_{tag}", distro=distro,
+                                     transport=m.transport, variants=variants))
     if m.transport == "unitree_dds":
         family = unitree_family(m)
         header = crc_header(rb.package_dir, family)

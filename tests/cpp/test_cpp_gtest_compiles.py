@@ -3,8 +3,9 @@ rhi_gen/templates/robot/test.cpp.j2) compiles against the Humble and Rolling sta
 
 On a ROS 2 machine that file is built by ament_add_gmock() and run by `colcon test`; here
 nothing else compiles it. Every robot of robots/ is rendered into a temporary project and its test
-is compiled together with the robot's driver source, with g++ -std=c++17 -Wall -Wextra -Wpedantic
--Werror, against the stand-ins of each distro of GTEST_DISTROS (tests/cpp/standins/distros/<distro>:
+is compiled (-O0) and linked with the robot's driver object (-O2, the driver harness's plain object: the
+session's object cache keys it by the package files it reads, so it is compiled once), both with g++
+-std=c++17 -Wall -Wextra -Wpedantic -Werror, against the stand-ins of each distro of GTEST_DISTROS (tests/cpp/standins/distros/<distro>:
 hardware_interface/resource_manager.hpp, ros2_control_test_assets/descriptions.hpp, rclcpp, ...) and
 the generated include folder: Humble for the 2.x API (raw-pointer export, no RM clock), Rolling for
 the newest (framework-owned handles, the RM's clock constructor).
@@ -35,13 +36,12 @@ from tests.support.cpp_build import (
     DISTROS,
     ENV_C,
     HARNESS_ROBOTS,
-    WARNING_FLAGS,
+    OVERLAP_WORKERS,
+    compile_driver,
     label_transport,
-    message_include_flags,
     project_robot_labels,
     require_compiler,
-    run_compiler,
-    standin_flags,
+    session_builder,
 )
 from tests.support.repo import copy_project
 
@@ -106,13 +106,6 @@ JOBS = [(label, distro) for label in LABELS for distro in GTEST_DISTROS] + \
     [(label, distro) for label in CUSTOM_LABELS for distro in DISTROS]
 
 
-def _flags(package: Path, distro: str, label: str) -> list[str]:
-    """Only the robot's own vendor messages on the include path (the X2's come from ../shared, the others' not)."""
-    # WARNING_FLAGS has -Wpedantic: the generated CMakeLists.txt adds -Wall -Wextra -Wpedantic.
-    return [*WARNING_FLAGS, *standin_flags(distro), f"-I{package / 'include'}",
-            *message_include_flags(label_transport(label))]
-
-
 def _skip_reason(label: str) -> str | None:
     """Set when the robot's transport needs vendor messages that cannot be generated (no ../shared)."""
     return vendor_msgs.skip_reason(label_transport(label))
@@ -136,7 +129,7 @@ def results(package_dir, tmp_path_factory, request) -> shared_use.Recorded:
     fills, as pluginlib loads it), link with gmock_main and run."""
     if not _toolchain_ok():
         return shared_use.Recorded({})  # every test then fails in require_toolchain()
-    out_dir = tmp_path_factory.mktemp("gtest_bin")
+    builder = session_builder(tmp_path_factory)
 
     def one(job: tuple[str, str]) -> tuple[tuple[str, str], tuple[GtestResult, set[str]]]:
         with shared_use.recording() as used:  # per job: the X2's reads of ../shared are the X2 tests' alone
@@ -152,22 +145,30 @@ def results(package_dir, tmp_path_factory, request) -> shared_use.Recorded:
         if not source.is_file():
             result.syntax_error = f"{label}: {source.name} was not generated"
             return result
-        vendor, robot = label.split("/")
-        driver = package_dir / "src" / vendor / f"{robot}.cpp"
-        binary = out_dir / f"gtest_{label.replace('/', '_')}_{distro}"
-        try:  # one g++ run: the gtest and its driver compiled (-Werror) and linked with gmock_main
-            run_compiler([*_flags(package_dir, distro, label), "-O0", "-pthread", str(source), str(driver),
-                          *GMOCK_LIBS, "-o", str(binary)], what=f"{label} gtest with its driver ({distro}, gmock_main)")
-        except AssertionError as exc:
-            result.syntax_error = str(exc)
+        tag = f"{label.replace('/', '_')}_{distro}"
+        # The gtest (-O0: test code) and the driver (-Werror, the harness's plain object: the same package content
+        # gives the same object, compiled once per session) are each compiled, then linked with gmock_main.
+        driver = compile_driver(builder, package_dir, label, label_transport(label), "plain", distro)
+        gtest = builder.compile(source, ("-O0",), [package_dir / "include", *DISTROS[distro].include_dirs],
+                                package=package_dir, name=f"gtest_{tag}", distro=distro,
+                                transport=label_transport(label))
+        failed = [step for step in (gtest, driver) if not step.ok]
+        if failed:
+            result.syntax_error = (f"{label} gtest with its driver ({distro}) does not compile:\n"
+                                   + "\n".join(step.stderr[:4000] for step in failed))
             return result
+        link = builder.link([gtest, driver], (), f"gtest_{tag}", libs=GMOCK_LIBS)
+        if not link.ok:
+            result.build_error = f"{label} gtest ({distro}) does not link with gmock_main:\n{link.stderr[:4000]}"
+            return result
+        binary = link.path
         # What pluginlib reads through the ament index: the package's plugin description (4.x+
         # stand-in ResourceManagers resolve the <plugin> lookup name through it, as upstream does).
         env = {**ENV_C, "RHI_FAKE_PLUGIN_XML": str(package_dir / f"{PACKAGE}.xml"), "RHI_FAKE_LOG_ECHO": "1"}
         result.run = subprocess.run([str(binary)], capture_output=True, text=True, env=env, timeout=120)
         return result
 
-    with ThreadPoolExecutor(max_workers=2) as pool:
+    with ThreadPoolExecutor(max_workers=OVERLAP_WORKERS) as pool:  # the builder runs one compiler per core
         wanted = selected.values(request, "label")
         return shared_use.Recorded(dict(pool.map(one, selected.keep(JOBS, wanted, key=lambda job: job[0]))))
 

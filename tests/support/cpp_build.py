@@ -860,10 +860,12 @@ class CppBuilder:
             event.set()
         return result
 
-    def link(self, objects: Sequence[CompileResult], flags: Sequence[str], name: str) -> CompileResult:
-        key = self._key("link", *(o.path.name for o in objects), *flags)
+    def link(self, objects: Sequence[CompileResult], flags: Sequence[str], name: str,
+             libs: Sequence[str] = ()) -> CompileResult:
+        """``libs`` come after the objects (-l options resolve what the objects before them need)."""
+        key = self._key("link", *(o.path.name for o in objects), *flags, *libs)
         out = self.cache_dir / f"{name}-{key}"
-        cmd = [self.cxx, "-pthread", *flags, *(str(o.path) for o in objects)]
+        cmd = [self.cxx, "-pthread", *flags, *(str(o.path) for o in objects), *libs]
         return self._run(key, out, cmd)
 
 
@@ -950,6 +952,20 @@ def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
     return obj, [obj]
 
 
+def compile_driver(builder: CppBuilder, package_dir: Path, label: str, transport: str, flavour: str,
+                   distro: str) -> CompileResult:
+    """The driver source of robot ``label`` ("vendor/robot") of ``package_dir`` (-Werror) in ``flavour`` against
+    ``distro``'s stand-ins: the object every binary that links the driver shares (the harness, the gtest)."""
+    vendor, robot = label.split("/")
+    # A custom-transport driver's filled regions include the toy bus (tests/cpp/toy_bus/).
+    toy_bus = [TOY_BUS_DIR] if transport == "custom" else []
+    return builder.compile(driver_source(package_dir, vendor, robot), FLAVOURS[flavour],
+                           [package_dir / "include", *toy_bus, *DISTROS[distro].include_dirs],
+                           digest_parts=[builder._harness if toy_bus else ""], package=package_dir,
+                           name=f"driver_{vendor}_{robot}_{flavour}_{distro}", distro=distro,
+                           transport=transport, variants=message_variants(label))
+
+
 def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str = DEFAULT_DISTRO,
                   robot_side: RobotBuild | None = None) -> tuple[CompileResult, list[CompileResult]]:
     """Driver object (-Werror), harness object, fake robot object (where the package has one), CRC probe
@@ -963,13 +979,8 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str
     pkg_include = rb.package_dir / "include"
     standins = DISTROS[distro].include_dirs
     tag = f"{m.vendor}_{m.robot}_{flavour}_{distro}"
-    driver_src = driver_source(rb.package_dir, m.vendor, m.robot)
-    # A custom-transport driver's filled regions include the toy bus (tests/cpp/toy_bus/).
-    toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
     variants = message_variants(rb.label)
-    steps = [builder.compile(driver_src, flags, [pkg_include, *toy_bus, *standins],
-                             digest_parts=[builder._harness if toy_bus else ""], package=rb.package_dir,
-                             name=f"driver_{tag}", distro=distro, transport=m.transport, variants=variants)]
+    steps = [compile_driver(builder, rb.package_dir, rb.label, m.transport, flavour, distro)]
     steps.append(compile_harness_object(builder, rb, flavour, distro, robot_side))
     robot_package = (robot_side or rb).package_dir
     fake = fake_robot_source(robot_package, m.vendor, m.robot)

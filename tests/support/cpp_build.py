@@ -953,13 +953,14 @@ def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
 
 
 def compile_driver(builder: CppBuilder, package_dir: Path, label: str, transport: str, flavour: str,
-                   distro: str) -> CompileResult:
-    """The driver source of robot ``label`` ("vendor/robot") of ``package_dir`` (-Werror) in ``flavour`` against
-    ``distro``'s stand-ins: the object every binary that links the driver shares (the harness, the gtest)."""
+                   distro: str, flags: Sequence[str] | None = None) -> CompileResult:
+    """The driver source of robot ``label`` ("vendor/robot") of ``package_dir`` (-Werror) in ``flavour`` (or with
+    ``flags`` instead of the flavour's) against ``distro``'s stand-ins: the object every binary that links the
+    driver shares (the harness, the gtest)."""
     vendor, robot = label.split("/")
     # A custom-transport driver's filled regions include the toy bus (tests/cpp/toy_bus/).
     toy_bus = [TOY_BUS_DIR] if transport == "custom" else []
-    return builder.compile(driver_source(package_dir, vendor, robot), FLAVOURS[flavour],
+    return builder.compile(driver_source(package_dir, vendor, robot), FLAVOURS[flavour] if flags is None else flags,
                            [package_dir / "include", *toy_bus, *DISTROS[distro].include_dirs],
                            digest_parts=[builder._harness if toy_bus else ""], package=package_dir,
                            name=f"driver_{vendor}_{robot}_{flavour}_{distro}", distro=distro,

@@ -1,0 +1,729 @@
+// Copyright the rhi-gen authors
+// SPDX-License-Identifier: Apache-2.0
+//
+// rhi-gen copies this file into every generated package that needs it, below the package's banner.
+
+#ifndef ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_PHYSICS_MUJOCO_HPP_
+#define ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_PHYSICS_MUJOCO_HPP_
+
+// The fake robot's joints on real physics (issue 36): the package's URDF compiled by MuJoCo's own
+// URDF compiler, with gravity, a floor, contacts and the coupling between links, in place of the
+// vacuum of fake_joint_dynamics.hpp. FakeMujocoPhysics<N> has FakeJointDynamics<N>'s interface
+// (command, release, step, place, position, velocity, effort, last_command, ...), so the
+// transport's fake side reads and writes either the same way; it adds load(), the IMU and the base.
+//
+// What it simulates:
+// - the robot from the URDF: MuJoCo's URDF defaults (visual elements discarded, static bodies
+//   fused, radians), the URDF's joint limits, <dynamics damping friction> and <inertial>s; each
+//   joint of the table gets an armature (rotor inertia, FakePhysicsOptions::armature);
+// - meshes: `package://<pkg>/<path>` is looked up as <prefix>/share/<pkg>/<path> (and
+//   <prefix>/<pkg>/<path>) under each prefix of FakePhysicsOptions::package_path, `file://` and
+//   relative paths as MuJoCo does; when one cannot be found, every mesh geom is dropped and the
+//   model is inertial-only (its primitive geoms stay), with one warning;
+// - gravity (0, 0, -9.81) and a floor plane at z = 0;
+// - the base (FakeBase): `free` (a free joint on the URDF's root link), `band` (free, held by a
+//   spring-damper pulling the root link towards a point above its start pose, applied through
+//   xfrc_applied; release_band() lets go) or `fixed` (no floating base: the root link is welded to
+//   the world where the URDF puts it, and the floor lies below anything the robot can reach);
+// - each motor under its vendor's law tau = kp (q_t - q) + kd (dq_t - dq) + tau_ff, clamped to the
+//   joint's effort limit and applied as a generalized force (qfrc_applied), recomputed at every
+//   physics step (FakePhysicsOptions::timestep, 1 ms by default: 1 kHz);
+// - an IMU at a link (FakePhysicsOptions::imu_link): MuJoCo's framequat, gyro and accelerometer
+//   sensors at a site on that link: orientation in the world, angular velocity and linear
+//   acceleration (with gravity: +9.81 upwards at rest) in the link's frame.
+// After step(), the joints' positions and velocities are the integrated state; the IMU's readings
+// are MuJoCo's sensors, computed before the last physics step's integration (1 ms older).
+// A URDF MuJoCo cannot compile makes load() return false with one line naming the cause.
+// Not simulated (yet): velocity limits (MuJoCo has none), transmissions (each slot drives its URDF
+// joint one to one), a wheel's velocity servo (FakeJointSpec::velocity_commanded), motor
+// temperatures. step() allocates nothing (MuJoCo steps in the arena mj_makeData allocated).
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "robot_hardware_interface/common/fake_joint_dynamics.hpp"
+
+namespace robot_hardware_interface
+{
+
+// How the robot's root link is held.
+enum class FakeBase
+{
+  kFree,   // a free joint: the robot stands or falls on the floor
+  kBand,   // free, held up by an elastic band until release_band()
+  kFixed,  // no floating base: the root link is welded to the world
+};
+
+// "free" | "band" | "fixed" -> FakeBase; false for anything else.
+inline bool parse_fake_base(const char * text, FakeBase * base)
+{
+  if (std::strcmp(text, "free") == 0) {
+    *base = FakeBase::kFree;
+  } else if (std::strcmp(text, "band") == 0) {
+    *base = FakeBase::kBand;
+  } else if (std::strcmp(text, "fixed") == 0) {
+    *base = FakeBase::kFixed;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+inline const char * fake_base_name(FakeBase base)
+{
+  return base == FakeBase::kFree ? "free" : base == FakeBase::kBand ? "band" : "fixed";
+}
+
+struct FakePhysicsOptions
+{
+  std::string urdf_path;          // the package's installed URDF
+  FakeBase base{FakeBase::kBand};
+  double timestep{0.001};         // [s] one physics step: 1 kHz
+  // Rotor inertia reflected to each joint of the table [kg m^2] (slider: [kg]); `armatures`, when
+  // it has one value per joint of the table (FakeJointSpec order), overrides it joint by joint.
+  double armature{0.01};
+  std::vector<double> armatures;
+  std::string imu_link;           // URDF link of the IMU; "" = the root link
+  std::string package_path;       // ':'-separated prefixes to resolve package:// under
+  // The band: stiffness [N/m] and damping [N s/m]; 0 = the robot's weight stretches it by
+  // kBandSagDefault, critically damped for the robot's mass. Its anchor is above the root link's
+  // start pose by the stretch of the robot's full weight, so a robot hanging in it hangs there.
+  double band_stiffness{0.0};
+  double band_damping{0.0};
+  // free and band: the robot starts with its lowest point this high above the floor [m].
+  double start_clearance{0.0};
+  // Whether the robot's links collide with each other (the floor always collides with them).
+  // Off by default: collision meshes of neighbouring links often overlap where the URDF puts
+  // them, and MuJoCo then pushes them apart as hard as it can.
+  bool self_collision{false};
+};
+
+// The IMU as the simulation measures it.
+struct FakeImuReading
+{
+  std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // w, x, y, z: the link in the world
+  std::array<double, 3> angular_velocity{};               // [rad/s] in the link's frame
+  std::array<double, 3> linear_acceleration{};            // [m/s^2] in the link's frame, gravity in
+};
+
+// How far the robot's weight stretches a band of default stiffness [m].
+inline constexpr double kBandSagDefault = 0.02;
+
+template<size_t N>
+class FakeMujocoPhysics
+{
+public:
+  FakeMujocoPhysics(const FakeJointSpec * joints, size_t count)
+  : joints_(joints), count_(count)
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      if (joints_[k].slot < N) {
+        q_[joints_[k].slot] = joints_[k].initial_position;
+      }
+    }
+  }
+
+  ~FakeMujocoPhysics() {unload();}
+  FakeMujocoPhysics(const FakeMujocoPhysics &) = delete;
+  FakeMujocoPhysics & operator=(const FakeMujocoPhysics &) = delete;
+
+  // Compile the URDF and place the robot at its start pose. False with one line in *error when
+  // MuJoCo cannot compile it or the joint table does not match it; *warnings gets one line per
+  // thing the simulation leaves out (meshes not found, nothing to stand on). Not real-time.
+  bool load(
+    const FakePhysicsOptions & options, std::string * error, std::vector<std::string> * warnings)
+  {
+    unload();
+    options_ = options;
+    quiet_logging();
+    if (!(options_.timestep > 0.0) || !std::isfinite(options_.timestep)) {
+      *error = "the physics timestep must be a positive number of seconds";
+      return false;
+    }
+    if (!options_.armatures.empty() && options_.armatures.size() != count_) {
+      *error = "armatures: " + std::to_string(options_.armatures.size()) + " values for " +
+        std::to_string(count_) + " joints";
+      return false;
+    }
+    char parse_error[1024] = {0};
+    mjSpec * spec = mj_parseXML(
+      options_.urdf_path.c_str(), nullptr, parse_error, sizeof(parse_error));
+    if (spec == nullptr) {
+      *error = "MuJoCo cannot read " + options_.urdf_path + ": " + one_line(parse_error);
+      return false;
+    }
+    // Compiled twice: once to measure the robot at its start pose (where its lowest point is,
+    // how far it can reach), then with the floor where it belongs (a static geom stays where it
+    // was compiled).
+    bool built = edit(spec, error, warnings) && compile(spec, error) && bind(error);
+    Extent extent{};
+    if (built) {
+      extent = measure();
+      unload();
+      add_floor(spec, extent);
+      built = compile(spec, error) && bind(error) && start_pose(extent, warnings);
+    }
+    mj_deleteSpec(spec);
+    if (!built) {
+      unload();
+    }
+    return built;
+  }
+
+  bool loaded() const {return data_ != nullptr;}
+
+  // A motor's new command, as FakeJointDynamics::command: non-finite numbers are dropped, counted.
+  void command(size_t slot, const FakeMotorCommand & c)
+  {
+    if (slot >= N) {
+      return;
+    }
+    if (!std::isfinite(c.q) || !std::isfinite(c.dq) || !std::isfinite(c.tau_ff) ||
+      !std::isfinite(c.kp) || !std::isfinite(c.kd))
+    {
+      ++rejected_commands_;
+      return;
+    }
+    command_[slot] = c;
+  }
+
+  void release() {command_.fill(FakeMotorCommand{});}
+
+  // Advance the simulation by dt seconds, in physics steps of the options' timestep (the rest is
+  // carried to the next call), the motor law recomputed before each.
+  void step(double dt)
+  {
+    if (data_ == nullptr || !(dt > 0.0)) {
+      return;
+    }
+    pending_ += dt;
+    const double h = model_->opt.timestep;
+    while (pending_ >= h * (1.0 - 1e-9)) {
+      pending_ -= h;
+      apply_forces();
+      mj_step(model_, data_);
+      ++physics_steps_;
+    }
+    read_state();
+  }
+
+  // Put a joint at rest at `q` (clamped into its limits), as FakeJointDynamics::place.
+  void place(size_t slot, double q)
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      if (joints_[k].slot == slot && slot < N) {
+        q = std::clamp(q, joints_[k].position_min, joints_[k].position_max);
+        if (data_ != nullptr) {
+          data_->qpos[qpos_adr_[k]] = q;
+          data_->qvel[dof_adr_[k]] = 0.0;
+          mj_forward(model_, data_);
+          read_state();
+        } else {
+          q_[slot] = q;
+        }
+        dq_[slot] = 0.0;
+        tau_[slot] = 0.0;
+      }
+    }
+  }
+
+  // Let go of the band: the base is free from now on.
+  void release_band() {band_on_ = false;}
+  bool band_holding() const {return band_on_;}
+
+  double position(size_t slot) const {return q_[slot];}
+  double velocity(size_t slot) const {return dq_[slot];}
+  double effort(size_t slot) const {return tau_[slot];}
+  const FakeMotorCommand & last_command(size_t slot) const {return command_[slot];}
+  uint64_t rejected_commands() const {return rejected_commands_;}
+  const FakeJointSpec * joints() const {return joints_;}
+  size_t joint_count() const {return count_;}
+
+  const FakeImuReading & imu() const {return imu_;}
+  // The root link's origin in the world [m]: the free joint's position (current after step()),
+  // or where a fixed base is welded.
+  std::array<double, 3> base_position() const
+  {
+    std::array<double, 3> p{};
+    if (data_ != nullptr) {
+      const mjtNum * from = free_joint_ >= 0 ? data_->qpos + model_->jnt_qposadr[free_joint_] :
+        data_->xpos + 3 * root_body_;
+      for (int i = 0; i < 3; ++i) {
+        p[i] = from[i];
+      }
+    }
+    return p;
+  }
+  double simulated_time() const {return data_ != nullptr ? data_->time : 0.0;}
+  uint64_t physics_steps() const {return physics_steps_;}
+  double band_stiffness() const {return band_k_;}
+  double band_damping() const {return band_d_;}
+  double floor_height() const {return floor_z_;}
+  const mjModel * model() const {return model_;}
+  const mjData * data() const {return data_;}
+
+private:
+  static constexpr int kFloorContype = 1;
+  static constexpr int kRobotContype = 2;
+
+  // MuJoCo's warnings (an unstable simulation, a full contact buffer) go to the console only,
+  // never to MUJOCO_LOG.TXT in the working directory.
+  static void quiet_logging()
+  {
+    mjLogConfig config = mju_getLogConfig();
+    config.logto_file = 0;
+    mju_setLogConfig(config);
+  }
+
+  // MuJoCo's message on one line: its lines joined by "; ", without its "Error: " prefix and
+  // without the note that the spec's static bodies were fused (the spec is thrown away).
+  static std::string one_line(const char * text)
+  {
+    std::string line;
+    std::string part;
+    const auto flush = [&line, &part]() {
+        const std::string prefix = "Error: ";
+        if (part.compare(0, prefix.size(), prefix) == 0) {
+          part.erase(0, prefix.size());
+        }
+        if (!part.empty() && part.compare(0, 17, "The static bodies") != 0) {
+          line += (line.empty() ? "" : "; ") + part;
+        }
+        part.clear();
+      };
+    for (const char * c = text; c != nullptr && *c != '\0'; ++c) {
+      if (*c == '\n' || *c == '\r') {
+        flush();
+      } else {
+        part += *c;
+      }
+    }
+    flush();
+    return line.empty() ? std::string("no reason given") : line;
+  }
+
+  static mjsBody * root_of(mjSpec * spec, std::string * error)
+  {
+    mjsBody * world = mjs_findBody(spec, "world");
+    mjsElement * first = world != nullptr ? mjs_firstChild(world, mjOBJ_BODY, 0) : nullptr;
+    if (first == nullptr) {
+      *error = "the URDF has no link";
+      return nullptr;
+    }
+    if (mjs_nextChild(world, first, 0) != nullptr) {
+      *error = "the URDF has more than one root link";
+      return nullptr;
+    }
+    return mjs_asBody(first);
+  }
+
+  // Everything this simulation adds to the URDF, before compiling.
+  bool edit(mjSpec * spec, std::string * error, std::vector<std::string> * warnings)
+  {
+    spec->option.timestep = options_.timestep;
+    spec->option.integrator = mjINT_IMPLICITFAST;
+    mjsBody * root = root_of(spec, error);
+    if (root == nullptr) {
+      return false;
+    }
+    root_name_ = mjs_getString(mjs_getName(root->element));
+    root->fuse = 0;  // a fixed base's root link is static: kept a body, for base_position()
+    // A floating joint the URDF already has (rare) is replaced by the chosen base.
+    for (mjsElement * e = mjs_firstChild(root, mjOBJ_JOINT, 0); e != nullptr; ) {
+      mjsElement * next = mjs_nextChild(root, e, 0);
+      if (mjs_asJoint(e)->type == mjJNT_FREE) {
+        mjs_delete(spec, e);
+      }
+      e = next;
+    }
+    if (options_.base != FakeBase::kFixed) {
+      mjsJoint * free = mjs_addFreeJoint(root);
+      mjs_setName(free->element, "rhi_floating_base");
+    }
+    for (size_t k = 0; k < count_; ++k) {
+      mjsElement * e = mjs_findElement(spec, mjOBJ_JOINT, joints_[k].name);
+      if (e == nullptr) {
+        *error = std::string("joint '") + joints_[k].name + "' of the joint table is not a "
+          "moving joint of the URDF as MuJoCo reads it";
+        return false;
+      }
+      mjs_asJoint(e)->armature = options_.armatures.empty() ? options_.armature :
+        options_.armatures[k];
+    }
+    const std::string imu = options_.imu_link.empty() ? root_name_ : options_.imu_link;
+    mjsBody * imu_body = mjs_findBody(spec, imu.c_str());
+    if (imu_body == nullptr) {
+      *error = "the IMU link '" + imu + "' is not a link of the URDF";
+      return false;
+    }
+    mjsSite * site = mjs_addSite(imu_body, nullptr);
+    mjs_setName(site->element, "rhi_imu");
+    const mjtSensor kinds[3] = {mjSENS_FRAMEQUAT, mjSENS_GYRO, mjSENS_ACCELEROMETER};
+    for (mjtSensor kind : kinds) {
+      mjsSensor * sensor = mjs_addSensor(spec);
+      sensor->type = kind;
+      sensor->objtype = mjOBJ_SITE;
+      mjs_setString(sensor->objname, "rhi_imu");
+    }
+    if (!resolve_meshes(spec, warnings)) {
+      return false;
+    }
+    if (!options_.self_collision) {
+      // Contact needs (contype1 & conaffinity2) || (contype2 & conaffinity1): the robot's geoms
+      // (type 2, affinity 1) meet the floor's (type 1, affinity 2), never each other.
+      for (mjsElement * e = mjs_firstElement(spec, mjOBJ_GEOM); e != nullptr;
+        e = mjs_nextElement(spec, e))
+      {
+        mjsGeom * geom = mjs_asGeom(e);
+        if (geom->contype != 0 || geom->conaffinity != 0) {
+          geom->contype = kRobotContype;
+          geom->conaffinity = kFloorContype;
+        }
+      }
+    }
+    return true;
+  }
+
+  // package:// and file:// into absolute paths; all or nothing (see the header comment).
+  bool resolve_meshes(mjSpec * spec, std::vector<std::string> * warnings)
+  {
+    namespace fs = std::filesystem;
+    const fs::path urdf_dir = fs::absolute(fs::path(options_.urdf_path)).parent_path();
+    std::vector<std::pair<mjsMesh *, std::string>> found;
+    size_t total = 0;
+    std::string first_missing;
+    for (mjsElement * e = mjs_firstElement(spec, mjOBJ_MESH); e != nullptr;
+      e = mjs_nextElement(spec, e))
+    {
+      mjsMesh * mesh = mjs_asMesh(e);
+      const std::string file = mjs_getString(mesh->file);
+      ++total;
+      const std::string path = resolve(file, urdf_dir);
+      if (path.empty()) {
+        if (first_missing.empty()) {
+          first_missing = file;
+        }
+      } else {
+        found.emplace_back(mesh, path);
+      }
+    }
+    if (found.size() == total) {
+      for (auto & f : found) {
+        mjs_setString(f.first->file, f.second.c_str());
+      }
+      return true;
+    }
+    std::vector<mjsElement *> doomed;
+    for (mjsElement * e = mjs_firstElement(spec, mjOBJ_GEOM); e != nullptr;
+      e = mjs_nextElement(spec, e))
+    {
+      if (mjs_asGeom(e)->type == mjGEOM_MESH) {
+        doomed.push_back(e);
+      }
+    }
+    for (mjsElement * e = mjs_firstElement(spec, mjOBJ_MESH); e != nullptr;
+      e = mjs_nextElement(spec, e))
+    {
+      doomed.push_back(e);
+    }
+    for (mjsElement * e : doomed) {
+      mjs_delete(spec, e);
+    }
+    warnings->push_back(
+      std::to_string(total - found.size()) + " of " + std::to_string(total) +
+      " meshes not found (first: " + first_missing + "; package:// looked up under '" +
+      options_.package_path + "'): inertial-only model, the mesh geoms left out");
+    return true;
+  }
+
+  std::string resolve(const std::string & file, const std::filesystem::path & urdf_dir) const
+  {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const std::string package = "package://";
+    const std::string scheme = "file://";
+    if (file.compare(0, package.size(), package) == 0) {
+      const std::string rest = file.substr(package.size());
+      const size_t slash = rest.find('/');
+      if (slash == std::string::npos) {
+        return "";
+      }
+      const std::string name = rest.substr(0, slash);
+      const std::string inside = rest.substr(slash + 1);
+      size_t begin = 0;
+      while (begin <= options_.package_path.size()) {
+        size_t end = options_.package_path.find(':', begin);
+        if (end == std::string::npos) {
+          end = options_.package_path.size();
+        }
+        const std::string prefix = options_.package_path.substr(begin, end - begin);
+        begin = end + 1;
+        if (prefix.empty()) {
+          continue;
+        }
+        for (const fs::path & candidate :
+          {fs::path(prefix) / "share" / name / inside, fs::path(prefix) / name / inside})
+        {
+          if (fs::is_regular_file(candidate, ec)) {
+            return fs::absolute(candidate, ec).string();
+          }
+        }
+      }
+      return "";
+    }
+    fs::path path = file.compare(0, scheme.size(), scheme) == 0 ?
+      fs::path(file.substr(scheme.size())) : fs::path(file);
+    if (path.is_relative()) {
+      path = urdf_dir / path;
+    }
+    return fs::is_regular_file(path, ec) ? path.string() : "";
+  }
+
+  // Addresses of the table's joints, the root link, the sensors.
+  bool bind(std::string * error)
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      const int id = mj_name2id(model_, mjOBJ_JOINT, joints_[k].name);
+      const int type = id >= 0 ? model_->jnt_type[id] : -1;
+      if (type != mjJNT_HINGE && type != mjJNT_SLIDE) {
+        *error = std::string("joint '") + joints_[k].name + "' is not a revolute or prismatic "
+          "joint in MuJoCo's model of the URDF";
+        return false;
+      }
+      qpos_adr_.push_back(model_->jnt_qposadr[id]);
+      dof_adr_.push_back(model_->jnt_dofadr[id]);
+    }
+    root_body_ = mj_name2id(model_, mjOBJ_BODY, root_name_.c_str());
+    if (root_body_ < 0) {
+      *error = "the root link '" + root_name_ + "' is missing from the compiled model";
+      return false;
+    }
+    free_joint_ = mj_name2id(model_, mjOBJ_JOINT, "rhi_floating_base");
+    if (model_->nsensor != 3 || (options_.base != FakeBase::kFixed && free_joint_ < 0)) {
+      *error = "MuJoCo's model lacks the IMU sensors or the floating base it was given";
+      return false;
+    }
+    return true;
+  }
+
+  bool compile(mjSpec * spec, std::string * error)
+  {
+    model_ = mj_compile(spec, nullptr);
+    if (model_ == nullptr) {
+      *error = "MuJoCo cannot compile " + options_.urdf_path + ": " + one_line(mjs_getError(spec));
+      return false;
+    }
+    data_ = mj_makeData(model_);
+    if (data_ == nullptr) {
+      *error = "MuJoCo cannot allocate the simulation of " + options_.urdf_path;
+      return false;
+    }
+    return true;
+  }
+
+  // The robot at its start pose, its root link where the URDF puts it.
+  struct Extent
+  {
+    double lowest;     // [m] its lowest point: geoms' bounding spheres, else link origins
+    double reach;      // [m] an upper bound of how far any point of it gets from its root link
+    double root_z;     // [m] the root link's height
+    int robot_geoms;   // geoms of the robot (not the world's)
+  };
+
+  void initial_joints()
+  {
+    mj_resetData(model_, data_);
+    for (size_t k = 0; k < count_; ++k) {
+      data_->qpos[qpos_adr_[k]] = std::clamp(
+        joints_[k].initial_position, joints_[k].position_min, joints_[k].position_max);
+    }
+    mj_forward(model_, data_);
+  }
+
+  Extent measure()
+  {
+    initial_joints();
+    Extent e{INFINITY, 0.0, data_->xpos[3 * root_body_ + 2], 0};
+    for (int b = 1; b < model_->nbody; ++b) {
+      e.lowest = std::min(e.lowest, data_->xpos[3 * b + 2]);
+      e.reach += norm3(model_->body_pos + 3 * b);
+    }
+    double largest_geom = 0.0;
+    for (int g = 0; g < model_->ngeom; ++g) {
+      if (model_->geom_bodyid[g] == 0) {
+        continue;
+      }
+      ++e.robot_geoms;
+      e.lowest = std::min(e.lowest, data_->geom_xpos[3 * g + 2] - model_->geom_rbound[g]);
+      largest_geom = std::max(
+        largest_geom, model_->geom_rbound[g] + norm3(model_->geom_pos + 3 * g));
+    }
+    e.reach += largest_geom;
+    return e;
+  }
+
+  static double norm3(const mjtNum * v) {return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);}
+
+  // The floor: z = 0 under a floating base; under a fixed one, below anything it can reach.
+  void add_floor(mjSpec * spec, const Extent & extent)
+  {
+    floor_z_ = options_.base == FakeBase::kFixed ?
+      std::min(0.0, extent.root_z - extent.reach - 0.1) : 0.0;
+    mjsGeom * floor = mjs_addGeom(mjs_findBody(spec, "world"), nullptr);
+    mjs_setName(floor->element, "rhi_floor");
+    floor->type = mjGEOM_PLANE;
+    floor->size[0] = 0.0;  // infinite
+    floor->size[1] = 0.0;
+    floor->size[2] = 0.05;
+    floor->pos[2] = floor_z_;
+    floor->contype = kFloorContype;
+    floor->conaffinity = options_.self_collision ? kFloorContype : kRobotContype;
+  }
+
+  // The joints at their initial positions, the base where the options put it, the band's anchor.
+  bool start_pose(const Extent & extent, std::vector<std::string> * warnings)
+  {
+    initial_joints();
+    if (options_.base != FakeBase::kFixed) {
+      if (free_joint_ < 0) {
+        return false;
+      }
+      // Lift the robot so that its lowest point is start_clearance above the floor.
+      data_->qpos[model_->jnt_qposadr[free_joint_] + 2] +=
+        floor_z_ + options_.start_clearance - extent.lowest;
+      if (extent.robot_geoms == 0) {
+        warnings->push_back(
+          "the URDF has no collision geometry: nothing of the robot touches the floor, a free "
+          "base falls through it");
+      }
+      mj_forward(model_, data_);
+    }
+    const double mass = model_->body_subtreemass[root_body_];
+    const double g = norm3(model_->opt.gravity);
+    band_k_ = options_.band_stiffness > 0.0 ? options_.band_stiffness :
+      mass * g / kBandSagDefault;
+    band_d_ = options_.band_damping > 0.0 ? options_.band_damping :
+      2.0 * std::sqrt(band_k_ * mass);
+    for (int i = 0; i < 3; ++i) {
+      band_anchor_[i] = data_->xpos[3 * root_body_ + i];
+    }
+    band_anchor_[2] += band_k_ > 0.0 ? mass * g / band_k_ : 0.0;
+    band_on_ = options_.base == FakeBase::kBand;
+    read_state();
+    return true;
+  }
+
+  void apply_forces()
+  {
+    mju_zero(data_->qfrc_applied, model_->nv);
+    for (size_t k = 0; k < count_; ++k) {
+      const FakeJointSpec & j = joints_[k];
+      if (j.slot >= N) {
+        continue;
+      }
+      const FakeMotorCommand & c = command_[j.slot];
+      const double q = data_->qpos[qpos_adr_[k]];
+      const double dq = data_->qvel[dof_adr_[k]];
+      double tau = c.kp * (c.q - q) + c.kd * (c.dq - dq) + c.tau_ff;
+      tau = std::clamp(tau, -j.effort_max, j.effort_max);
+      data_->qfrc_applied[dof_adr_[k]] = tau;
+      tau_[j.slot] = tau;
+    }
+    mjtNum * wrench = data_->xfrc_applied + 6 * root_body_;
+    for (int i = 0; i < 6; ++i) {
+      wrench[i] = 0.0;
+    }
+    if (band_on_ && free_joint_ >= 0) {
+      // Spring-damper on the root link's origin (the free joint's position and linear velocity),
+      // applied there: the force at the centre of mass plus its moment about it.
+      const mjtNum * p = data_->qpos + model_->jnt_qposadr[free_joint_];
+      const mjtNum * v = data_->qvel + model_->jnt_dofadr[free_joint_];
+      mjtNum force[3];
+      for (int i = 0; i < 3; ++i) {
+        force[i] = band_k_ * (band_anchor_[i] - p[i]) - band_d_ * v[i];
+        wrench[i] = force[i];
+      }
+      const mjtNum * origin = data_->xpos + 3 * root_body_;
+      const mjtNum * com = data_->xipos + 3 * root_body_;
+      const mjtNum arm[3] = {origin[0] - com[0], origin[1] - com[1], origin[2] - com[2]};
+      wrench[3] = arm[1] * force[2] - arm[2] * force[1];
+      wrench[4] = arm[2] * force[0] - arm[0] * force[2];
+      wrench[5] = arm[0] * force[1] - arm[1] * force[0];
+    }
+  }
+
+  void read_state()
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      const size_t s = joints_[k].slot;
+      if (s < N) {
+        q_[s] = data_->qpos[qpos_adr_[k]];
+        dq_[s] = data_->qvel[dof_adr_[k]];
+      }
+    }
+    const mjtNum * quat = data_->sensordata + model_->sensor_adr[0];
+    const mjtNum * gyro = data_->sensordata + model_->sensor_adr[1];
+    const mjtNum * acc = data_->sensordata + model_->sensor_adr[2];
+    for (int i = 0; i < 4; ++i) {
+      imu_.orientation[i] = quat[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+      imu_.angular_velocity[i] = gyro[i];
+      imu_.linear_acceleration[i] = acc[i];
+    }
+  }
+
+  void unload()
+  {
+    if (data_ != nullptr) {
+      mj_deleteData(data_);
+      data_ = nullptr;
+    }
+    if (model_ != nullptr) {
+      mj_deleteModel(model_);
+      model_ = nullptr;
+    }
+    qpos_adr_.clear();
+    dof_adr_.clear();
+    pending_ = 0.0;
+  }
+
+  const FakeJointSpec * joints_;
+  size_t count_;
+  FakePhysicsOptions options_;
+  mjModel * model_{nullptr};
+  mjData * data_{nullptr};
+  std::vector<int> qpos_adr_;  // per joint of the table
+  std::vector<int> dof_adr_;
+  std::string root_name_;
+  int root_body_{-1};
+  int free_joint_{-1};
+  double floor_z_{0.0};
+  double band_k_{0.0};
+  double band_d_{0.0};
+  std::array<double, 3> band_anchor_{};
+  bool band_on_{false};
+  double pending_{0.0};
+  uint64_t physics_steps_{0};
+  std::array<double, N> q_{};
+  std::array<double, N> dq_{};
+  std::array<double, N> tau_{};
+  std::array<FakeMotorCommand, N> command_{};
+  uint64_t rejected_commands_{0};
+  FakeImuReading imu_;
+};
+
+}  // namespace robot_hardware_interface
+
+#endif  // ROBOT_HARDWARE_INTERFACE__COMMON__FAKE_PHYSICS_MUJOCO_HPP_

@@ -18,6 +18,16 @@ Tolerances, and where they come from:
   (within 0.05 N m), and the error is more than 0.05 rad somewhere (gravity is really there).
 - sagging: every motor passive (kp = kd = 0) for 2 s, from a pose 0.6 rad away from hanging down, the shoulder
   and elbow fall by more than 0.3 rad.
+
+The floating bases are the upstream G1 and PM01 URDFs (tests/data/upstream_urdf: real inertials; their meshes
+are not carried, so the model is inertial-only, the one warning), with their reference YAMLs' default_gains and
+IMU frames, starting at their description's start pose (every joint at zero, clamped into its limits):
+- on the band, holding the start pose for 5 s: the base within 5 mm of its start height (the band stretches
+  2 cm under the robot's full weight and is anchored that much higher), upright within 2 degrees, the IMU's
+  mean vertical acceleration 9.81 +- 0.1 m/s^2 (gravity, the robot held). Joint errors: the PM01 within
+  0.05 rad; the G1 within 0.5 rad, its YAML's waist_pitch kp of 40 N m/rad leaning under the torso's weight
+  (measured 0.26 rad; the legs and arms within 0.05 rad, the elbows' 0.043 the largest).
+- free, no band: the same robot falls (nothing balances it).
 """
 from __future__ import annotations
 
@@ -41,6 +51,7 @@ from tests.support.cpp_build import (
     yaml_joint_map,
     yaml_modes_and_gains,
 )
+from tests.support.repo import REPO
 
 HERE = Path(__file__).resolve().parent
 CHECK_SOURCE = HERE / "physics" / "fake_physics_check.cpp"
@@ -49,6 +60,12 @@ TALOS_YAML = HARNESS_ROBOTS / "pal" / "talos_arm.yaml"
 TALOS_URDF = HARNESS_ROBOTS / "pal" / "talos_arm.urdf"
 SCARA_YAML = HARNESS_ROBOTS / "acme" / "scara.yaml"
 SCARA_URDF = HARNESS_ROBOTS / "acme" / "scara.urdf"
+UPSTREAM_URDF = REPO / "tests" / "data" / "upstream_urdf"
+# label: (vendor YAML, upstream URDF, IMU link as the YAML's imu.frame_id names it, joint error bound [rad])
+FLOATING = {
+    "g1": (REPO / "robots" / "unitree" / "g1.yaml", UPSTREAM_URDF / "unitree_g1.urdf", "imu_in_pelvis", 0.5),
+    "pm01": (REPO / "robots" / "engineai" / "pm01.yaml", UPSTREAM_URDF / "engineai_pm01.urdf", "LINK_BASE", 0.05),
+}
 AMPLITUDE = 0.25        # [rad] of the tracked sines
 HELD_STILL = ("gripper_left_joint",)
 
@@ -107,9 +124,10 @@ def checker(include_tree, tmp_path_factory) -> Path:
     return binary
 
 
-def joint_table(yaml_path: Path, urdf_path: Path, path: Path, *, held: tuple[str, ...] = HELD_STILL) -> Path:
-    """The joints as rhi-gen reads them: slots and gains from the YAML, limits from the URDF. Each starts
-    2 amplitudes + 0.1 rad inside its limits (zero where that is inside), so that gravity pulls on it."""
+def joint_table(yaml_path: Path, urdf_path: Path, path: Path, *, held: tuple[str, ...] = HELD_STILL,
+                inset: bool = True) -> Path:
+    """The joints as rhi-gen reads them: slots and gains from the YAML, limits from the URDF. Each starts at
+    zero clamped into its limits or, `inset`, 2 amplitudes + 0.1 rad inside them, so that gravity pulls on it."""
     joints = {j.name: j for j in load_urdf(urdf_path).joints}
     _, gains = yaml_modes_and_gains(yaml_path)
     lines = []
@@ -119,7 +137,7 @@ def joint_table(yaml_path: Path, urdf_path: Path, path: Path, *, held: tuple[str
         lo, hi = -math.inf, math.inf
         if j.type != "continuous" and lim is not None and lim.lower is not None and lim.upper is not None:
             lo, hi = lim.lower, lim.upper
-        margin = 2 * AMPLITUDE + 0.1
+        margin = 2 * AMPLITUDE + 0.1 if inset else 0.0
         start = min(max(0.0, lo + margin), hi - margin) if lo + margin <= hi - margin else (lo + hi) / 2
         velocity = lim.velocity if lim is not None and lim.velocity else math.inf
         effort = lim.effort if lim is not None and lim.effort else math.inf
@@ -244,3 +262,49 @@ def test_a_urdf_mujoco_cannot_take_gives_one_error_line(checker, talos_table, tm
     assert re.match(expected, lines[0].removeprefix("error=")), lines[0]
     assert proc.stderr == "", proc.stderr                  # MuJoCo itself printed nothing
 
+
+
+@pytest.mark.parametrize("robot", sorted(FLOATING))
+def test_on_the_band_a_humanoid_holds_its_start_pose(checker, tmp_path, robot, report):
+    yaml_path, urdf, imu, joint_bound = FLOATING[robot]
+    table = joint_table(yaml_path, urdf, tmp_path / f"{robot}.tab", held=(), inset=False)
+    proc = run_check(checker, "hold", table, urdf, base="band", imu=imu, seconds=5.0)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    v = values(proc.stdout)
+    warnings = [line for line in proc.stdout.splitlines() if line.startswith("warning=")]
+    assert any("meshes not found" in w for w in warnings), warnings
+    start, low, high = float(v["base_start"]), float(v["base_min"]), float(v["base_max"])
+    assert start > 0.5 and start - 0.005 < low <= high < start + 0.005, proc.stdout
+    w = abs(float(v["imu_quat"].split()[0]))
+    tilt = math.degrees(2 * math.acos(min(1.0, w)))
+    assert tilt < 2.0, proc.stdout
+    assert abs(float(v["imu_acc_z_mean"]) - 9.81) < 0.1, proc.stdout
+    ax, ay, _ = (float(x) for x in v["imu_acc"].split())
+    assert math.hypot(ax, ay) < 0.5, proc.stdout
+    assert float(v["joint_max"]) < joint_bound, proc.stdout
+    legs_and_arms = {k: float(x) for k, x in v.items() if k.startswith("hold.") and "waist" not in k}
+    assert max(legs_and_arms.values()) < 0.05, legs_and_arms
+    report(f"fake physics (MuJoCo): {robot} on the band, YAML gains, 5 s: base {low:.4f}..{high:.4f} m "
+           f"(start {start:.4f}), tilt {tilt:.2f} deg, IMU z {float(v['imu_acc_z_mean']):.3f} m/s^2, joints within "
+           f"{float(v['joint_max']):.3f} rad")
+
+
+def test_without_the_band_a_free_humanoid_falls(checker, tmp_path):
+    yaml_path, urdf, imu, _ = FLOATING["g1"]
+    table = joint_table(yaml_path, urdf, tmp_path / "g1.tab", held=(), inset=False)
+    proc = run_check(checker, "hold", table, urdf, base="free", imu=imu, seconds=2.0)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    v = values(proc.stdout)
+    assert float(v["base_min"]) < float(v["base_start"]) - 0.1, proc.stdout
+
+
+@pytest.mark.parametrize("robot", sorted(FLOATING))
+def test_a_humanoid_on_the_band_steps_faster_than_real_time(checker, tmp_path, robot, report):
+    yaml_path, urdf, imu, _ = FLOATING[robot]
+    table = joint_table(yaml_path, urdf, tmp_path / f"{robot}.tab", held=(), inset=False)
+    proc = run_check(checker, "rate", table, urdf, base="band", imu=imu, seconds=10.0)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    v = values(proc.stdout)
+    assert float(v["physics_steps"]) == 10000 and float(v["rtf"]) > 2.0, proc.stdout
+    report(f"fake physics (MuJoCo): {robot} on the band, 1 kHz physics at 500 Hz commands: "
+           f"{float(v['physics_hz']):.0f} steps/s, real-time factor {float(v['rtf']):.1f}")

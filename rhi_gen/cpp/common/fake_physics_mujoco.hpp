@@ -21,10 +21,12 @@
 //   relative paths as MuJoCo does; when one cannot be found, every mesh geom is dropped and the
 //   model is inertial-only (its primitive geoms stay), with one warning;
 // - gravity (0, 0, -9.81) and a floor plane at z = 0;
-// - the base (FakeBase): `free` (a free joint on the URDF's root link), `band` (free, held by a
-//   spring-damper pulling the root link towards a point above its start pose, applied through
-//   xfrc_applied; release_band() lets go) or `fixed` (no floating base: the root link is welded to
-//   the world where the URDF puts it, and the floor lies below anything the robot can reach);
+// - the base (FakeBase): `free` (a free joint on the URDF's root link), `band` (free, held by an
+//   elastic band: a spring-damper pulling a point fixed to the root link, band_arm above the
+//   robot's centre of mass at its start pose, towards a point above where it started, applied
+//   through xfrc_applied; the robot hangs from it like a pendulum, upright; release_band() lets
+//   go) or `fixed` (no floating base: the root link is welded to the world where the URDF puts
+//   it, and the floor lies below anything the robot can reach);
 // - each motor under its vendor's law tau = kp (q_t - q) + kd (dq_t - dq) + tau_ff, clamped to the
 //   joint's effort limit and applied as a generalized force (qfrc_applied), recomputed at every
 //   physics step (FakePhysicsOptions::timestep, 1 ms by default: 1 kHz);
@@ -97,10 +99,14 @@ struct FakePhysicsOptions
   std::string imu_link;           // URDF link of the IMU; "" = the root link
   std::string package_path;       // ':'-separated prefixes to resolve package:// under
   // The band: stiffness [N/m] and damping [N s/m]; 0 = the robot's weight stretches it by
-  // kBandSagDefault, critically damped for the robot's mass. Its anchor is above the root link's
-  // start pose by the stretch of the robot's full weight, so a robot hanging in it hangs there.
+  // kBandSagDefault, critically damped for the robot's mass (the damping is bounded to what an
+  // explicit force on the root link can take at the timestep). Its anchor is above where it
+  // starts by the stretch of the robot's full weight, so a robot hanging in it hangs there.
   double band_stiffness{0.0};
   double band_damping{0.0};
+  // [m] how far above the robot's centre of mass the band holds it: above it, the robot hangs
+  // upright (held at its root link's origin, a humanoid's pelvis, it would topple about it).
+  double band_arm{0.5};
   // free and band: the robot starts with its lowest point this high above the floor [m].
   double start_clearance{0.0};
   // Whether the robot's links collide with each other (the floor always collides with them).
@@ -615,8 +621,21 @@ private:
       mass * g / kBandSagDefault;
     band_d_ = options_.band_damping > 0.0 ? options_.band_damping :
       2.0 * std::sqrt(band_k_ * mass);
+    const double h = model_->opt.timestep;
+    const mjtNum * inertia = model_->body_inertia + 3 * root_body_;
+    const double smallest = std::min({inertia[0], inertia[1], inertia[2]});
+    band_d_ = std::min(band_d_, 0.25 * model_->body_mass[root_body_] / h);
+    band_turn_d_ = std::min(band_d_ * options_.band_arm * options_.band_arm, 0.25 * smallest / h);
+    // The band's point: above the centre of mass, kept in the root link's frame.
+    const mjtNum * origin = data_->xpos + 3 * root_body_;
+    const mjtNum * com = data_->subtree_com + 3 * root_body_;
+    const mjtNum point[3] = {com[0], com[1], com[2] + options_.band_arm};
+    const mjtNum offset[3] = {point[0] - origin[0], point[1] - origin[1], point[2] - origin[2]};
+    mjtNum inverse[4];
+    mju_negQuat(inverse, data_->xquat + 4 * root_body_);
+    mju_rotVecQuat(band_point_local_.data(), offset, inverse);
     for (int i = 0; i < 3; ++i) {
-      band_anchor_[i] = data_->xpos[3 * root_body_ + i];
+      band_anchor_[i] = point[i];
     }
     band_anchor_[2] += band_k_ > 0.0 ? mass * g / band_k_ : 0.0;
     band_on_ = options_.base == FakeBase::kBand;
@@ -645,21 +664,30 @@ private:
       wrench[i] = 0.0;
     }
     if (band_on_ && free_joint_ >= 0) {
-      // Spring-damper on the root link's origin (the free joint's position and linear velocity),
-      // applied there: the force at the centre of mass plus its moment about it.
-      const mjtNum * p = data_->qpos + model_->jnt_qposadr[free_joint_];
-      const mjtNum * v = data_->qvel + model_->jnt_dofadr[free_joint_];
-      mjtNum force[3];
+      // The band's point and its velocity from the free joint's current state (position, quat;
+      // linear velocity in the world, angular velocity in the link's frame).
+      const mjtNum * pos = data_->qpos + model_->jnt_qposadr[free_joint_];
+      const mjtNum * quat = pos + 3;
+      const mjtNum * vel = data_->qvel + model_->jnt_dofadr[free_joint_];
+      mjtNum arm[3], omega[3], com[3];
+      mju_rotVecQuat(arm, band_point_local_.data(), quat);
+      mju_rotVecQuat(omega, vel + 3, quat);
+      mju_rotVecQuat(com, model_->body_ipos + 3 * root_body_, quat);
+      // The spring pulls at the band's point (its moment keeps the robot upright); the damping
+      // is split into a force at the link's centre of mass and a torque, each bounded to what an
+      // explicit force on that one link can take at this timestep (the band is no constraint).
+      mjtNum spring[3], lever[3];
       for (int i = 0; i < 3; ++i) {
-        force[i] = band_k_ * (band_anchor_[i] - p[i]) - band_d_ * v[i];
-        wrench[i] = force[i];
+        spring[i] = band_k_ * (band_anchor_[i] - (pos[i] + arm[i]));
+        lever[i] = arm[i] - com[i];  // from the link's centre of mass to the band's point
       }
-      const mjtNum * origin = data_->xpos + 3 * root_body_;
-      const mjtNum * com = data_->xipos + 3 * root_body_;
-      const mjtNum arm[3] = {origin[0] - com[0], origin[1] - com[1], origin[2] - com[2]};
-      wrench[3] = arm[1] * force[2] - arm[2] * force[1];
-      wrench[4] = arm[2] * force[0] - arm[0] * force[2];
-      wrench[5] = arm[0] * force[1] - arm[1] * force[0];
+      mju_cross(wrench + 3, lever, spring);
+      mjtNum com_velocity[3];
+      mju_cross(com_velocity, omega, com);
+      for (int i = 0; i < 3; ++i) {
+        wrench[i] = spring[i] - band_d_ * (vel[i] + com_velocity[i]);
+        wrench[3 + i] -= band_turn_d_ * omega[i];
+      }
     }
   }
 
@@ -712,7 +740,9 @@ private:
   double floor_z_{0.0};
   double band_k_{0.0};
   double band_d_{0.0};
+  double band_turn_d_{0.0};  // [N m s / rad] the band's damping of the root link's rotation
   std::array<double, 3> band_anchor_{};
+  std::array<mjtNum, 3> band_point_local_{};  // the band's point in the root link's frame
   bool band_on_{false};
   double pending_{0.0};
   uint64_t physics_steps_{0};

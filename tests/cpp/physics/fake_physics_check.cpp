@@ -27,6 +27,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "robot_hardware_interface/common/fake_physics_mujoco.hpp"
@@ -106,6 +108,32 @@ void gravity_at(const mjModel * m, mjData * scratch, const rhi::FakeMujocoPhysic
     (*tau)[k] = scratch->qfrc_bias[m->jnt_dofadr[id]];
   }
 }
+
+// FakeMujocoPhysics stands where FakeJointDynamics stands: every call the fake robot's runner and
+// the transports' fake sides make on FakeRobotModel::dynamics compiles, with the same types, on
+// both (checked at compile time, for both classes).
+template<class Dynamics>
+constexpr bool drop_in()
+{
+  using D = const Dynamics &;
+  static_assert(std::is_same_v<decltype(std::declval<Dynamics &>().command(
+      size_t{}, rhi::FakeMotorCommand{})), void>);
+  static_assert(std::is_same_v<decltype(std::declval<Dynamics &>().release()), void>);
+  static_assert(std::is_same_v<decltype(std::declval<Dynamics &>().step(0.0)), void>);
+  static_assert(std::is_same_v<decltype(std::declval<Dynamics &>().place(size_t{}, 0.0)), void>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().position(size_t{})), double>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().velocity(size_t{})), double>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().effort(size_t{})), double>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().last_command(size_t{})),
+    const rhi::FakeMotorCommand &>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().rejected_commands()), uint64_t>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().joints()), const rhi::FakeJointSpec *>);
+  static_assert(std::is_same_v<decltype(std::declval<D>().joint_count()), size_t>);
+  static_assert(std::is_constructible_v<Dynamics, const rhi::FakeJointSpec *, size_t>);
+  return true;
+}
+static_assert(drop_in<rhi::FakeJointDynamics<kSlots>>());
+static_assert(drop_in<rhi::FakeMujocoPhysics<kSlots>>());
 
 }  // namespace
 
@@ -269,6 +297,10 @@ int main(int argc, char ** argv)
         worst = std::max(worst, std::fabs(sim.position(rows[k].spec.slot) - start[k]));
       }
       acc_z_sum += sim.imu().linear_acceleration[2];
+    }
+    for (size_t k = 0; k < n; ++k) {
+      std::printf("hold.%s=%.6f\n", rows[k].name.c_str(),
+        std::fabs(sim.position(rows[k].spec.slot) - start[k]));
     }
     const rhi::FakeImuReading & imu = sim.imu();
     std::printf("base_start=%.6f\nbase_min=%.6f\nbase_max=%.6f\njoint_max=%.6f\n",

@@ -207,12 +207,13 @@ def test_with_kp_zero_a_fixed_base_arm_sags_under_gravity(checker, talos_table, 
            f"({v['sag_joint']})")
 
 
-def test_the_physics_runs_faster_than_real_time(checker, talos_table, report):
+def test_the_physics_runs_faster_than_real_time_and_allocates_nothing(checker, talos_table, report):
     proc = run_check(checker, "rate", talos_table, TALOS_URDF, package_path=str(example_robot_data_prefix()),
                      seconds=10.0)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     v = values(proc.stdout)
     assert float(v["physics_steps"]) == 10000
+    assert int(v["mujoco_allocations"]) > 0 and int(v["step_allocations"]) == 0, proc.stdout  # hook live; none
     # A goal, loosely: even under the suite's load the 7-joint arm must step at well over 1 kHz.
     assert float(v["rtf"]) > 2.0, proc.stdout
     report(f"fake physics (MuJoCo): TALOS arm with meshes, 1 kHz physics at 500 Hz commands: "
@@ -306,5 +307,6 @@ def test_a_humanoid_on_the_band_steps_faster_than_real_time(checker, tmp_path, r
     assert proc.returncode == 0, proc.stdout + proc.stderr
     v = values(proc.stdout)
     assert float(v["physics_steps"]) == 10000 and float(v["rtf"]) > 2.0, proc.stdout
+    assert int(v["step_allocations"]) == 0, proc.stdout
     report(f"fake physics (MuJoCo): {robot} on the band, 1 kHz physics at 500 Hz commands: "
            f"{float(v['physics_hz']):.0f} steps/s, real-time factor {float(v['rtf']):.1f}")

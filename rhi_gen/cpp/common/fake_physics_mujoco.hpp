@@ -37,8 +37,9 @@
 // are MuJoCo's sensors, computed before the last physics step's integration (1 ms older).
 // A URDF MuJoCo cannot compile makes load() return false with one line naming the cause.
 // Not simulated (yet): velocity limits (MuJoCo has none), transmissions (each slot drives its URDF
-// joint one to one), a wheel's velocity servo (FakeJointSpec::velocity_commanded), motor
-// temperatures. step() allocates nothing (MuJoCo steps in the arena mj_makeData allocated).
+// joint one to one). A wheel's velocity servo is the transport's (zero kp, its kd towards the
+// commanded velocity), as with FakeJointDynamics. step() allocates nothing (MuJoCo steps in the
+// arena mj_makeData allocated).
 
 #include <mujoco/mujoco.h>
 

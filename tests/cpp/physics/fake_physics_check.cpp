@@ -16,7 +16,7 @@
 //   sag    every motor passive (kp = kd = 0): how far gravity moves the joints
 //   hold   (free or band base) the YAML's gains holding the start pose: base height and IMU
 //   rate   the track scenario's loop without the feed-forward's model, timed: physics steps per
-//          wall second, real-time factor
+//          wall second, real-time factor; and the allocations step() made (C++ and MuJoCo's)
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -34,6 +35,39 @@
 #include "robot_hardware_interface/common/fake_physics_mujoco.hpp"
 
 namespace rhi = robot_hardware_interface;
+
+// Allocations made inside FakeMujocoPhysics::step(): C++ ones through operator new, MuJoCo's
+// through its allocator hook (mju_user_malloc, installed before anything is loaded).
+namespace
+{
+bool g_counting = false;
+uint64_t g_step_allocations = 0;
+uint64_t g_mujoco_allocations = 0;  // all of them: the hook is live
+
+void * mujoco_malloc(size_t bytes)
+{
+  ++g_mujoco_allocations;
+  if (g_counting) {
+    ++g_step_allocations;
+  }
+  // MuJoCo's own allocator aligns to 64 bytes; aligned_alloc wants a multiple of the alignment.
+  return std::aligned_alloc(64, (bytes + 63) / 64 * 64);
+}
+}  // namespace
+
+void * operator new(size_t bytes)
+{
+  if (g_counting) {
+    ++g_step_allocations;
+  }
+  void * p = std::malloc(bytes == 0 ? 1 : bytes);
+  if (p == nullptr) {
+    throw std::bad_alloc();
+  }
+  return p;
+}
+void operator delete(void * p) noexcept {std::free(p);}
+void operator delete(void * p, size_t) noexcept {std::free(p);}
 
 namespace
 {
@@ -144,6 +178,8 @@ int main(int argc, char ** argv)
       argv[0]);
     return 2;
   }
+  mju_user_malloc = mujoco_malloc;
+  mju_user_free = std::free;
   const std::string scenario = argv[1];
   std::vector<Row> rows = read_table(argv[2]);
   std::vector<rhi::FakeJointSpec> specs;
@@ -229,7 +265,9 @@ int main(int argc, char ** argv)
         sim.command(rows[k].spec.slot,
           rhi::FakeMotorCommand{target[k], velocity[k], tau_ff[k], rows[k].kp, rows[k].kd});
       }
+      g_counting = true;
       sim.step(kCommandPeriod);
+      g_counting = false;
       if (t > 1.0) {
         for (size_t k = 0; k < n; ++k) {
           const double e = std::fabs(sim.position(rows[k].spec.slot) - target[k]);
@@ -248,6 +286,9 @@ int main(int argc, char ** argv)
     }
     std::printf("track_max=%.6f\ntrack_rms=%.6f\n", worst,
       samples > 0 ? std::sqrt(sum_sq / static_cast<double>(samples)) : 0.0);
+    std::printf("step_allocations=%llu\nmujoco_allocations=%llu\n",
+      static_cast<unsigned long long>(g_step_allocations),  // NOLINT(runtime/int)
+      static_cast<unsigned long long>(g_mujoco_allocations));  // NOLINT(runtime/int)
     std::printf("physics_steps=%.0f\nsimulated=%.6f\nwall=%.6f\nphysics_hz=%.1f\nrtf=%.3f\n",
       physics, physics * m->opt.timestep, wall, physics / wall, physics * m->opt.timestep / wall);
     // Then hold the last target without feed-forward: at rest, kp (q_t - q) = gravity(q), up to

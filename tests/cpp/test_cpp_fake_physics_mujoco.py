@@ -241,11 +241,13 @@ BROKEN = {
     "missing_file": ("", r"MuJoCo cannot read .*nowhere\.urdf: .*Error opening file"),
     "joint_not_in_urdf": (TALOS_URDF.read_text(encoding="utf-8").replace("arm_left_5_joint", "arm_left_five"),
                           r"joint 'arm_left_5_joint' of the joint table is not a moving joint of the URDF"),
+    "imu_link_not_in_urdf": (TALOS_URDF.read_text(encoding="utf-8"),
+                             r"the IMU link 'no_such_link' is not a link of the URDF"),
 }
 
 
 @pytest.mark.parametrize("case", sorted(BROKEN))
-def test_a_urdf_mujoco_cannot_take_gives_one_error_line(checker, talos_table, tmp_path, case):
+def test_what_mujoco_cannot_take_gives_one_error_line(checker, talos_table, tmp_path, case):
     text, expected = BROKEN[case]
     table = talos_table
     if case == "massless_links":  # the SCARA's links have no <inertial>: nothing to simulate
@@ -256,7 +258,7 @@ def test_a_urdf_mujoco_cannot_take_gives_one_error_line(checker, talos_table, tm
     else:
         urdf = tmp_path / "broken.urdf"
         urdf.write_text(text, encoding="utf-8")
-    proc = run_check(checker, "load", table, urdf)
+    proc = run_check(checker, "load", table, urdf, imu="no_such_link" if case == "imu_link_not_in_urdf" else "")
     assert proc.returncode == 1, proc.stdout + proc.stderr
     lines = proc.stdout.splitlines()
     assert len(lines) == 1 and lines[0].startswith("error="), lines
@@ -297,6 +299,16 @@ def test_without_the_band_a_free_humanoid_falls(checker, tmp_path):
     assert proc.returncode == 0, proc.stdout + proc.stderr
     v = values(proc.stdout)
     assert float(v["base_min"]) < float(v["base_start"]) - 0.1, proc.stdout
+
+
+def test_a_released_band_lets_the_humanoid_fall(checker, tmp_path):
+    yaml_path, urdf, imu, _ = FLOATING["g1"]
+    table = joint_table(yaml_path, urdf, tmp_path / "g1.tab", held=(), inset=False)
+    proc = run_check(checker, "drop", table, urdf, base="band", imu=imu, seconds=3.0)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    v = values(proc.stdout)
+    assert v["band_holding"] == "0"
+    assert float(v["lowest_after"]) < float(v["released_at"]) - 0.1, proc.stdout
 
 
 @pytest.mark.parametrize("robot", sorted(FLOATING))

@@ -68,28 +68,28 @@ enum class FakeBase
   kFixed,  // no floating base: the root link is welded to the world
 };
 
-// "free" | "band" | "fixed" -> FakeBase; false for anything else.
-inline bool parse_fake_base(const char * text, FakeBase * base)
-{
-  if (std::strcmp(text, "free") == 0) {
-    *base = FakeBase::kFree;
-  } else if (std::strcmp(text, "band") == 0) {
-    *base = FakeBase::kBand;
-  } else if (std::strcmp(text, "fixed") == 0) {
-    *base = FakeBase::kFixed;
-  } else {
-    return false;
-  }
-  return true;
-}
-
-inline const char * fake_base_name(FakeBase base)
-{
-  return base == FakeBase::kFree ? "free" : base == FakeBase::kBand ? "band" : "fixed";
-}
-
 struct FakePhysicsOptions
 {
+  // "free" | "band" | "fixed" -> FakeBase; false for anything else. (Members, not free functions:
+  // the package namespace keeps no name a vendor could want, rhi_gen/model/naming.py.)
+  static bool parse_base(const char * text, FakeBase * base)
+  {
+    if (std::strcmp(text, "free") == 0) {
+      *base = FakeBase::kFree;
+    } else if (std::strcmp(text, "band") == 0) {
+      *base = FakeBase::kBand;
+    } else if (std::strcmp(text, "fixed") == 0) {
+      *base = FakeBase::kFixed;
+    } else {
+      return false;
+    }
+    return true;
+  }
+  static const char * base_name(FakeBase base)
+  {
+    return base == FakeBase::kFree ? "free" : base == FakeBase::kBand ? "band" : "fixed";
+  }
+
   std::string urdf_path;          // the package's installed URDF
   FakeBase base{FakeBase::kBand};
   double timestep{0.001};         // [s] one physics step: 1 kHz

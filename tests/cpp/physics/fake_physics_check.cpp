@@ -15,6 +15,7 @@
 //          without feed-forward (at rest, kp * error = gravity, up to the joint's friction)
 //   sag    every motor passive (kp = kd = 0): how far gravity moves the joints
 //   hold   (free or band base) the YAML's gains holding the start pose: base height and IMU
+//   drop   (band) the same, the band released half-way: where the base goes
 //   rate   the track scenario's loop without the feed-forward's model, timed: physics steps per
 //          wall second, real-time factor; and the allocations step() made (C++ and MuJoCo's)
 
@@ -188,8 +189,8 @@ int main(int argc, char ** argv)
   }
   rhi::FakePhysicsOptions options;
   options.urdf_path = argv[3];
-  if (!rhi::parse_fake_base(argv[4], &options.base)) {
-    std::fprintf(stderr, "base: free, band or fixed\n");
+  if (!rhi::FakePhysicsOptions::parse_base(argv[4], &options.base)) {
+    std::fprintf(stderr, "base: free, band or fixed, not %s\n", argv[4]);
     return 2;
   }
   options.package_path = argv[5];
@@ -350,6 +351,26 @@ int main(int argc, char ** argv)
       imu.linear_acceleration[0], imu.linear_acceleration[1], imu.linear_acceleration[2],
       acc_z_sum / steps, imu.orientation[0], imu.orientation[1], imu.orientation[2],
       imu.orientation[3]);
+  } else if (scenario == "drop") {
+    // Half the time on the band, then released: the base's height at the release and its lowest.
+    double released_at = 0.0;
+    double lowest = INFINITY;
+    for (int i = 0; i < steps; ++i) {
+      if (i == steps / 2) {
+        sim.release_band();
+        released_at = sim.base_position()[2];
+      }
+      for (size_t k = 0; k < n; ++k) {
+        sim.command(rows[k].spec.slot,
+          rhi::FakeMotorCommand{start[k], 0.0, 0.0, rows[k].kp, rows[k].kd});
+      }
+      sim.step(kCommandPeriod);
+      if (i >= steps / 2) {
+        lowest = std::min(lowest, sim.base_position()[2]);
+      }
+    }
+    std::printf("band_holding=%d\nreleased_at=%.6f\nlowest_after=%.6f\n",
+      sim.band_holding() ? 1 : 0, released_at, lowest);
   } else {
     std::fprintf(stderr, "unknown scenario %s\n", scenario.c_str());
     mj_deleteData(scratch);

@@ -207,6 +207,20 @@ def test_with_kp_zero_a_fixed_base_arm_sags_under_gravity(checker, talos_table, 
            f"({v['sag_joint']})")
 
 
+def test_the_fake_robots_joint_dynamics_hand_their_joints_to_the_physics(checker, talos_table):
+    """FakeJointDynamics::use_engine: what the runner and the transports read is MuJoCo's state, the same
+    motion as driving FakeMujocoPhysics directly, bit for bit."""
+    runs = {scenario: run_check(checker, scenario, talos_table, TALOS_URDF, seconds=2.0)
+            for scenario in ("sag", "engine")}
+    for proc in runs.values():
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+    direct, through = (values(runs[s].stdout) for s in ("sag", "engine"))
+    assert through["physics_steps"] == "2000"
+    assert {k: x for k, x in through.items() if k.startswith("sag")} == \
+        {k: x for k, x in direct.items() if k.startswith("sag")}
+    assert float(through["sag_max"]) > SAG
+
+
 def test_the_physics_runs_faster_than_real_time_and_allocates_nothing(checker, talos_table, report):
     proc = run_check(checker, "rate", talos_table, TALOS_URDF, package_path=str(example_robot_data_prefix()),
                      seconds=10.0)

@@ -11,6 +11,8 @@
 // vacuum of fake_joint_dynamics.hpp. FakeMujocoPhysics<N> has FakeJointDynamics<N>'s interface
 // (command, release, step, place, position, velocity, effort, last_command, ...), so the
 // transport's fake side reads and writes either the same way; it adds load(), the IMU and the base.
+// It is also a FakeJointEngine<N>: FakeJointDynamics::use_engine() hands the fake robot's joints to
+// it at run time, the transports reading FakeJointDynamics as before.
 //
 // What it simulates:
 // - the robot from the URDF: MuJoCo's URDF defaults (visual elements discarded, static bodies
@@ -128,7 +130,7 @@ struct FakeImuReading
 inline constexpr double kBandSagDefault = 0.02;
 
 template<size_t N>
-class FakeMujocoPhysics
+class FakeMujocoPhysics final : public FakeJointEngine<N>
 {
 public:
   FakeMujocoPhysics(const FakeJointSpec * joints, size_t count)
@@ -141,7 +143,7 @@ public:
     }
   }
 
-  ~FakeMujocoPhysics() {unload();}
+  ~FakeMujocoPhysics() override {unload();}
   FakeMujocoPhysics(const FakeMujocoPhysics &) = delete;
   FakeMujocoPhysics & operator=(const FakeMujocoPhysics &) = delete;
 
@@ -225,8 +227,25 @@ public:
     read_state();
   }
 
+  // As the engine of a FakeJointDynamics (use_engine): its commands in, the joints' state out.
+  void advance(
+    double dt, const std::array<FakeMotorCommand, N> & command, std::array<double, N> & q,
+    std::array<double, N> & dq, std::array<double, N> & tau) override
+  {
+    command_ = command;
+    step(dt);
+    for (size_t k = 0; k < count_; ++k) {
+      const size_t s = joints_[k].slot;
+      if (s < N) {
+        q[s] = q_[s];
+        dq[s] = dq_[s];
+        tau[s] = tau_[s];
+      }
+    }
+  }
+
   // Put a joint at rest at `q` (clamped into its limits), as FakeJointDynamics::place.
-  void place(size_t slot, double q)
+  void place(size_t slot, double q) override
   {
     for (size_t k = 0; k < count_; ++k) {
       if (joints_[k].slot == slot && slot < N) {

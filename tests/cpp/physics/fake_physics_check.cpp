@@ -14,6 +14,7 @@
 //          feed-forward (tau_ff: a perfect model's gravity torque at the target); then a hold
 //          without feed-forward (at rest, kp * error = gravity, up to the joint's friction)
 //   sag    every motor passive (kp = kd = 0): how far gravity moves the joints
+//   engine the sag scenario through FakeJointDynamics::use_engine, as a fake robot would run it
 //   hold   (free or band base) the YAML's gains holding the start pose: base height and IMU
 //   drop   (band) the same, the band released half-way: where the base goes
 //   rate   the track scenario's loop without the feed-forward's model, timed: physics steps per
@@ -225,22 +226,44 @@ int main(int argc, char ** argv)
   mjData * scratch = mj_makeData(m);
   const int steps = static_cast<int>(std::lround(seconds / kCommandPeriod));
 
-  if (scenario == "sag") {
+  if (scenario == "sag" || scenario == "engine") {
+    // engine: the same through FakeJointDynamics with the physics as its engine, as the fake robot
+    // runs it (its runner and transports only know FakeJointDynamics); a place() first, which
+    // must reach the engine, then the joints let go.
+    rhi::FakeJointDynamics<kSlots> dynamics(specs.data(), specs.size());
+    const bool through = scenario == "engine";
+    if (through) {
+      dynamics.use_engine(&sim);
+      for (size_t k = 0; k < n; ++k) {
+        dynamics.place(rows[k].spec.slot, start[k]);
+      }
+    }
     sim.release();
     double worst = 0.0;
     std::string worst_joint;
     for (int i = 0; i < steps; ++i) {
-      sim.step(kCommandPeriod);
+      if (through) {
+        dynamics.step(kCommandPeriod);
+      } else {
+        sim.step(kCommandPeriod);
+      }
     }
     for (size_t k = 0; k < n; ++k) {
-      const double moved = std::fabs(sim.position(rows[k].spec.slot) - start[k]);
+      const size_t s = rows[k].spec.slot;
+      const double now = through ? dynamics.position(s) : sim.position(s);
+      if (through && (now != sim.position(s) || dynamics.velocity(s) != sim.velocity(s))) {
+        std::printf("error=FakeJointDynamics reads %g, the engine has %g\n", now, sim.position(s));
+        return 1;
+      }
+      const double moved = std::fabs(now - start[k]);
       std::printf("sag.%s=%.6f\n", rows[k].name.c_str(), moved);
       if (moved > worst) {
         worst = moved;
         worst_joint = rows[k].name;
       }
     }
-    std::printf("sag_max=%.6f\nsag_joint=%s\n", worst, worst_joint.c_str());
+    std::printf("sag_max=%.6f\nsag_joint=%s\nphysics_steps=%llu\n", worst, worst_joint.c_str(),
+      static_cast<unsigned long long>(sim.physics_steps()));  // NOLINT(runtime/int)
   } else if (scenario == "track" || scenario == "rate") {
     const double w = 2.0 * M_PI * 0.5;
     double worst = 0.0;

@@ -13,6 +13,7 @@
 // clamped to the URDF effort limit, with the URDF velocity and position limits as hard stops, an
 // inertia estimated from the URDF's link masses and a viscous damping. No gravity, no contact.
 // Integrated with implicit Euler, so that any gains a controller sends are stable at any rate.
+// Or, handed to a FakeJointEngine (use_engine), moved by a physics engine instead.
 
 #include <algorithm>
 #include <array>
@@ -48,6 +49,23 @@ struct FakeMotorCommand
   double kd{0.0};
 };
 
+// A physics engine the joints can be handed to instead (fake_physics_mujoco.hpp: MuJoCo, with
+// gravity, contacts and the links' coupling). FakeJointDynamics then keeps the commands and the
+// state the transports read, and the engine moves the joints.
+template<size_t N>
+class FakeJointEngine
+{
+public:
+  virtual ~FakeJointEngine() = default;
+  // Advance by dt seconds under `command`; leave each driven slot's position, velocity and motor
+  // torque in q, dq and tau.
+  virtual void advance(
+    double dt, const std::array<FakeMotorCommand, N> & command, std::array<double, N> & q,
+    std::array<double, N> & dq, std::array<double, N> & tau) = 0;
+  // Put a joint at rest at `q` (already clamped into its limits).
+  virtual void place(size_t slot, double q) = 0;
+};
+
 template<size_t N>
 class FakeJointDynamics
 {
@@ -81,9 +99,18 @@ public:
   // Every motor passive (zero gains, zero torque), as when nobody commands the robot.
   void release() {command_.fill(FakeMotorCommand{});}
 
+  // Hand the joints to a physics engine (nullptr: back to the rotors above). Not owned; it starts
+  // from its own model of the robot, and place() reaches it too.
+  void use_engine(FakeJointEngine<N> * engine) {engine_ = engine;}
+  bool has_engine() const {return engine_ != nullptr;}
+
   // Advance every joint by dt seconds.
   void step(double dt)
   {
+    if (engine_ != nullptr) {
+      engine_->advance(dt, command_, q_, dq_, tau_);
+      return;
+    }
     for (size_t k = 0; k < count_; ++k) {
       step_joint(joints_[k], dt);
     }
@@ -97,6 +124,9 @@ public:
         q_[slot] = std::clamp(q, joints_[k].position_min, joints_[k].position_max);
         dq_[slot] = 0.0;
         tau_[slot] = 0.0;
+        if (engine_ != nullptr) {
+          engine_->place(slot, q_[slot]);
+        }
       }
     }
   }
@@ -151,6 +181,7 @@ private:
   std::array<double, N> tau_{};
   std::array<FakeMotorCommand, N> command_{};
   uint64_t rejected_commands_{0};
+  FakeJointEngine<N> * engine_{nullptr};
 };
 
 }  // namespace robot_hardware_interface

@@ -221,6 +221,49 @@ def test_the_fake_robots_joint_dynamics_hand_their_joints_to_the_physics(checker
     assert float(through["sag_max"]) > SAG
 
 
+def test_motors_behind_transmissions_move_their_joints_as_the_urdf_joints_would(checker, talos_table, tmp_path):
+    """The TALOS arm's YAML puts three motors behind transmissions (arm_left_2: offset 0.1; arm_left_4: reversed,
+    reduction 100; the gripper: reduction 2.5, offset -0.05). The same arm, held by the same joint gains, is
+    simulated twice: in joint units, and in motor units with each motor's gain and offset (its limits, start
+    and gains converted; the limits are the fake robot's own, rhi-gen's fake_robot_view). The joints must
+    move the same. The wrist's differential pair (coupled joints) is simulated one to one both times."""
+    from rhi_gen.render.fake_robot_views import fake_robot_view
+    from tests.support.cpp_build import load_models, make_test_project
+
+    loaded = load_models(make_test_project(tmp_path / "proj", only=["pal/talos_arm"]))
+    model = next(item.model for item in loaded if item.model.robot == "talos_arm")
+    coupled = {name for group in model.coupled_groups for name in group.joints}
+    view = {line.joint: line for line in fake_robot_view(model).joints}
+    gains = {j.name: (1.0, 0.0) if j.name in coupled else
+             (j.transmission.direction * j.transmission.reduction, j.transmission.offset)
+             for j in model.joints_by_index}
+    assert sum(1 for g, o in gains.values() if (g, o) != (1.0, 0.0)) == 3, gains
+    motor_lines = []
+    for line in talos_table.read_text(encoding="utf-8").splitlines():
+        name, slot, lo, hi, vel, eff, start, kp, kd, amplitude = line.split()
+        g, o = gains[name]
+        lo_m, hi_m = sorted((g * (float(lo) - o), g * (float(hi) - o)))
+        vel_m, eff_m = float(vel) * abs(g), float(eff) / abs(g)
+        if name not in coupled:  # the limits as the generated fake robot has them
+            v = view[name]
+            assert (math.isclose(lo_m, v.position_min, abs_tol=1e-12) and math.isclose(hi_m, v.position_max)
+                    and math.isclose(vel_m, v.velocity_max) and math.isclose(eff_m, v.effort_max)), (name, v)
+        motor_lines.append(f"{name} {slot} {lo_m!r} {hi_m!r} {vel_m!r} {eff_m!r} {g * (float(start) - o)!r} "
+                           f"{float(kp) / g ** 2!r} {float(kd) / g ** 2!r} {amplitude} {g!r} {o!r}")
+    motor_table = tmp_path / "talos_motors.tab"
+    motor_table.write_text("\n".join(motor_lines) + "\n", encoding="utf-8")
+    runs = [run_check(checker, "hold", table, TALOS_URDF, seconds=2.0) for table in (talos_table, motor_table)]
+    for proc in runs:
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+    joint_units, motor_units = (values(proc.stdout) for proc in runs)
+    for name, (g, o) in gains.items():
+        assert math.isclose(float(motor_units[f"pos.{name}"]) / g + o, float(joint_units[f"pos.{name}"]),
+                            abs_tol=1e-6), name
+        assert math.isclose(float(motor_units[f"effort.{name}"]) * g, float(joint_units[f"effort.{name}"]),
+                            rel_tol=1e-6, abs_tol=1e-6), name
+    assert float(joint_units["effort.arm_left_4_joint"]) != 0.0   # the geared motor holds weight
+
+
 def test_the_physics_runs_faster_than_real_time_and_allocates_nothing(checker, talos_table, report):
     proc = run_check(checker, "rate", talos_table, TALOS_URDF, package_path=str(example_robot_data_prefix()),
                      seconds=10.0)

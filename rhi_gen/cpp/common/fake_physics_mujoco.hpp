@@ -34,14 +34,17 @@
 //   physics step (FakePhysicsOptions::timestep, 1 ms by default: 1 kHz);
 // - an IMU at a link (FakePhysicsOptions::imu_link): MuJoCo's framequat, gyro and accelerometer
 //   sensors at a site on that link: orientation in the world, angular velocity and linear
-//   acceleration (with gravity: +9.81 upwards at rest) in the link's frame.
+//   acceleration (with gravity: +9.81 upwards at rest) in the link's frame;
+// - a motor behind a transmission (FakePhysicsOptions::transmissions) in motor units, as the
+//   fake robot's joint table (FakeJointSpec) has it: motor = gain * (joint - offset), the joint's
+//   torque gain times the motor's (ros2_control's SimpleTransmission, gain = direction *
+//   reduction). Coupled joints (a matrix mixing motors) are not simulated.
 // After step(), the joints' positions and velocities are the integrated state; the IMU's readings
 // are MuJoCo's sensors, computed before the last physics step's integration (1 ms older).
 // A URDF MuJoCo cannot compile makes load() return false with one line naming the cause.
-// Not simulated (yet): velocity limits (MuJoCo has none), transmissions (each slot drives its URDF
-// joint one to one). A wheel's velocity servo is the transport's (zero kp, its kd towards the
-// commanded velocity), as with FakeJointDynamics. step() allocates nothing (MuJoCo steps in the
-// arena mj_makeData allocated).
+// Not simulated (yet): velocity limits (MuJoCo has none), coupled joints. A wheel's velocity
+// servo is the transport's (zero kp, its kd towards the commanded velocity), as with
+// FakeJointDynamics. step() allocates nothing (MuJoCo steps in the arena mj_makeData allocated).
 
 #include <mujoco/mujoco.h>
 
@@ -68,6 +71,14 @@ enum class FakeBase
   kFree,   // a free joint: the robot stands or falls on the floor
   kBand,   // free, held up by an elastic band until release_band()
   kFixed,  // no floating base: the root link is welded to the world
+};
+
+// How a motor drives its joint: motor = gain * (joint - offset); the joint's torque is gain times
+// the motor's.
+struct FakeTransmission
+{
+  double gain{1.0};    // direction * reduction
+  double offset{0.0};  // [rad or m] the joint's value at motor zero
 };
 
 struct FakePhysicsOptions
@@ -99,6 +110,8 @@ struct FakePhysicsOptions
   // it has one value per joint of the table (FakeJointSpec order), overrides it joint by joint.
   double armature{0.01};
   std::vector<double> armatures;
+  // One per joint of the table (FakeJointSpec order), or none: every motor is its joint.
+  std::vector<FakeTransmission> transmissions;
   std::string imu_link;           // URDF link of the IMU; "" = the root link
   std::string package_path;       // ':'-separated prefixes to resolve package:// under
   // The band: stiffness [N/m] and damping [N s/m]; 0 = the robot's weight stretches it by
@@ -164,6 +177,23 @@ public:
       *error = "armatures: " + std::to_string(options_.armatures.size()) + " values for " +
         std::to_string(count_) + " joints";
       return false;
+    }
+    if (!options_.transmissions.empty() && options_.transmissions.size() != count_) {
+      *error = "transmissions: " + std::to_string(options_.transmissions.size()) +
+        " values for " + std::to_string(count_) + " joints";
+      return false;
+    }
+    gain_.assign(count_, 1.0);
+    offset_.assign(count_, 0.0);
+    for (size_t k = 0; k < options_.transmissions.size(); ++k) {
+      const FakeTransmission & tr = options_.transmissions[k];
+      if (!std::isfinite(tr.gain) || tr.gain == 0.0 || !std::isfinite(tr.offset)) {
+        *error = std::string("joint '") + joints_[k].name + "': a transmission needs a finite, "
+          "non-zero gain and a finite offset";
+        return false;
+      }
+      gain_[k] = tr.gain;
+      offset_[k] = tr.offset;
     }
     char parse_error[1024] = {0};
     mjSpec * spec = mj_parseXML(
@@ -251,7 +281,7 @@ public:
       if (joints_[k].slot == slot && slot < N) {
         q = std::clamp(q, joints_[k].position_min, joints_[k].position_max);
         if (data_ != nullptr) {
-          data_->qpos[qpos_adr_[k]] = q;
+          data_->qpos[qpos_adr_[k]] = joint_position(k, q);
           data_->qvel[dof_adr_[k]] = 0.0;
           mj_forward(model_, data_);
           read_state();
@@ -571,8 +601,8 @@ private:
   {
     mj_resetData(model_, data_);
     for (size_t k = 0; k < count_; ++k) {
-      data_->qpos[qpos_adr_[k]] = std::clamp(
-        joints_[k].initial_position, joints_[k].position_min, joints_[k].position_max);
+      data_->qpos[qpos_adr_[k]] = joint_position(k, std::clamp(
+          joints_[k].initial_position, joints_[k].position_min, joints_[k].position_max));
     }
     mj_forward(model_, data_);
   }
@@ -598,6 +628,9 @@ private:
     e.reach += largest_geom;
     return e;
   }
+
+  // A motor position of joint k of the table, as the joint's.
+  double joint_position(size_t k, double motor) const {return motor / gain_[k] + offset_[k];}
 
   static double norm3(const mjtNum * v) {return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);}
 
@@ -672,11 +705,12 @@ private:
         continue;
       }
       const FakeMotorCommand & c = command_[j.slot];
-      const double q = data_->qpos[qpos_adr_[k]];
-      const double dq = data_->qvel[dof_adr_[k]];
+      // In motor units, as the motor board sees it; the joint gets gain times the torque.
+      const double q = gain_[k] * (data_->qpos[qpos_adr_[k]] - offset_[k]);
+      const double dq = gain_[k] * data_->qvel[dof_adr_[k]];
       double tau = c.kp * (c.q - q) + c.kd * (c.dq - dq) + c.tau_ff;
       tau = std::clamp(tau, -j.effort_max, j.effort_max);
-      data_->qfrc_applied[dof_adr_[k]] = tau;
+      data_->qfrc_applied[dof_adr_[k]] = gain_[k] * tau;
       tau_[j.slot] = tau;
     }
     mjtNum * wrench = data_->xfrc_applied + 6 * root_body_;
@@ -716,8 +750,8 @@ private:
     for (size_t k = 0; k < count_; ++k) {
       const size_t s = joints_[k].slot;
       if (s < N) {
-        q_[s] = data_->qpos[qpos_adr_[k]];
-        dq_[s] = data_->qvel[dof_adr_[k]];
+        q_[s] = gain_[k] * (data_->qpos[qpos_adr_[k]] - offset_[k]);
+        dq_[s] = gain_[k] * data_->qvel[dof_adr_[k]];
       }
     }
     const mjtNum * quat = data_->sensordata + model_->sensor_adr[0];
@@ -754,6 +788,8 @@ private:
   mjData * data_{nullptr};
   std::vector<int> qpos_adr_;  // per joint of the table
   std::vector<int> dof_adr_;
+  std::vector<double> gain_;   // per joint of the table: motor = gain * (joint - offset)
+  std::vector<double> offset_;
   std::string root_name_;
   int root_body_{-1};
   int free_joint_{-1};

@@ -7,7 +7,8 @@
 //   fake_physics_check SCENARIO TABLE URDF BASE PACKAGE_PATH IMU_LINK [SECONDS]
 //
 // TABLE: one joint a line, "name slot min max velocity_max effort_max initial kp kd amplitude"
-// (rhi-gen's reading of the URDF and the vendor YAML, written by the test). Scenarios:
+// (rhi-gen's reading of the URDF and the vendor YAML, written by the test), optionally followed
+// by "gain offset", the motor's transmission (then the row is in motor units). Scenarios:
 //   load   load only: ok=1 or error=<the one line>, warning=<line> each, the model's sizes
 //   track  the YAML's gains, the joints following sines of their amplitude (0.5 Hz) from their
 //          start pose under gravity, after a second at rest, with a controller's gravity
@@ -84,6 +85,7 @@ struct Row
   double kp{0.0};
   double kd{0.0};
   double amplitude{0.0};  // of the track scenario's sine [rad or m]
+  rhi::FakeTransmission transmission{};
 };
 
 double number(const std::string & text)
@@ -120,6 +122,10 @@ std::vector<Row> read_table(const char * path)
     r.kp = number(kp);
     r.kd = number(kd);
     r.amplitude = number(amplitude);
+    std::string gain, offset;
+    if (words >> gain >> offset) {
+      r.transmission = rhi::FakeTransmission{number(gain), number(offset)};
+    }
     rows.push_back(r);
   }
   for (Row & r : rows) {
@@ -195,6 +201,14 @@ int main(int argc, char ** argv)
     return 2;
   }
   options.package_path = argv[5];
+  for (const Row & r : rows) {
+    if (r.transmission.gain != 1.0 || r.transmission.offset != 0.0) {
+      for (const Row & each : rows) {
+        options.transmissions.push_back(each.transmission);
+      }
+      break;
+    }
+  }
   options.imu_link = argv[6];
   const double seconds = argc > 7 ? std::strtod(argv[7], nullptr) : 4.0;
 
@@ -256,7 +270,8 @@ int main(int argc, char ** argv)
         return 1;
       }
       const double moved = std::fabs(now - start[k]);
-      std::printf("sag.%s=%.6f\n", rows[k].name.c_str(), moved);
+      std::printf("sag.%s=%.6f\npos.%s=%.17g\n", rows[k].name.c_str(), moved, rows[k].name.c_str(),
+        now);
       if (moved > worst) {
         worst = moved;
         worst_joint = rows[k].name;
@@ -364,8 +379,9 @@ int main(int argc, char ** argv)
       acc_z_sum += sim.imu().linear_acceleration[2];
     }
     for (size_t k = 0; k < n; ++k) {
-      std::printf("hold.%s=%.6f\n", rows[k].name.c_str(),
-        std::fabs(sim.position(rows[k].spec.slot) - start[k]));
+      std::printf("hold.%s=%.6f\npos.%s=%.17g\neffort.%s=%.17g\n", rows[k].name.c_str(),
+        std::fabs(sim.position(rows[k].spec.slot) - start[k]), rows[k].name.c_str(),
+        sim.position(rows[k].spec.slot), rows[k].name.c_str(), sim.effort(rows[k].spec.slot));
     }
     const rhi::FakeImuReading & imu = sim.imu();
     std::printf("base_start=%.6f\nbase_min=%.6f\nbase_max=%.6f\njoint_max=%.6f\n",

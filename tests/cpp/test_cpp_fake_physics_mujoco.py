@@ -149,9 +149,10 @@ def joint_table(yaml_path: Path, urdf_path: Path, path: Path, *, held: tuple[str
 
 
 def run_check(checker: Path, scenario: str, table: Path, urdf: Path, *, base: str = "fixed",
-              package_path: str = "", imu: str = "", seconds: float = 4.0) -> subprocess.CompletedProcess:
-    return subprocess.run([str(checker), scenario, str(table), str(urdf), base, package_path, imu, str(seconds)],
-                          capture_output=True, text=True, timeout=300)
+              package_path: str = "", imu: str = "", seconds: float = 4.0,
+              timestep: float = 0.001) -> subprocess.CompletedProcess:
+    return subprocess.run([str(checker), scenario, str(table), str(urdf), base, package_path, imu, str(seconds),
+                           str(timestep)], capture_output=True, text=True, timeout=300)
 
 
 def values(stdout: str) -> dict[str, str]:
@@ -300,6 +301,9 @@ BROKEN = {
                           r"joint 'arm_left_5_joint' of the joint table is not a moving joint of the URDF"),
     "imu_link_not_in_urdf": (TALOS_URDF.read_text(encoding="utf-8"),
                              r"the IMU link 'no_such_link' is not a link of the URDF"),
+    "physics_slower_than_1khz": (TALOS_URDF.read_text(encoding="utf-8"),
+                                 (r"the physics timestep must be more than 0 and at most 0\.001 s \(1 kHz or "
+                                  r"faster\), not 0\.002$")),
 }
 
 
@@ -315,7 +319,8 @@ def test_what_mujoco_cannot_take_gives_one_error_line(checker, talos_table, tmp_
     else:
         urdf = tmp_path / "broken.urdf"
         urdf.write_text(text, encoding="utf-8")
-    proc = run_check(checker, "load", table, urdf, imu="no_such_link" if case == "imu_link_not_in_urdf" else "")
+    proc = run_check(checker, "load", table, urdf, imu="no_such_link" if case == "imu_link_not_in_urdf" else "",
+                     timestep=0.002 if case == "physics_slower_than_1khz" else 0.001)
     assert proc.returncode == 1, proc.stdout + proc.stderr
     lines = proc.stdout.splitlines()
     assert len(lines) == 1 and lines[0].startswith("error="), lines

@@ -105,7 +105,7 @@ struct FakePhysicsOptions
 
   std::string urdf_path;          // the package's installed URDF
   FakeBase base{FakeBase::kBand};
-  double timestep{0.001};         // [s] one physics step: 1 kHz
+  double timestep{0.001};         // [s] one physics step: 1 kHz (at most kLongestTimestep)
   // Rotor inertia reflected to each joint of the table [kg m^2] (slider: [kg]); `armatures`, when
   // it has one value per joint of the table (FakeJointSpec order), overrides it joint by joint.
   double armature{0.01};
@@ -141,6 +141,8 @@ struct FakeImuReading
 
 // How far the robot's weight stretches a band of default stiffness [m].
 inline constexpr double kBandSagDefault = 0.02;
+// The physics steps at 1 kHz or faster [s].
+inline constexpr double kLongestTimestep = 0.001;
 
 template<size_t N>
 class FakeMujocoPhysics final : public FakeJointEngine<N>
@@ -169,8 +171,11 @@ public:
     unload();
     options_ = options;
     quiet_logging();
-    if (!(options_.timestep > 0.0) || !std::isfinite(options_.timestep)) {
-      *error = "the physics timestep must be a positive number of seconds";
+    if (!(options_.timestep > 0.0 && options_.timestep <= kLongestTimestep)) {
+      char given[32];
+      std::snprintf(given, sizeof(given), "%g", options_.timestep);
+      *error = std::string("the physics timestep must be more than 0 and at most 0.001 s (1 kHz ") +
+        "or faster), not " + given;
       return false;
     }
     if (!options_.armatures.empty() && options_.armatures.size() != count_) {

@@ -4,7 +4,7 @@
 // Drives FakeMujocoPhysics (rhi_gen/cpp/common/fake_physics_mujoco.hpp) against the real MuJoCo
 // for tests/cpp/test_cpp_fake_physics_mujoco.py, which asserts on what it prints (key=value lines).
 //
-//   fake_physics_check SCENARIO TABLE URDF BASE PACKAGE_PATH IMU_LINK [SECONDS]
+//   fake_physics_check SCENARIO TABLE URDF BASE PACKAGE_PATH IMU_LINK [SECONDS [TIMESTEP]]
 //
 // TABLE: one joint a line, "name slot min max velocity_max effort_max initial kp kd amplitude"
 // (rhi-gen's reading of the URDF and the vendor YAML, written by the test), optionally followed
@@ -182,7 +182,8 @@ static_assert(drop_in<rhi::FakeMujocoPhysics<kSlots>>());
 int main(int argc, char ** argv)
 {
   if (argc < 7) {
-    std::fprintf(stderr, "usage: %s SCENARIO TABLE URDF BASE PACKAGE_PATH IMU_LINK [SECONDS]\n",
+    std::fprintf(stderr,
+      "usage: %s SCENARIO TABLE URDF BASE PACKAGE_PATH IMU_LINK [SECONDS [TIMESTEP]]\n",
       argv[0]);
     return 2;
   }
@@ -211,6 +212,9 @@ int main(int argc, char ** argv)
   }
   options.imu_link = argv[6];
   const double seconds = argc > 7 ? std::strtod(argv[7], nullptr) : 4.0;
+  if (argc > 8) {
+    options.timestep = std::strtod(argv[8], nullptr);
+  }
 
   rhi::FakeMujocoPhysics<kSlots> sim(specs.data(), specs.size());
   std::string error;

@@ -208,6 +208,22 @@ def test_with_kp_zero_a_fixed_base_arm_sags_under_gravity(checker, talos_table, 
            f"({v['sag_joint']})")
 
 
+def test_the_imu_on_a_moving_link_reads_its_rotation(checker, talos_table):
+    """The IMU at arm_left_2_link (its joint turns about the link's x axis, the root link is welded upright),
+    0.3 s into a sag: the orientation is a rotation about x by the joint's angle, the angular velocity the
+    joint's velocity about x. MuJoCo's sensors are computed before the last 1 ms step's integration, so they
+    lag the joint state by one physics step: tolerances 0.01 rad and 5 % + 0.05 rad/s."""
+    proc = run_check(checker, "sag", talos_table, TALOS_URDF, imu="arm_left_2_link", seconds=0.3)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    v = values(proc.stdout)
+    q, dq = float(v["pos.arm_left_2_joint"]), float(v["vel.arm_left_2_joint"])
+    assert abs(dq) > 0.5, proc.stdout        # mid-fall
+    w, x, y, z = (float(c) for c in v["imu_quat"].split())
+    assert abs(2 * math.atan2(x, w) - q) < 0.01 and abs(y) < 1e-3 and abs(z) < 1e-3, (q, v["imu_quat"])
+    gx, gy, gz = (float(c) for c in v["imu_gyro"].split())
+    assert abs(gx - dq) < 0.05 * abs(dq) + 0.05 and abs(gy) < 0.05 and abs(gz) < 0.05, (dq, v["imu_gyro"])
+
+
 def test_the_fake_robots_joint_dynamics_hand_their_joints_to_the_physics(checker, talos_table):
     """FakeJointDynamics::use_engine: what the runner and the transports read is MuJoCo's state, the same
     motion as driving FakeMujocoPhysics directly, bit for bit."""

@@ -283,6 +283,13 @@ int main(int argc, char ** argv)
     }
     std::printf("sag_max=%.6f\nsag_joint=%s\nphysics_steps=%llu\n", worst, worst_joint.c_str(),
       static_cast<unsigned long long>(sim.physics_steps()));  // NOLINT(runtime/int)
+    for (size_t k = 0; k < n; ++k) {
+      std::printf("vel.%s=%.17g\n", rows[k].name.c_str(), sim.velocity(rows[k].spec.slot));
+    }
+    const rhi::FakeImuReading & imu = sim.imu();
+    std::printf("imu_quat=%.17g %.17g %.17g %.17g\nimu_gyro=%.17g %.17g %.17g\n",
+      imu.orientation[0], imu.orientation[1], imu.orientation[2], imu.orientation[3],
+      imu.angular_velocity[0], imu.angular_velocity[1], imu.angular_velocity[2]);
   } else if (scenario == "track" || scenario == "rate") {
     const double w = 2.0 * M_PI * 0.5;
     double worst = 0.0;

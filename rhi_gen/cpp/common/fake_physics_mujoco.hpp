@@ -113,7 +113,9 @@ struct FakePhysicsOptions
   // One per joint of the table (FakeJointSpec order), or none: every motor is its joint.
   std::vector<FakeTransmission> transmissions;
   std::string imu_link;           // URDF link of the IMU; "" = the root link
-  std::string package_path;       // ':'-separated prefixes to resolve package:// under
+  // ':'-separated prefixes to resolve package:// under: a ROS 2 executable passes
+  // AMENT_PREFIX_PATH (<prefix>/share/<package>/ is where colcon installs a package's files).
+  std::string package_path;
   // The band: stiffness [N/m] and damping [N s/m]; 0 = the robot's weight stretches it by
   // kBandSagDefault, critically damped for the robot's mass (the damping is bounded to what an
   // explicit force on the root link can take at the timestep). Its anchor is above where it
@@ -339,7 +341,7 @@ private:
   static constexpr int kRobotContype = 2;
 
   // MuJoCo's warnings (an unstable simulation, a full contact buffer) go to the console only,
-  // never to MUJOCO_LOG.TXT in the working directory.
+  // never to MUJOCO_LOG.TXT in the working directory (MuJoCo's logging is process-wide).
   static void quiet_logging()
   {
     mjLogConfig config = mju_getLogConfig();
@@ -501,10 +503,13 @@ private:
     for (mjsElement * e : doomed) {
       mjs_delete(spec, e);
     }
+    const std::string where = options_.package_path.empty() ?
+      std::string("no package path given") :
+      "package:// looked up under '" + options_.package_path + "'";
     warnings->push_back(
       std::to_string(total - found.size()) + " of " + std::to_string(total) +
-      " meshes not found (first: " + first_missing + "; package:// looked up under '" +
-      options_.package_path + "'): inertial-only model, the mesh geoms left out");
+      " meshes not found (first: " + first_missing + "; " + where +
+      "): inertial-only model, the mesh geoms left out");
     return true;
   }
 

@@ -61,6 +61,7 @@ PACKAGE_SCOPE_NAMES = frozenset({
     "transmit_command_block", "transmit_state_block", "trimmed",
     "word_masks",
     "make_fake_robot", "network_exposure", "parse_fake_robot_arguments", "run_fake_robot",  # the fake robot's
+    "fake_robot_share_file", "use_fake_robot_physics",
 })
 # Vendor namespaces that are ours to use (the reference vendors) even though SDKs use some of them.
 ALLOWED_VENDOR_NAMESPACES = frozenset({"unitree", "agibot", "engineai"})

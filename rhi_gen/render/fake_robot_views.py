@@ -4,6 +4,9 @@ The fake robot stands on the robot's side of the transport, so it simulates moto
 motor is not the joint itself (a SimpleTransmission: joint = direction * motor / reduction + offset)
 is simulated in motor units, its limits, inertia and start pose converted the way the firmware sees
 them. A coupled joint's motors get no limits (a matrix mixes them); rows are in slot order.
+For the physics (--physics mujoco, common/fake_physics_mujoco.hpp), which simulates the URDF's joints,
+each row also carries its transmission (gain, offset; a coupled joint's is one to one), and the view
+the package's URDF and the IMU's link.
 """
 from __future__ import annotations
 
@@ -27,6 +30,8 @@ class FakeJointLine:
     damping: float
     initial_position: float
     velocity_commanded: bool = False  # a wheel
+    gain: float = 1.0     # its transmission, for the physics: motor = gain * (joint - offset)
+    offset: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -34,6 +39,12 @@ class FakeRobotView:
     joints: tuple[FakeJointLine, ...]
     rate_hz: float        # the robot's state rate: the fake robot's loop
     node_name: str        # also its executable's name
+    urdf: str             # its URDF in the package's share folder, for --physics mujoco
+    imu_link: str         # the URDF link of its IMU, "" without one (the physics then puts it at the root)
+
+    @property
+    def has_transmissions(self) -> bool:
+        return any((j.gain, j.offset) != (1.0, 0.0) for j in self.joints)
 
     @property
     def uses_no_limit(self) -> bool:
@@ -65,7 +76,7 @@ def _line(joint: MotorJoint, coupled: bool) -> FakeJointLine:
     ends = sorted((gain * (lower - t.offset), gain * (upper - t.offset))) if bounded else [-math.inf, math.inf]
     return FakeJointLine(joint.name, joint.index, ends[0], ends[1], velocity * t.reduction, effort / t.reduction,
                          float(f"{joint.inertia / t.reduction ** 2:.6g}"), joint.damping,
-                         gain * (joint.initial_position - t.offset))
+                         gain * (joint.initial_position - t.offset), gain=float(gain), offset=t.offset)
 
 
 def has_fake_robot(robot: RobotModel) -> bool:
@@ -79,4 +90,5 @@ def fake_robot_view(robot: RobotModel) -> FakeRobotView:
     lines = (replace(_line(j, j.name in coupled), velocity_commanded=j.command_mode == "velocity")
              for j in robot.joints_by_index)
     return FakeRobotView(tuple(lines),
-                         transport.fake_state_rate_hz, f"{robot.robot}_fake_robot")
+                         transport.fake_state_rate_hz, f"{robot.robot}_fake_robot", f"urdf/{robot.robot}.urdf",
+                         robot.imu.frame_id if robot.imu.enabled else "")

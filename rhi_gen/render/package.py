@@ -39,7 +39,8 @@ TEST_FILES = (("cpp/test/hardware_interface_test.hpp", "test/hardware_interface_
 # The fake robot's robot-independent part, in a package where a robot has one.
 FAKE_ROBOT_FILES = (
     *((f"cpp/common/{name}", f"include/robot_hardware_interface/common/{name}")
-      for name in ("fake_joint_dynamics.hpp", "fake_robot.hpp", "fake_robot_main.hpp")),
+      for name in ("fake_joint_dynamics.hpp", "fake_physics.hpp", "fake_physics_mujoco.hpp", "fake_robot.hpp",
+                   "fake_robot_main.hpp")),
     ("cpp/src/fake_robot_main.cpp", "src/fake_robot_main.cpp"),
 )
 # Templates: what depends on the robots.

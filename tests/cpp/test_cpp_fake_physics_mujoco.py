@@ -55,7 +55,7 @@ from tests.support.repo import REPO
 
 HERE = Path(__file__).resolve().parent
 CHECK_SOURCE = HERE / "physics" / "fake_physics_check.cpp"
-HEADERS = ("fake_physics_mujoco.hpp", "fake_joint_dynamics.hpp")
+HEADERS = ("fake_physics_mujoco.hpp", "fake_physics.hpp", "fake_joint_dynamics.hpp")
 TALOS_YAML = HARNESS_ROBOTS / "pal" / "talos_arm.yaml"
 TALOS_URDF = HARNESS_ROBOTS / "pal" / "talos_arm.urdf"
 SCARA_YAML = HARNESS_ROBOTS / "acme" / "scara.yaml"

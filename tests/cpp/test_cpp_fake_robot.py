@@ -2,7 +2,9 @@
 src/<vendor>/<robot>_fake_robot.cpp) build with g++ -Werror against the distros' stand-ins, and, run as a
 user runs them, refuse to start where their traffic could reach other hosts (ROS 2 discovery settings; an SDK
 network interface other than lo), say how to fix it in one line, answer --help, refuse bad arguments, and
-keep running where the traffic stays on this host. The benchmark that reports their rate and jitter runs.
+keep running where the traffic stays on this host. Their physics options (--physics, --base) refuse what they do
+not know in one line, and --physics mujoco says so in one line where the executable was built without MuJoCo.
+The benchmark that reports their rate and jitter runs.
 
 What the fake robot does with the driver (motor maps agree, a trajectory is followed, injected faults get
 the driver's documented reaction, the loop allocates nothing) is the driver harness's fake_robot section
@@ -138,6 +140,20 @@ def test_fake_robot_executable_guards_the_network(reference, cpp_builder, label)
         no_interface = run(binary, "--network-interface", "lo", env={"ROS_LOCALHOST_ONLY": "1"})
         assert no_interface.returncode == 2 and "has none" in no_interface.stderr
 
+    # The physics options: one line naming the option and what it takes; this build has no MuJoCo.
+    local = {"ROS_LOCALHOST_ONLY": "1"}
+    assert "--physics vacuum|mujoco" in helped.stdout and "this build has no MuJoCo" in helped.stdout
+    without_mujoco = (f"{name}: --physics mujoco: this robot_hardware_interface was built without MuJoCo: install "
+                      "it (pip install mujoco-core, or a MuJoCo release and -DRHI_MUJOCO_ROOT=<its folder>) and "
+                      "build the package again")
+    refusals = [(("--physics", "bullet"), f"{name}: --physics bullet: expected vacuum or mujoco"),
+                (("--physics", "mujoco", "--base", "up"), f"{name}: --base up: expected free, band or fixed"),
+                (("--base", "free"), f"{name}: --base is for --physics mujoco only"),
+                (("--physics", "mujoco"), without_mujoco)]
+    for refused_args, line in refusals:
+        refused = run(binary, *refused_args, env=local)
+        assert refused.returncode == 2 and refused.stderr.splitlines() == [line], (refused_args, refused)
+
     bad_rate = run(binary, "--rate", "0", env={"ROS_LOCALHOST_ONLY": "1"})
     assert bad_rate.returncode == 2 and "--rate 0: expected a rate in Hz" in bad_rate.stderr
     unknown = run(binary, "--fast", env={"ROS_LOCALHOST_ONLY": "1"})
@@ -145,7 +161,8 @@ def test_fake_robot_executable_guards_the_network(reference, cpp_builder, label)
 
     # Discovery on this host (or --allow-network): it starts and spins until stopped.
     starts = [({"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}, ()), ({"ROS_LOCALHOST_ONLY": "1"}, ()),
-              ({}, ("--allow-network",)), ({"ROS_LOCALHOST_ONLY": "1"}, ("--ros-args", "-p", "x:=1"))]
+              ({}, ("--allow-network",)), ({"ROS_LOCALHOST_ONLY": "1"}, ("--ros-args", "-p", "x:=1")),
+              ({"ROS_LOCALHOST_ONLY": "1"}, ("--physics", "vacuum"))]
     if sdk:
         starts += [({}, ()), ({}, ("--network-interface", "eth0", "--allow-network"))]
     # all at once: each must still be running half a second later (a refusal exits at once)

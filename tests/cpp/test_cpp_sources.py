@@ -20,7 +20,14 @@ from rhi_gen.render.environment import SOURCE_ROOT
 from rhi_gen.render.package import COMMON_FILES, FAKE_ROBOT_FILES
 from tests.support import vendor_msgs
 from tests.support.ament_lint import run_cpplint, run_uncrustify
-from tests.support.cpp_build import WARNING_FLAGS, message_include_flags, require_compiler, run_parallel, standin_flags
+from tests.support.cpp_build import (
+    WARNING_FLAGS,
+    message_include_flags,
+    mujoco_include_flags,
+    require_compiler,
+    run_parallel,
+    standin_flags,
+)
 
 DISTRO = "humble"
 
@@ -70,7 +77,8 @@ def test_each_header_compiles_on_its_own_in_place(linked_tree, tmp_path):
         src = tmp_path / f"alone_{Path(out).stem}.cpp"
         src.write_text(f'#include "{rel}"\n#include "{rel}"\nint main() {{ return 0; }}\n')
         return rel, subprocess.run([cxx, *WARNING_FLAGS, "-fsyntax-only", f"-I{include}", *standin_flags(DISTRO),
-                                    *message_include_flags(), str(src)], capture_output=True, text=True)
+                                    *message_include_flags(), *mujoco_include_flags(), str(src)],
+                              capture_output=True, text=True)
 
     failures = [f"{rel} ({SOURCES[f'include/{rel}'][0]}):\n{proc.stderr[:3000]}"
                 for rel, proc in run_parallel(headers, compile_one) if proc.returncode != 0]

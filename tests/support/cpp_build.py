@@ -4,6 +4,7 @@ The second half builds and runs the driver harness (tests/cpp/harness/README.md)
 from __future__ import annotations
 
 import hashlib
+import importlib.util
 import math
 import os
 import re
@@ -86,6 +87,21 @@ def run_compiler(args: Sequence[str], *, what: str) -> subprocess.CompletedProce
         errors = "\n".join(proc.stderr.splitlines()[:40])
         raise AssertionError(f"{what} does not compile:\n{' '.join(cmd)}\n{errors}")
     return proc
+
+
+def mujoco_dir() -> Path | None:
+    """The folder of the installed `mujoco-core` wheel of the test extra (libmujoco.so.* and include/mujoco/),
+    found without importing it; None when it is not installed."""
+    spec = importlib.util.find_spec("mujoco")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    return Path(next(iter(spec.submodule_search_locations)))
+
+
+def mujoco_include_flags() -> list[str]:
+    """-isystem of MuJoCo's C headers (as CMake passes an imported target's), [] when it is not installed."""
+    mj = mujoco_dir()
+    return ["-isystem", str(mj / "include")] if mj is not None else []
 
 
 def driver_source(package_dir: Path, vendor: str, robot: str) -> Path:

@@ -6,10 +6,12 @@
 //
 // The fake agibot/x2: `ros2 run robot_hardware_interface x2_fake_robot`
 // (or use_fake_robot:=true on launch/x2.launch.py) answers the X2HardwareInterface
-// driver on the robot's own topics, with the joints below simulated (common/fake_robot.hpp).
+// driver on the robot's own topics, with the joints below simulated (common/fake_robot.hpp): in a
+// vacuum, or with --physics mujoco on MuJoCo, the robot compiled from its URDF.
 #include <array>
 #include <memory>
 
+#include "robot_hardware_interface/common/fake_physics.hpp"
 #include "robot_hardware_interface/common/fake_robot.hpp"
 #include "robot_hardware_interface/common/robot_spec.hpp"
 #include "robot_hardware_interface/transport/agibot_topics_fake_robot.hpp"
@@ -70,6 +72,10 @@ constexpr std::array<FakeJointSpec, 31> kFakeJoints = {{
   {"head_pitch_joint", 30, -0.401425, 0.488692, 10.472, 2.0, 0.01, 0.1, 0.0, false},
 }};
 
+// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions.
+constexpr FakePhysicsSpec kFakePhysics{
+  "urdf/x2.urdf", "imu_in_torso_link", nullptr};
+
 // AimDK joint groups: {name, first motor slot, size, command topic, state topic}
 constexpr std::array<robot_hardware_interface::AimdkJointGroup, 4> kGroups = {{
   {"leg", 0, 12, "/aima/hal/joint/leg/command", "/aima/hal/joint/leg/state"},
@@ -90,7 +96,7 @@ std::unique_ptr<FakeRobot> make_fake_robot()
 {
   return std::make_unique<FakeRobotRunner<kMotorCount>>(
     "x2_fake_robot", kFakeJoints.data(), kFakeJoints.size(), 1000.0,
-    std::make_unique<FakeTransport>(kTransport));
+    std::make_unique<FakeTransport>(kTransport), kFakePhysics);
 }
 
 }  // namespace robot_hardware_interface

@@ -6,10 +6,12 @@
 //
 // The fake engineai/pm01: `ros2 run robot_hardware_interface pm01_fake_robot`
 // (or use_fake_robot:=true on launch/pm01.launch.py) answers the PM01HardwareInterface
-// driver on the robot's own topics, with the joints below simulated (common/fake_robot.hpp).
+// driver on the robot's own topics, with the joints below simulated (common/fake_robot.hpp): in a
+// vacuum, or with --physics mujoco on MuJoCo, the robot compiled from its URDF.
 #include <array>
 #include <memory>
 
+#include "robot_hardware_interface/common/fake_physics.hpp"
 #include "robot_hardware_interface/common/fake_robot.hpp"
 #include "robot_hardware_interface/common/robot_spec.hpp"
 #include "robot_hardware_interface/transport/engineai_topics_fake_robot.hpp"
@@ -52,6 +54,10 @@ constexpr std::array<FakeJointSpec, 24> kFakeJoints = {{
   {"J23_HEAD_YAW", 23, -0.6109, 0.6109, 35.2, 61.0, 0.01, 0.1, 0.0, false},
 }};
 
+// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions.
+constexpr FakePhysicsSpec kFakePhysics{
+  "urdf/pm01.urdf", "LINK_BASE", nullptr};
+
 // transport_options: command, state, IMU and motor debug topics, parallel_parser_type (0 CLASSIC, 1
 // RL), qos
 constexpr robot_hardware_interface::EngineaiTopicsOptions kTransport{
@@ -66,7 +72,7 @@ std::unique_ptr<FakeRobot> make_fake_robot()
 {
   return std::make_unique<FakeRobotRunner<kMotorCount>>(
     "pm01_fake_robot", kFakeJoints.data(), kFakeJoints.size(), 500.0,
-    std::make_unique<FakeTransport>(kTransport));
+    std::make_unique<FakeTransport>(kTransport), kFakePhysics);
 }
 
 }  // namespace robot_hardware_interface

@@ -6,10 +6,12 @@
 //
 // The fake unitree/g1: `ros2 run robot_hardware_interface g1_fake_robot`
 // (or use_fake_robot:=true on launch/g1.launch.py) answers the G1HardwareInterface
-// driver on the robot's own topics, with the joints below simulated (common/fake_robot.hpp).
+// driver on the robot's own topics, with the joints below simulated (common/fake_robot.hpp): in a
+// vacuum, or with --physics mujoco on MuJoCo, the robot compiled from its URDF.
 #include <array>
 #include <memory>
 
+#include "robot_hardware_interface/common/fake_physics.hpp"
 #include "robot_hardware_interface/common/fake_robot.hpp"
 #include "robot_hardware_interface/common/robot_spec.hpp"
 #include "robot_hardware_interface/transport/unitree_dds_fake_robot.hpp"
@@ -57,6 +59,10 @@ constexpr std::array<FakeJointSpec, 29> kFakeJoints = {{
   {"right_wrist_yaw_joint", 28, -1.614429558, 1.614429558, 22.0, 5.0, 0.01, 0.1, 0.0, false},
 }};
 
+// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions.
+constexpr FakePhysicsSpec kFakePhysics{
+  "urdf/g1.urdf", "imu_in_pelvis", nullptr};
+
 // transport_options: domain_id, lowcmd_topic, lowstate_topic, mode_pr (hg: 0 PR, 1 AB),
 // motor modes (go), release_motion_control, verify_state_crc
 constexpr robot_hardware_interface::UnitreeDdsOptions kTransport{
@@ -72,7 +78,7 @@ std::unique_ptr<FakeRobot> make_fake_robot()
 {
   return std::make_unique<FakeRobotRunner<kMotorCount>>(
     "g1_fake_robot", kFakeJoints.data(), kFakeJoints.size(), 500.0,
-    std::make_unique<FakeTransport>(kTransport));
+    std::make_unique<FakeTransport>(kTransport), kFakePhysics);
 }
 
 }  // namespace robot_hardware_interface

@@ -13,6 +13,9 @@
 // which speaks exactly the driver's protocol. Faults are injected at run time through the node's
 // string parameter `fault` (`ros2 param set /<robot>_fake_robot fault silent`; a request it cannot
 // carry out is refused with the reason). Everything runs on the node's one executor thread.
+// The joints move in a vacuum (fake_joint_dynamics.hpp) unless use_mujoco() hands them to MuJoCo
+// (fake_physics_mujoco.hpp: gravity, a floor, the links' coupling), which a package compiled with
+// RHI_FAKE_PHYSICS_MUJOCO defined can do (its CMakeLists.txt defines it where it finds MuJoCo).
 
 #include <algorithm>
 #include <array>
@@ -36,9 +39,24 @@
 #include <rclcpp/timer.hpp>
 
 #include "robot_hardware_interface/common/fake_joint_dynamics.hpp"
+#include "robot_hardware_interface/common/fake_physics.hpp"
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+#include "robot_hardware_interface/common/fake_physics_mujoco.hpp"
+#endif
 
 namespace robot_hardware_interface
 {
+
+// Whether this build can simulate the robot on MuJoCo (--physics mujoco).
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+inline constexpr bool kFakeRobotHasMujoco = true;
+#else
+inline constexpr bool kFakeRobotHasMujoco = false;
+#endif
+// Why --physics mujoco cannot be, in a build without MuJoCo.
+inline constexpr const char * kFakeRobotWithoutMujoco =
+  "this robot_hardware_interface was built without MuJoCo: install it (pip install mujoco-core, or "
+  "a MuJoCo release and -DRHI_MUJOCO_ROOT=<its folder>) and build the package again";
 
 // Motor temperature of a healthy fake robot [deg C].
 inline constexpr double kFakeAmbientTemperature = 35.0;
@@ -155,6 +173,17 @@ public:
   virtual void place(size_t slot, double q) = 0;
   virtual const FakeMotorCommand & last_command(size_t slot) const = 0;
   virtual const FakeLoopStats & stats() const = 0;
+  // What the robot's source tells a physics engine: its URDF, its IMU link, its transmissions.
+  virtual const FakePhysicsSpec & physics_spec() const = 0;
+  // Before configure(): hand the joints to MuJoCo, the robot compiled from options.urdf_path
+  // (imu_link and transmissions from physics_spec() where options leave them empty). False with
+  // one line in *error: the package was built without MuJoCo, or MuJoCo cannot load the robot;
+  // *warnings gets a line per thing the simulation leaves out. Not real-time.
+  virtual bool use_mujoco(
+    const FakePhysicsOptions & options, std::string * error,
+    std::vector<std::string> * warnings) = 0;
+  // "vacuum", or "mujoco" once use_mujoco() succeeded.
+  virtual const char * physics() const = 0;
 };
 
 // The robot-independent fake robot: its loop, its faults, its body; the transport speaks.
@@ -164,9 +193,9 @@ class FakeRobotRunner final : public FakeRobot
 public:
   FakeRobotRunner(
     const char * node_name, const FakeJointSpec * joints, size_t count, double rate_hz,
-    std::unique_ptr<FakeRobotTransport<N>> transport)
+    std::unique_ptr<FakeRobotTransport<N>> transport, const FakePhysicsSpec & physics_spec)
   : node_name_(node_name), rate_hz_(rate_hz), model_(joints, count),
-    transport_(std::move(transport))
+    transport_(std::move(transport)), physics_spec_(physics_spec)
   {
   }
 
@@ -186,6 +215,7 @@ public:
     // Declared before the callback exists (declaring runs the callbacks): a request given at
     // start-up (--ros-args -p fault:=silent) is applied here, from the first step.
     const std::string initial = node->declare_parameter<std::string>(kFaultParameter, "");
+    const bool release = node->declare_parameter<bool>(kReleaseBandParameter, false);
     fault_callback_ = node->add_on_set_parameters_callback(
       [this](const std::vector<rclcpp::Parameter> & parameters) {
         return on_parameters(parameters);
@@ -193,6 +223,9 @@ public:
     std::string why;
     if (!initial.empty() && !apply_fault(initial.c_str(), &why)) {
       throw std::invalid_argument(std::string("parameter fault: ") + why);
+    }
+    if (release && !release_band(rclcpp::Parameter(kReleaseBandParameter, true), &why)) {
+      throw std::invalid_argument(std::string("parameter release_band: ") + why);
     }
   }
 
@@ -239,9 +272,47 @@ public:
     return model_.dynamics.last_command(slot);
   }
   const FakeLoopStats & stats() const override {return stats_;}
+  const FakePhysicsSpec & physics_spec() const override {return physics_spec_;}
+
+  bool use_mujoco(
+    const FakePhysicsOptions & options, std::string * error,
+    std::vector<std::string> * warnings) override
+  {
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    FakePhysicsOptions o = options;
+    if (o.imu_link.empty() && physics_spec_.imu_link != nullptr) {
+      o.imu_link = physics_spec_.imu_link;
+    }
+    if (o.transmissions.empty() && physics_spec_.transmissions != nullptr) {
+      o.transmissions.assign(
+        physics_spec_.transmissions, physics_spec_.transmissions + model_.dynamics.joint_count());
+    }
+    auto physics = std::make_unique<FakeMujocoPhysics<N>>(
+      model_.dynamics.joints(), model_.dynamics.joint_count());
+    if (!physics->load(o, error, warnings)) {
+      return false;
+    }
+    model_.dynamics.use_engine(nullptr);
+    physics_ = std::move(physics);
+    band_ = o.base == FakeBase::kBand;
+    model_.dynamics.use_engine(physics_.get());
+    return true;
+#else
+    (void)options;
+    (void)warnings;
+    *error = kFakeRobotWithoutMujoco;
+    return false;
+#endif
+  }
+
+  const char * physics() const override
+  {
+    return model_.dynamics.has_engine() ? "mujoco" : "vacuum";
+  }
 
 private:
   static constexpr const char * kFaultParameter = "fault";
+  static constexpr const char * kReleaseBandParameter = "release_band";
 
   // `ros2 param set <node> fault <request>`: carried out, or refused with the reason.
   rcl_interfaces::msg::SetParametersResult on_parameters(
@@ -250,6 +321,15 @@ private:
     rcl_interfaces::msg::SetParametersResult result;
     result.successful = true;
     for (const rclcpp::Parameter & parameter : parameters) {
+      if (parameter.get_name() == kReleaseBandParameter) {
+        std::string why;
+        if (!release_band(parameter, &why)) {
+          RCLCPP_ERROR(node_->get_logger(), "release_band refused: %s", why.c_str());
+          result.successful = false;
+          result.reason = why;
+        }
+        continue;
+      }
       if (parameter.get_name() != kFaultParameter) {
         continue;
       }
@@ -268,6 +348,29 @@ private:
       }
     }
     return result;
+  }
+
+  // `ros2 param set <node> release_band true`: the elastic band lets go of the robot (for good).
+  bool release_band(const rclcpp::Parameter & parameter, std::string * why)
+  {
+    if (parameter.get_type() != rclcpp::ParameterType::PARAMETER_BOOL) {
+      *why = "expected true or false";
+      return false;
+    }
+    if (!parameter.as_bool()) {
+      return true;  // a released band stays released
+    }
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    if (physics_ && band_) {
+      if (physics_->band_holding()) {
+        physics_->release_band();
+        RCLCPP_WARN(node_->get_logger(), "band released: the robot stands on its own from now on");
+      }
+      return true;
+    }
+#endif
+    *why = "no elastic band holds this robot (it has one with --physics mujoco --base band)";
+    return false;
   }
 
   // silent | corrupt | hot <joint> <deg C> | error <joint> <code> | offline <joint> | clear
@@ -359,6 +462,11 @@ private:
   rclcpp::node_interfaces::OnSetParametersCallbackHandle::SharedPtr fault_callback_;
   rclcpp::TimerBase::SharedPtr timer_;
   FakeLoopStats stats_;
+  FakePhysicsSpec physics_spec_;
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+  std::unique_ptr<FakeMujocoPhysics<N>> physics_;
+  bool band_{false};  // --base band
+#endif
 };
 
 // Defined by each robot's src/<vendor>/<robot>_fake_robot.cpp: the robot's fake robot, for the

@@ -72,6 +72,7 @@ class PackageView:
     plain_notes: tuple[str, ...]         # package.xml: why each plain package is not declared
     description: str                     # package.xml <description>: the plugins, or "no robots yet"
     imu: bool                            # some robot exports an IMU (imu_sensor_broadcaster)
+    fake_robots: bool = False            # some robot has a fake robot (CMakeLists.txt looks for MuJoCo)
     description_arguments: tuple[str, ...] = DESCRIPTION_ARGUMENTS  # launch/bringup.launch.py -> xacro
 
 
@@ -116,6 +117,7 @@ def package_view(robots: Sequence[RobotModel]) -> PackageView:
         plain_notes=tuple("\n       ".join(d.package_xml_note) for d in plain if d.package_xml_note),
         description=", ".join(r.plugin_name for r in robots) or "no robots yet",
         imu=any(r.imu.enabled for r in robots),
+        fake_robots=any(t.fake_robot for t in targets),
     )
 
 

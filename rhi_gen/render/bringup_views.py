@@ -24,6 +24,9 @@ ARGUMENT_HELP = {
                          "needed)",
     "use_fake_robot": "true: also start <robot>_fake_robot, a simulated robot that answers the driver on the "
                       "robot's own topics, with ROS 2 discovery kept on this host (no robot needed)",
+    "physics": "with use_fake_robot:=true, how its joints move: vacuum (alone, no gravity) or mujoco (the robot "
+               "compiled by MuJoCo from description_file: gravity, a floor, its links' coupling, hung in an elastic "
+               "band; the package must be built with MuJoCo, README 'Try it without the robot')",
     "network_interface": "network interface of the robot (driver parameter network_interface)",
     "enable_monitor": "true: the driver warns on the console about read/write latency and send jitter above "
                       "its thresholds, for timing bring-up (driver parameter enable_monitor)",
@@ -144,7 +147,7 @@ def start_controllers(robot: RobotModel) -> tuple[tuple[str, ...], tuple[str, ..
 def launch_view(robot: RobotModel) -> LaunchView:
     active, inactive = start_controllers(robot)
     description = argument_defaults(robot)
-    fake = (("use_fake_robot", "false"),) if has_fake_robot(robot) else ()
+    fake = (("use_fake_robot", "false"), ("physics", "vacuum")) if has_fake_robot(robot) else ()
     defaults = (description[0], *fake, *description[1:], ("description_file", ""), ("controllers_file", ""),
                 ("active_controllers", " ".join(active)), ("inactive_controllers", " ".join(inactive)))
     return LaunchView(

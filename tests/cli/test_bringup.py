@@ -235,7 +235,7 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
     launched = run(package_dir, m.robot, **({"use_mock_hardware": "true"} if mock else {}))
 
     fake = has_fake_robot(m)
-    assert list(launched.arguments) == [LAUNCH_ARGUMENTS[0], *(["use_fake_robot"] if fake else []),
+    assert list(launched.arguments) == [LAUNCH_ARGUMENTS[0], *(["use_fake_robot", "physics"] if fake else []),
                                         *LAUNCH_ARGUMENTS[1:]]
     defaults = {}
     for name, a in launched.arguments.items():
@@ -243,7 +243,7 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
         defaults[name] = "".join(s.perform(LaunchContext({})) for s in a.default_value)
     p = m.parameters
     assert defaults == {
-        "use_mock_hardware": "false", **({"use_fake_robot": "false"} if fake else {}),
+        "use_mock_hardware": "false", **({"use_fake_robot": "false", "physics": "vacuum"} if fake else {}),
         "network_interface": p.network_interface,
         "enable_monitor": "true" if p.enable_monitor else "false",
         "command_writer_period_us": str(p.command_writer_period_us), "state_decimation": str(p.state_decimation),
@@ -322,6 +322,27 @@ def test_use_fake_robot_starts_it_first_with_discovery_on_this_host(package, mon
     assert not node(plain, "pm01_fake_robot") and all(not n.environment for n in plain.nodes)
     with pytest.raises(RuntimeError, match="use_fake_robot:=true and use_mock_hardware:=true exclude each other"):
         run(package_dir, "pm01", use_fake_robot="true", use_mock_hardware="true")
+
+
+def test_physics_argument_chooses_the_fake_robots_physics(package, tmp_path) -> None:
+    """physics (next to use_fake_robot, default vacuum): passed to the fake robot as --physics; mujoco also hands
+    it the URDF the description includes (--urdf: the package's, or description_file). A value it does not know,
+    or mujoco without the fake robot, stops the launch with one line."""
+    package_dir, _ = package
+    launched = run(package_dir, "pm01", use_fake_robot="true")
+    assert "mujoco" in (launched.arguments["physics"].description or "")
+    assert node(launched, "pm01_fake_robot")[0].arguments == ["--physics", "vacuum"]
+    mujoco = run(package_dir, "pm01", use_fake_robot="true", physics="mujoco")
+    assert node(mujoco, "pm01_fake_robot")[0].arguments == \
+        ["--physics", "mujoco", "--urdf", f"{package_dir}/urdf/pm01.urdf"]
+    mine = tmp_path / "my pm01.urdf"
+    mine.write_text((package_dir / "urdf" / "pm01.urdf").read_text())
+    chosen = run(package_dir, "pm01", use_fake_robot="true", physics="mujoco", description_file=str(mine))
+    assert node(chosen, "pm01_fake_robot")[0].arguments == ["--physics", "mujoco", "--urdf", str(mine)]
+    with pytest.raises(RuntimeError, match=r"^physics:=bullet: expected vacuum or mujoco$"):
+        run(package_dir, "pm01", use_fake_robot="true", physics="bullet")
+    with pytest.raises(RuntimeError, match=r"^physics:=mujoco is the fake robot's physics: add use_fake_robot:=true$"):
+        run(package_dir, "pm01", physics="mujoco")
 
 
 def test_launch_standin_rejects_what_the_real_api_rejects(package, tmp_path) -> None:

@@ -48,7 +48,9 @@ ARGUMENTS = [
 # Arguments a robot's launch file passes only when it has them.
 OPTIONAL_ARGUMENTS = [
     ('use_fake_robot', 'false', 'true: also start <robot>_fake_robot, discovery kept on this host'),
+    ('physics', 'vacuum', "the fake robot's physics: vacuum, or mujoco (the robot on MuJoCo, from its URDF)"),
 ]
+PHYSICS = ('vacuum', 'mujoco')
 
 
 def keep_discovery_on_this_host():
@@ -73,14 +75,22 @@ def bringup(context):
     controllers_file = value['controllers_file'] or f'{share}/config/{robot}_controllers.yaml'
 
     nodes = []
+    physics = value['physics']
+    if physics not in PHYSICS:
+        raise RuntimeError(f'physics:={physics}: expected vacuum or mujoco')
     if value['use_fake_robot'] == 'true':
         if value.get('use_mock_hardware') == 'true':
             raise RuntimeError('use_fake_robot:=true and use_mock_hardware:=true exclude each other: the fake '
                                'robot answers the real driver, which mock hardware replaces')
         nodes += keep_discovery_on_this_host()
-        nodes.append(Node(package=PACKAGE, executable=f'{robot}_fake_robot', output='both'))
+        # mujoco: the fake robot simulates the URDF the description includes, package:// meshes found
+        # through AMENT_PREFIX_PATH.
+        arguments = ['--physics', physics, *(['--urdf', description_file] if physics == 'mujoco' else [])]
+        nodes.append(Node(package=PACKAGE, executable=f'{robot}_fake_robot', output='both', arguments=arguments))
         # An SDK transport's fake robot listens on the loopback interface: so does the driver.
         value['network_interface'] = 'lo'
+    elif physics != 'vacuum':
+        raise RuntimeError(f'physics:={physics} is the fake robot\'s physics: add use_fake_robot:=true')
 
     # Command runs shlex.split() on the joined text: quote every path and value (spaces, quotes).
     command = ['xacro ', shlex.quote(f'{share}/description/{robot}.urdf.xacro')]

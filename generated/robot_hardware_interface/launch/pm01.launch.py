@@ -26,6 +26,8 @@ ARGUMENTS = [
      "true: ros2_control's mock_components/GenericSystem instead of the robot (no hardware needed)"),
     ('use_fake_robot', 'false',
      "true: also start <robot>_fake_robot, a simulated robot that answers the driver on the robot's own topics, with ROS 2 discovery kept on this host (no robot needed)"),
+    ('physics', 'vacuum',
+     "with use_fake_robot:=true, how its joints move: vacuum (alone, no gravity) or mujoco (the robot compiled by MuJoCo from description_file: gravity, a floor, its links' coupling, hung in an elastic band; the package must be built with MuJoCo, README 'Try it without the robot')"),
     ('network_interface', 'lo',
      'network interface of the robot (driver parameter network_interface)'),
     ('enable_monitor', 'false',

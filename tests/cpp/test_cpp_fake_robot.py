@@ -4,7 +4,9 @@ user runs them, refuse to start where their traffic could reach other hosts (ROS
 network interface other than lo), say how to fix it in one line, answer --help, refuse bad arguments, and
 keep running where the traffic stays on this host. Their physics options (--physics, --base) refuse what they do
 not know in one line, and --physics mujoco says so in one line where the executable was built without MuJoCo.
-The benchmark that reports their rate and jitter runs.
+Built with MuJoCo (as the package's CMakeLists.txt builds it where it finds MuJoCo), the G1's fake robot moves
+its joints under gravity with --physics mujoco, and holds them with the YAML's gains. The benchmark that reports
+their rate and jitter runs.
 
 What the fake robot does with the driver (motor maps agree, a trajectory is followed, injected faults get
 the driver's documented reaction, the loop allocates nothing) is the driver harness's fake_robot section
@@ -19,6 +21,7 @@ import sys
 import time
 
 import pytest
+import yaml
 
 from rhi_gen import transports
 from rhi_gen.render.fake_robot_views import has_fake_robot
@@ -29,8 +32,12 @@ from tests.support.cpp_build import (
     fake_robot_source,
     label_transport,
     message_variants,
+    mujoco_dir,
+    mujoco_include_flags,
     project_robot_labels,
     run_parallel,
+    yaml_joint_map,
+    yaml_modes_and_gains,
 )
 from tests.support.repo import REPO
 
@@ -175,6 +182,80 @@ def test_fake_robot_executable_guards_the_network(reference, cpp_builder, label)
     for (env, args), code, p in exited:
         _, err = p.communicate()
         assert code is None, f"{name} {args} with {env} exited with {code}: {err}"
+
+
+# The fake robot on MuJoCo: the G1's generated fake robot (unitree_dds, needs nothing of ../shared), compiled
+# with RHI_FAKE_PHYSICS_MUJOCO as the package's CMakeLists.txt compiles it where it finds MuJoCo, chosen onto the
+# physics by the executable's own argument parsing and set-up (tests/cpp/physics/fake_robot_physics_check.cpp),
+# the installed URDF of the package (urdf/g1.urdf: the skeleton's placeholder inertials, 1 kg per link), its base
+# fixed to the world. Bounds, from 1 s at 500 Hz:
+PHYSICS_LABEL = "unitree/g1"
+PHYSICS_CHECK = REPO / "tests" / "cpp" / "physics" / "fake_robot_physics_check.cpp"
+FALLS = 1.0         # [rad] passive: an elbow falls at least this far (measured 2.16)
+ARMS_HOLD = 0.2     # [rad] held by the YAML's gains: shoulders, elbows, wrists (measured 0.14, the elbows)
+LEGS_HOLD = 0.02    # [rad] and the legs (measured 0.010, the hip pitches)
+# The waist pitch is not held: the YAML's kp 40 N m/rad (unitree_sdk2's g1_ankle_swing) against the placeholder
+# torso, arms and head leans it to its 0.52 rad limit, as it does passive.
+
+
+@pytest.fixture(scope="module")
+def physics_check(reference, cpp_builder):
+    mj = mujoco_dir()
+    assert mj is not None, "MuJoCo is not installed: pip install -e '.[test]' installs mujoco-core (never skipped)"
+    libs = sorted(mj.glob("libmujoco.so*"))
+    assert libs, f"no libmujoco.so in {mj}"
+    rb = reference.build(PHYSICS_LABEL)
+    pkg = rb.package_dir
+    flags = [*FLAVOURS["plain"], "-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()]
+    includes = [pkg / "include", *DISTROS[RUN_DISTRO].include_dirs]
+    mujoco_version = libs[-1].name
+    fake_robot = fake_robot_source(pkg, rb.model.vendor, rb.model.robot)
+    assert fake_robot is not None
+    objects = [cpp_builder.compile(source, flags, includes, package=pkg, digest_parts=[mujoco_version],
+                                   name=f"fakephys_{source.stem}", distro=RUN_DISTRO, transport=rb.model.transport)
+               for source in (PHYSICS_CHECK, fake_robot)]
+    for o in objects:
+        assert o.ok, f"{o.path.name}: {' '.join(o.command)}\n{o.stderr[-6000:]}"
+    link = cpp_builder.link(objects, ["-Wl,--no-as-needed", str(libs[-1]), f"-Wl,-rpath,{mj}"], "fakephys_g1")
+    assert link.ok, link.stderr[-4000:]
+    return link.path, pkg
+
+
+def _physics_run(binary, scenario: str, gains, *args: str) -> dict[str, str]:
+    yaml_path = REPO / "robots" / "unitree" / "g1.yaml"
+    topic = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))["transport_options"]["lowcmd_topic"]
+    proc = run(binary, scenario, str(gains), topic, *args)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    return dict(line.split("=", 1) for line in proc.stdout.splitlines())
+
+
+def test_fake_robot_on_mujoco_falls_passive_and_holds_with_the_yaml_gains(physics_check, tmp_path, report):
+    """--physics mujoco puts the generated fake robot's joints on real physics: passive, its arms fall under
+    gravity; held at their start by the YAML's default_gains, they stay; in the vacuum (no option) nothing moves."""
+    binary, pkg = physics_check
+    yaml_path = REPO / "robots" / "unitree" / "g1.yaml"
+    _, gains = yaml_modes_and_gains(yaml_path)
+    gains_file = tmp_path / "gains"
+    gains_file.write_text("".join(f"{slot} {gains[name][0]!r} {gains[name][1]!r}\n"
+                                  for name, slot in yaml_joint_map(yaml_path).items()), encoding="utf-8")
+    mujoco = ("--physics", "mujoco", "--base", "fixed", "--urdf", str(pkg / "urdf" / "g1.urdf"))
+    vacuum = _physics_run(binary, "passive", gains_file)
+    passive = _physics_run(binary, "passive", gains_file, *mujoco)
+    held = _physics_run(binary, "hold", gains_file, *mujoco)
+    assert vacuum["physics"] == "vacuum" and float(vacuum["moved_max"]) == 0.0, vacuum
+    assert passive["physics"] == held["physics"] == "mujoco"
+    assert float(passive["moved.left_elbow_joint"]) > FALLS, passive
+    arms = {k: float(v) for k, v in held.items() if k.startswith("moved.") and any(
+        part in k for part in ("shoulder", "elbow", "wrist"))}
+    legs = {k: float(v) for k, v in held.items() if k.startswith("moved.") and any(
+        part in k for part in ("hip", "knee", "ankle"))}
+    assert len(arms) == 14 and len(legs) == 12, held
+    assert max(arms.values()) < ARMS_HOLD, arms
+    assert max(legs.values()) < LEGS_HOLD, legs
+    report(f"fake robot on MuJoCo (G1, base fixed, 1 s): passive elbow falls "
+           f"{float(passive['moved.left_elbow_joint']):.2f} rad; held by the YAML gains: arms within "
+           f"{max(arms.values()):.3f} rad, legs within "
+           f"{max(legs.values()):.3f} rad; vacuum: {float(vacuum['moved_max']):.1f} rad")
 
 
 def test_benchmark_reports_rate_and_jitter(tmp_path):

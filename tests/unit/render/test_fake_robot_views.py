@@ -35,6 +35,17 @@ def test_a_simple_transmission_is_simulated_in_motor_units():
     assert math.isclose(line.position_min, -3.8) and math.isclose(line.position_max, 2.2)
     assert (line.velocity_max, line.effort_max, line.inertia) == (20.0, 10.0, 0.2)
     assert math.isclose(line.initial_position, -0.8)
+    assert (line.gain, line.offset) == (-2.0, 0.1)  # for the physics, which simulates the URDF's joint
+
+
+def test_the_physics_gets_the_urdf_the_imu_link_and_the_transmissions():
+    robot = _arm()
+    view = fake_robot_view(robot)
+    assert view.urdf == f"urdf/{robot.robot}.urdf" and view.imu_link == robot.imu.frame_id
+    assert not view.has_transmissions and all((j.gain, j.offset) == (1.0, 0.0) for j in view.joints)
+    geared = replace(robot.joints[0], transmission=JointTransmission(direction=1, reduction=3.0))
+    assert fake_robot_view(replace(robot, joints=(geared, *robot.joints[1:]))).has_transmissions
+    assert fake_robot_view(replace(robot, imu=replace(robot.imu, enabled=False))).imu_link == ""
 
 
 def test_coupled_motors_have_no_limits_and_a_continuous_joint_none_either():

@@ -258,6 +258,36 @@ def test_fake_robot_on_mujoco_falls_passive_and_holds_with_the_yaml_gains(physic
            f"{max(legs.values()):.3f} rad; vacuum: {float(vacuum['moved_max']):.1f} rad")
 
 
+def test_a_fake_robot_with_a_transmission_gives_the_physics_its_gain_and_offset(tmp_path):
+    """No test robot with a fake robot has a transmission: the SCARA (generic_topics) gets one on its elbow, and
+    its fake robot source, which then carries kFakeTransmissions for the physics, compiles with -Werror, with
+    and without MuJoCo."""
+    from tests.support.cpp_build import (
+        WARNING_FLAGS,
+        load_models,
+        make_test_project,
+        message_include_flags,
+        render_package_to,
+        run_compiler,
+        standin_flags,
+    )
+
+    project = make_test_project(tmp_path / "project", only=["acme/scara"])
+    yaml_path = project / "robots" / "acme" / "scara.yaml"
+    yaml_path.write_text(yaml_path.read_text(encoding="utf-8") +
+                         "transmissions:\n  elbow: {direction: -1, reduction: 2.0, offset: 0.1}\n", encoding="utf-8")
+    package = tmp_path / "package"
+    render_package_to(load_models(project), package)
+    source = package / "src" / "acme" / "scara_fake_robot.cpp"
+    text = source.read_text(encoding="utf-8")
+    assert "kFakeTransmissions.data()}" in text
+    assert '  {-2.0, 0.1},  // "elbow"\n' in text and text.count("  {1.0, 0.0},  // ") == 4, text
+    for extra in ([], ["-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()]):
+        run_compiler([*WARNING_FLAGS, *extra, "-fsyntax-only", f"-I{package / 'include'}", *standin_flags(RUN_DISTRO),
+                      *message_include_flags("generic_topics"), str(source)],
+                     what=f"scara_fake_robot.cpp {' '.join(extra[:1])}")
+
+
 def test_benchmark_reports_rate_and_jitter(tmp_path):
     """benchmarks/bench_fake_robot.py runs (a short loop, the PM01) and reports what README says it does."""
     run = subprocess.run([sys.executable, str(REPO / "benchmarks" / "bench_fake_robot.py"), "--robot", "pm01",

@@ -27,6 +27,9 @@ ARGUMENT_HELP = {
     "physics": "with use_fake_robot:=true, how its joints move: vacuum (alone, no gravity) or mujoco (the robot "
                "compiled by MuJoCo from description_file: gravity, a floor, its links' coupling, hung in an elastic "
                "band; the package must be built with MuJoCo, README 'Try it without the robot')",
+    "physics_base": "with physics:=mujoco, how the robot's base is held: band (an elastic band above it; `ros2 param "
+                    "set /<robot>_fake_robot release_band true` lets go), free (it stands or falls), fixed (welded to "
+                    "the world: an arm)",
     "network_interface": "network interface of the robot (driver parameter network_interface)",
     "enable_monitor": "true: the driver warns on the console about read/write latency and send jitter above "
                       "its thresholds, for timing bring-up (driver parameter enable_monitor)",
@@ -147,7 +150,8 @@ def start_controllers(robot: RobotModel) -> tuple[tuple[str, ...], tuple[str, ..
 def launch_view(robot: RobotModel) -> LaunchView:
     active, inactive = start_controllers(robot)
     description = argument_defaults(robot)
-    fake = (("use_fake_robot", "false"), ("physics", "vacuum")) if has_fake_robot(robot) else ()
+    fake = (("use_fake_robot", "false"), ("physics", "vacuum"), ("physics_base", "band")) \
+        if has_fake_robot(robot) else ()
     defaults = (description[0], *fake, *description[1:], ("description_file", ""), ("controllers_file", ""),
                 ("active_controllers", " ".join(active)), ("inactive_controllers", " ".join(inactive)))
     return LaunchView(

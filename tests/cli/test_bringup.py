@@ -235,7 +235,8 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
     launched = run(package_dir, m.robot, **({"use_mock_hardware": "true"} if mock else {}))
 
     fake = has_fake_robot(m)
-    assert list(launched.arguments) == [LAUNCH_ARGUMENTS[0], *(["use_fake_robot", "physics"] if fake else []),
+    assert list(launched.arguments) == [LAUNCH_ARGUMENTS[0],
+                                        *(["use_fake_robot", "physics", "physics_base"] if fake else []),
                                         *LAUNCH_ARGUMENTS[1:]]
     defaults = {}
     for name, a in launched.arguments.items():
@@ -243,7 +244,8 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
         defaults[name] = "".join(s.perform(LaunchContext({})) for s in a.default_value)
     p = m.parameters
     assert defaults == {
-        "use_mock_hardware": "false", **({"use_fake_robot": "false", "physics": "vacuum"} if fake else {}),
+        "use_mock_hardware": "false",
+        **({"use_fake_robot": "false", "physics": "vacuum", "physics_base": "band"} if fake else {}),
         "network_interface": p.network_interface,
         "enable_monitor": "true" if p.enable_monitor else "false",
         "command_writer_period_us": str(p.command_writer_period_us), "state_decimation": str(p.state_decimation),
@@ -326,21 +328,26 @@ def test_use_fake_robot_starts_it_first_with_discovery_on_this_host(package, mon
 
 def test_physics_argument_chooses_the_fake_robots_physics(package, tmp_path) -> None:
     """physics (next to use_fake_robot, default vacuum): passed to the fake robot as --physics; mujoco also hands
-    it the URDF the description includes (--urdf: the package's, or description_file). A value it does not know,
-    or mujoco without the fake robot, stops the launch with one line."""
+    it physics_base (--base, default band) and the URDF the description includes (--urdf: the package's, or
+    description_file). A value it does not know, or mujoco without the fake robot, stops the launch with one
+    line."""
     package_dir, _ = package
     launched = run(package_dir, "pm01", use_fake_robot="true")
     assert "mujoco" in (launched.arguments["physics"].description or "")
     assert node(launched, "pm01_fake_robot")[0].arguments == ["--physics", "vacuum"]
     mujoco = run(package_dir, "pm01", use_fake_robot="true", physics="mujoco")
     assert node(mujoco, "pm01_fake_robot")[0].arguments == \
-        ["--physics", "mujoco", "--urdf", f"{package_dir}/urdf/pm01.urdf"]
+        ["--physics", "mujoco", "--base", "band", "--urdf", f"{package_dir}/urdf/pm01.urdf"]
     mine = tmp_path / "my pm01.urdf"
     mine.write_text((package_dir / "urdf" / "pm01.urdf").read_text())
-    chosen = run(package_dir, "pm01", use_fake_robot="true", physics="mujoco", description_file=str(mine))
-    assert node(chosen, "pm01_fake_robot")[0].arguments == ["--physics", "mujoco", "--urdf", str(mine)]
+    chosen = run(package_dir, "pm01", use_fake_robot="true", physics="mujoco", physics_base="fixed",
+                 description_file=str(mine))
+    assert node(chosen, "pm01_fake_robot")[0].arguments == ["--physics", "mujoco", "--base", "fixed", "--urdf",
+                                                            str(mine)]
     with pytest.raises(RuntimeError, match=r"^physics:=bullet: expected vacuum or mujoco$"):
         run(package_dir, "pm01", use_fake_robot="true", physics="bullet")
+    with pytest.raises(RuntimeError, match=r"^physics_base:=floating: expected band, free or fixed$"):
+        run(package_dir, "pm01", use_fake_robot="true", physics="mujoco", physics_base="floating")
     with pytest.raises(RuntimeError, match=r"^physics:=mujoco is the fake robot's physics: add use_fake_robot:=true$"):
         run(package_dir, "pm01", physics="mujoco")
 

@@ -49,8 +49,10 @@ ARGUMENTS = [
 OPTIONAL_ARGUMENTS = [
     ('use_fake_robot', 'false', 'true: also start <robot>_fake_robot, discovery kept on this host'),
     ('physics', 'vacuum', "the fake robot's physics: vacuum, or mujoco (the robot on MuJoCo, from its URDF)"),
+    ('physics_base', 'band', 'physics:=mujoco: the base held by an elastic band, free, or fixed to the world'),
 ]
 PHYSICS = ('vacuum', 'mujoco')
+PHYSICS_BASES = ('band', 'free', 'fixed')
 
 
 def keep_discovery_on_this_host():
@@ -78,6 +80,9 @@ def bringup(context):
     physics = value['physics']
     if physics not in PHYSICS:
         raise RuntimeError(f'physics:={physics}: expected vacuum or mujoco')
+    base = value['physics_base']
+    if base not in PHYSICS_BASES:
+        raise RuntimeError(f'physics_base:={base}: expected band, free or fixed')
     if value['use_fake_robot'] == 'true':
         if value.get('use_mock_hardware') == 'true':
             raise RuntimeError('use_fake_robot:=true and use_mock_hardware:=true exclude each other: the fake '
@@ -85,7 +90,8 @@ def bringup(context):
         nodes += keep_discovery_on_this_host()
         # mujoco: the fake robot simulates the URDF the description includes, package:// meshes found
         # through AMENT_PREFIX_PATH.
-        arguments = ['--physics', physics, *(['--urdf', description_file] if physics == 'mujoco' else [])]
+        arguments = ['--physics', physics,
+                     *(['--base', base, '--urdf', description_file] if physics == 'mujoco' else [])]
         nodes.append(Node(package=PACKAGE, executable=f'{robot}_fake_robot', output='both', arguments=arguments))
         # An SDK transport's fake robot listens on the loopback interface: so does the driver.
         value['network_interface'] = 'lo'

@@ -223,15 +223,16 @@ def physics_check(reference, cpp_builder):
 
 def _physics_run(binary, scenario: str, gains, *args: str) -> dict[str, str]:
     yaml_path = REPO / "robots" / "unitree" / "g1.yaml"
-    topic = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))["transport_options"]["lowcmd_topic"]
-    proc = run(binary, scenario, str(gains), topic, *args)
+    options = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))["transport_options"]
+    proc = run(binary, scenario, str(gains), options["lowcmd_topic"], options["lowstate_topic"], *args)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     return dict(line.split("=", 1) for line in proc.stdout.splitlines())
 
 
 def test_fake_robot_on_mujoco_falls_passive_and_holds_with_the_yaml_gains(physics_check, tmp_path, report):
     """--physics mujoco puts the generated fake robot's joints on real physics: passive, its arms fall under
-    gravity; held at their start by the YAML's default_gains, they stay; in the vacuum (no option) nothing moves."""
+    gravity; held at their start by the YAML's default_gains, they stay; in the vacuum (no option) nothing moves.
+    Its LowState_ carries the simulation's IMU."""
     binary, pkg = physics_check
     yaml_path = REPO / "robots" / "unitree" / "g1.yaml"
     _, gains = yaml_modes_and_gains(yaml_path)
@@ -252,10 +253,19 @@ def test_fake_robot_on_mujoco_falls_passive_and_holds_with_the_yaml_gains(physic
     assert len(arms) == 14 and len(legs) == 12, held
     assert max(arms.values()) < ARMS_HOLD, arms
     assert max(legs.values()) < LEGS_HOLD, legs
+    # The IMU the fake robot publishes is the simulation's: in the vacuum at rest (standard gravity, level);
+    # welded upright, MuJoCo's gravity (9.81); falling free (no band, nothing to land on: the skeleton has
+    # no collision geometry), weightless.
+    assert vacuum["imu_acc"].split() == ["0.0000", "0.0000", "9.8067"], vacuum  # float(9.80665)
+    assert [round(float(a), 2) for a in held["imu_acc"].split()] == [0.0, 0.0, 9.81], held
+    assert held["imu_quat"].split() == ["1.00000", "0.00000", "0.00000", "0.00000"], held
+    falling = _physics_run(binary, "passive", gains_file, *mujoco[:2], "--base", "free", *mujoco[4:])
+    assert all(abs(float(a)) < 0.5 for a in falling["imu_acc"].split()), falling
     report(f"fake robot on MuJoCo (G1, base fixed, 1 s): passive elbow falls "
            f"{float(passive['moved.left_elbow_joint']):.2f} rad; held by the YAML gains: arms within "
            f"{max(arms.values()):.3f} rad, legs within "
-           f"{max(legs.values()):.3f} rad; vacuum: {float(vacuum['moved_max']):.1f} rad")
+           f"{max(legs.values()):.3f} rad; vacuum: {float(vacuum['moved_max']):.1f} rad; IMU z welded "
+           f"{float(held['imu_acc'].split()[2]):.2f}, falling free {float(falling['imu_acc'].split()[2]):.2f} m/s^2")
 
 
 def test_a_fake_robot_with_a_transmission_gives_the_physics_its_gain_and_offset(tmp_path):

@@ -10,6 +10,9 @@
 // free|band|fixed), without MuJoCo: what fake_robot.hpp and fake_robot_main.hpp need whether or
 // not the package was built with MuJoCo. The physics itself is fake_physics_mujoco.hpp.
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -83,6 +86,44 @@ struct FakePhysicsOptions
   // Off by default: collision meshes of neighbouring links often overlap where the URDF puts
   // them, and MuJoCo then pushes them apart as hard as it can.
   bool self_collision{false};
+};
+
+// The IMU as the simulation measures it (fake_physics_mujoco.hpp), or at rest: level, gravity on
+// the accelerometer.
+struct FakeImuReading
+{
+  std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // w, x, y, z: the link in the world
+  std::array<double, 3> angular_velocity{};               // [rad/s] in the link's frame
+  std::array<double, 3> linear_acceleration{};            // [m/s^2] in the link's frame, gravity in
+
+  // Into a message's geometry_msgs fields (sensor_msgs/Imu: orientation, angular_velocity,
+  // linear_acceleration).
+  template<typename Quaternion, typename Vector3>
+  void to_ros(Quaternion & q, Vector3 & gyro, Vector3 & acc) const
+  {
+    q.w = orientation[0];
+    q.x = orientation[1];
+    q.y = orientation[2];
+    q.z = orientation[3];
+    gyro.x = angular_velocity[0];
+    gyro.y = angular_velocity[1];
+    gyro.z = angular_velocity[2];
+    acc.x = linear_acceleration[0];
+    acc.y = linear_acceleration[1];
+    acc.z = linear_acceleration[2];
+  }
+
+  // Roll, pitch, yaw [rad] of the orientation (z-y-x Euler angles), for messages that carry them.
+  std::array<double, 3> rpy() const
+  {
+    const double w = orientation[0];
+    const double x = orientation[1];
+    const double y = orientation[2];
+    const double z = orientation[3];
+    return {std::atan2(2.0 * (w * x + y * z), 1.0 - 2.0 * (x * x + y * y)),
+      std::asin(std::clamp(2.0 * (w * y - z * x), -1.0, 1.0)),
+      std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))};
+  }
 };
 
 // What the robot's own source (src/<vendor>/<robot>_fake_robot.cpp) tells the physics about it.

@@ -9,12 +9,14 @@
 // The robot's side of engineai_topics (EngineAI interface_protocol), for the fake robot: it takes
 // JointCommand arrays indexed by motor slot (the PD law: position, velocity, stiffness, damping,
 // feed_forward_torque; the direct `torque` field is not simulated) and publishes JointState (every
-// step), ImuInfo at rest (every step) and MotorDebug temperatures (every 10th step: 50 Hz at the
-// robot's 500 Hz), on the driver's topics with the driver's QoS. `corrupt` publishes JointState
-// arrays one motor short, which the driver must drop. MotorDebug is filled as far as the release of
-// interface_protocol it is built against has the members (engineai_topics.hpp): with the native
-// SDK's, also a 48 V supply, the `error` codes and the `offline` motors.
+// step), ImuInfo (at rest, or the physics'; every step) and MotorDebug temperatures (every 10th
+// step: 50 Hz at the robot's 500 Hz), on the driver's topics with the driver's QoS. `corrupt`
+// publishes JointState arrays one motor short, which the driver must drop. MotorDebug is filled as
+// far as the release of interface_protocol it is built against has the members
+// (engineai_topics.hpp): with the native SDK's, also a 48 V supply, the `error` codes and the
+// `offline` motors.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -91,6 +93,11 @@ public:
       state_.header.stamp = stamp;
       state_publisher_->publish(state_);
     }
+    model.imu.to_ros(imu_.quaternion, imu_.angular_velocity, imu_.linear_acceleration);
+    const std::array<double, 3> rpy = model.imu.rpy();
+    imu_.rpy.x = rpy[0];
+    imu_.rpy.y = rpy[1];
+    imu_.rpy.z = rpy[2];
     imu_.header.stamp = stamp;
     imu_publisher_->publish(imu_);
     if (model.steps % kMotorDebugEvery == 0) {

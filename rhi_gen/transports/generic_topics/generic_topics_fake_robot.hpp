@@ -8,12 +8,12 @@
 
 // The robot's side of generic_topics (sensor_msgs), for the fake robot: it takes the driver's
 // JointState commands (entries by name: position, velocity and effort targets, no gains) and
-// publishes every joint's JointState and a sensor_msgs/Imu at rest every step, on the driver's
-// topics with the driver's QoS. The commands carry no gains, so each joint is its own servo, as
-// the bridge or simulator behind such topics is: kp = 2500 I, kd = 100 I + 10 b (critically
-// damped at 50 rad/s, and stiff against the joint's own friction b); a velocity-commanded joint
-// (a wheel) damping only. `corrupt` publishes a position
-// array one entry short, which the driver must drop.
+// publishes every joint's JointState and a sensor_msgs/Imu (at rest, or the physics') every step,
+// on the driver's topics with the driver's QoS. The commands carry no gains, so each joint is its
+// own servo, as the bridge or simulator behind such topics is: kp = 2500 I, kd = 100 I + 10 b
+// (critically damped at 50 rad/s, and stiff against the joint's own friction b); a
+// velocity-commanded joint (a wheel) damping only. `corrupt` publishes a position array one entry
+// short, which the driver must drop.
 
 #include <cstddef>
 #include <cstdint>
@@ -91,6 +91,7 @@ public:
     JointState & msg = model.faults.corrupt ? short_state_ : state_;
     msg.header.stamp = stamp;
     state_publisher_->publish(msg);
+    model.imu.to_ros(imu_.orientation, imu_.angular_velocity, imu_.linear_acceleration);
     imu_.header.stamp = stamp;
     imu_publisher_->publish(imu_);
   }

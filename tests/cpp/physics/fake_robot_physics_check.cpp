@@ -4,11 +4,12 @@
 // robot is configured on a stand-in node and its loop stepped here at its rate, as its wall timer
 // would, commands arriving as LowCmd_ frames on its unitree_sdk2 channel (the stand-in SDK).
 //
-//   fake_robot_physics_check passive|hold GAINS TOPIC [fake robot arguments...]
+//   fake_robot_physics_check passive|hold GAINS TOPIC STATE_TOPIC [fake robot arguments...]
 //
 // passive: no command (every motor passive) for 1 s; hold: one LowCmd_ holding every motor at its
 // start position with the gains of GAINS ("slot kp kd" lines), on the command channel TOPIC, for 1 s. Prints key=value lines:
-// physics, moved.<joint> (the largest |q - q_start| over the run), moved_max, moved_joint.
+// physics, moved.<joint> (the largest |q - q_start| over the run), moved_max, moved_joint, and
+// imu_acc, imu_quat: the IMU of the last LowState_ it wrote on STATE_TOPIC.
 
 #include <algorithm>
 #include <cmath>
@@ -28,15 +29,17 @@ namespace rhi = robot_hardware_interface;
 
 int main(int argc, char ** argv)
 {
-  if (argc < 4) {
-    std::fprintf(stderr, "usage: %s passive|hold GAINS TOPIC [fake robot arguments...]\n", argv[0]);
+  if (argc < 5) {
+    std::fprintf(
+      stderr, "usage: %s passive|hold GAINS TOPIC STATE_TOPIC [fake robot arguments...]\n", argv[0]);
     return 2;
   }
   const std::string scenario = argv[1];
   const char * gains_file = argv[2];
   const char * topic = argv[3];
-  // argv[3] stands where the executable's own name would: parsing starts after it.
-  const rhi::FakeRobotArguments args = rhi::parse_fake_robot_arguments(argc - 3, argv + 3);
+  const char * state_topic = argv[4];
+  // argv[4] stands where the executable's own name would: parsing starts after it.
+  const rhi::FakeRobotArguments args = rhi::parse_fake_robot_arguments(argc - 4, argv + 4);
   if (!args.error.empty()) {
     std::printf("error=%s\n", args.error.c_str());
     return 2;
@@ -95,6 +98,16 @@ int main(int argc, char ** argv)
     most = moved[k] > moved[most] ? k : most;
   }
   std::printf("moved_max=%.6f\nmoved_joint=%s\n", moved[most], robot->joint(most).name);
+  rhi::unitree_hg::LowState state{};
+  if (!rhi_fake::unitree::last_written(state_topic, state)) {
+    std::printf("error=nothing written on %s\n", state_topic);
+    return 1;
+  }
+  const auto & imu = state.imu_state();
+  std::printf(
+    "imu_acc=%.4f %.4f %.4f\nimu_quat=%.5f %.5f %.5f %.5f\n", imu.accelerometer()[0],
+    imu.accelerometer()[1], imu.accelerometer()[2], imu.quaternion()[0], imu.quaternion()[1],
+    imu.quaternion()[2], imu.quaternion()[3]);
   rclcpp::shutdown();
   return 0;
 }

@@ -67,14 +67,6 @@
 namespace robot_hardware_interface
 {
 
-// The IMU as the simulation measures it.
-struct FakeImuReading
-{
-  std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // w, x, y, z: the link in the world
-  std::array<double, 3> angular_velocity{};               // [rad/s] in the link's frame
-  std::array<double, 3> linear_acceleration{};            // [m/s^2] in the link's frame, gravity in
-};
-
 // How far the robot's weight stretches a band of default stiffness [m].
 inline constexpr double kBandSagDefault = 0.02;
 // The physics steps at 1 kHz or faster [s].

@@ -79,9 +79,11 @@ struct FakeRobotModel
   : dynamics(joints, count)
   {
     temperature.fill(kFakeAmbientTemperature);
+    imu.linear_acceleration[2] = kStandardGravity;  // at rest until a physics engine measures it
   }
 
   FakeJointDynamics<N> dynamics;
+  FakeImuReading imu;  // what the transports publish as the robot's IMU
   std::array<double, N> temperature{};  // [deg C]
   std::array<uint32_t, N> error_code{};  // the vendor's bit field, 0 = no error
   std::array<bool, N> offline{};  // the robot reports the motor unreachable
@@ -252,6 +254,11 @@ public:
     transport_->take_commands(model_);
     // The nominal period, not the measured one: the same commands give the same motion.
     model_.dynamics.step(1.0 / rate_hz_);
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    if (physics_) {
+      model_.imu = physics_->imu();
+    }
+#endif
     ++model_.steps;
     if (!model_.faults.silent) {
       transport_->publish(model_);

@@ -10,12 +10,12 @@
 // The robot's side of agibot_topics (AimDK HAL), for the fake robot: per joint group it takes the
 // JointCommandArray (entries matched by name, position as the fallback for an unnamed entry) and
 // publishes the JointStateArray every step (1000 Hz, entries named, error codes where the message
-// has them, DomainErrorState 0), and sensor_msgs/Imu at rest every other step (500 Hz), on the
-// driver's topics with the driver's QoS. With hands it takes the HandCommandArray (entries by
-// index, position targets tracked by the hand's own position loop, kHandStiffness / kHandDamping)
-// and publishes the HandStateArray every step, entries unnamed and effort 0 as the X2's HAL
-// reports them. `corrupt` puts a NaN in every group's first position (and the left hand's), which
-// the driver must drop.
+// has them, DomainErrorState 0), and sensor_msgs/Imu (at rest, or the physics') every other step
+// (500 Hz), on the driver's topics with the driver's QoS. With hands it takes the HandCommandArray
+// (entries by index, position targets tracked by the hand's own position loop, kHandStiffness /
+// kHandDamping) and publishes the HandStateArray every step, entries unnamed and effort 0 as the
+// X2's HAL reports them. `corrupt` puts a NaN in every group's first position (and the left
+// hand's), which the driver must drop.
 
 #include <cstddef>
 #include <cstdint>
@@ -133,6 +133,7 @@ public:
       publish_hands(model, stamp);
     }
     if (model.steps % kImuEvery == 0) {
+      model.imu.to_ros(imu_.orientation, imu_.angular_velocity, imu_.linear_acceleration);
       imu_.header.stamp = stamp;
       imu_publisher_->publish(imu_);
     }

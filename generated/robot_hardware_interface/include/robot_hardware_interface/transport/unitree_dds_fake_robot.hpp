@@ -8,12 +8,13 @@
 #define ROBOT_HARDWARE_INTERFACE__TRANSPORT__UNITREE_DDS_FAKE_ROBOT_HPP_
 
 // The robot's side of unitree_dds (unitree_sdk2 DDS, hg and go messages), for the fake robot: on
-// the loopback interface (--network-interface changes it), it reads LowCmd_ on the driver's
-// command topic (a frame with a wrong CRC is dropped, as the motor board drops it; a slot whose
+// the loopback interface (--network-interface changes it), it reads LowCmd_ on the driver's command
+// topic (a frame with a wrong CRC is dropped, as the motor board drops it; a slot whose
 // MotorCmd_.mode is 0 is passive) and writes LowState_ every step (500 Hz) with a valid CRC: the
-// motors, the IMU at rest, temperatures (and, hg, supply voltage and error codes), hg's
-// mode_machine. `corrupt` sends frames whose CRC does not match, which the driver must drop. The
-// SDK calls the command handler on its own thread: commands wait under a lock until the next step.
+// motors, the IMU (at rest, or the physics'), temperatures (and, hg, supply voltage and error
+// codes), hg's mode_machine. `corrupt` sends frames whose CRC does not match, which the driver must
+// drop. The SDK calls the command handler on its own thread: commands wait under a lock until the
+// next step.
 
 #include <algorithm>
 #include <array>
@@ -351,6 +352,16 @@ public:
       motor.dq() = static_cast<float>(joints.velocity(slot));
       motor.tau_est() = static_cast<float>(joints.effort(slot));
       UnitreeFakeFields::write_health(motor, model.temperature[slot], model.error_code[slot]);
+    }
+    auto & imu = state_.imu_state();  // the model's: at rest, or the physics'
+    const std::array<double, 3> rpy = model.imu.rpy();
+    for (size_t i = 0; i < 4; ++i) {
+      imu.quaternion()[i] = static_cast<float>(model.imu.orientation[i]);  // w, x, y, z
+    }
+    for (size_t i = 0; i < 3; ++i) {
+      imu.gyroscope()[i] = static_cast<float>(model.imu.angular_velocity[i]);
+      imu.accelerometer()[i] = static_cast<float>(model.imu.linear_acceleration[i]);
+      imu.rpy()[i] = static_cast<float>(rpy[i]);
     }
     state_.tick() = static_cast<uint32_t>(model.steps * 2U);  // ms at 500 Hz
     state_.crc() = Family::state_crc(state_) ^ (model.faults.corrupt ? 1U : 0U);

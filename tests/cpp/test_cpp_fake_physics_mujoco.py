@@ -281,15 +281,14 @@ def test_motors_behind_transmissions_move_their_joints_as_the_urdf_joints_would(
     assert float(joint_units["effort.arm_left_4_joint"]) != 0.0   # the geared motor holds weight
 
 
-def test_the_physics_runs_faster_than_real_time_and_allocates_nothing(checker, talos_table, report):
+def test_the_physics_steps_every_step_and_allocates_nothing(checker, talos_table, report):
     proc = run_check(checker, "rate", talos_table, TALOS_URDF, package_path=str(example_robot_data_prefix()),
                      seconds=10.0)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     v = values(proc.stdout)
     assert float(v["physics_steps"]) == 10000
     assert int(v["mujoco_allocations"]) > 0 and int(v["step_allocations"]) == 0, proc.stdout  # hook live; none
-    # A goal, loosely: even under the suite's load the 7-joint arm must step at well over 1 kHz.
-    assert float(v["rtf"]) > 2.0, proc.stdout
+    # Speed is a figure, never an assertion (the benchmark and the reports section give it).
     report(f"fake physics (MuJoCo): TALOS arm with meshes, 1 kHz physics at 500 Hz commands: "
            f"{float(v['physics_hz']):.0f} steps/s, real-time factor {float(v['rtf']):.1f}")
 

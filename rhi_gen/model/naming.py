@@ -50,7 +50,8 @@ RESERVED_VENDOR_FOLDERS = frozenset({"common", "transport"})
 PACKAGE_SCOPE_NAMES = frozenset({
     "unitree_crc", "unitree_dex3", "unitree_go", "unitree_hg",     # namespaces
     # functions (snake_case, ROS 2 style, so a vendor name could redeclare one)
-    "all_finite", "bound_command_block", "bounded", "components_initialized", "copy_state_block",
+    "all_finite", "bound_command_block", "bound_command_slots", "bounded", "components_initialized",
+    "copy_state_block", "copy_state_slots",
     "takes_position", "cpu_has_clmul", "elapsed_us", "estop_pressed", "first_slot", "motor_mode",
     "for_each_slot_block", "health_state_value", "load_word",
     "low_cmd_crc", "low_state_crc",
@@ -58,7 +59,8 @@ PACKAGE_SCOPE_NAMES = frozenset({
     "masked_crc_clmul", "masked_crc_portable", "message_crc", "parse_bool", "parse_unsigned",
     "power_of_x_mod", "publish_ros_imu", "read_bool_parameter", "read_driver_parameters",
     "read_unsigned_parameter", "slots_are_valid", "motor_error_bits", "steady_now_ns", "steady_now_us", "steady_ns",
-    "transmit_command_block", "transmit_state_block", "trimmed",
+    "transmit_command_block", "transmit_command_slots", "transmit_state_block", "transmit_state_slots",
+    "trimmed",
     "word_masks",
     "make_fake_robot", "network_exposure", "parse_fake_robot_arguments", "run_fake_robot",  # the fake robot's
     "fake_robot_share_file", "use_fake_robot_physics",

@@ -19,9 +19,11 @@ namespace robot_hardware_interface
 // The per-slot conversions of read() and write(), written so that the compiler's default -O2
 // cost model turns them into vector code: every loop has a constant trip count (a block of
 // kSlotBlock slots) and the arrays it touches provably never overlap (one object, or __restrict),
-// so no scalar remainder loop and no run-time alias check is needed. With GCC on x86-64 Linux the
-// kernels are also built for AVX2 and the CPU picks the build at load time (an ifunc, as glibc
-// does for memcpy); not under ThreadSanitizer, whose runtime is not ready when ifuncs resolve.
+// so no scalar remainder loop and no run-time alias check is needed. Each conversion is one
+// kernel over all N slots (the *_slots functions below), its blocks inlined into it: one call per
+// frame, not one per block. With GCC on x86-64 Linux the kernels are also built for AVX2 and the
+// CPU picks the build at load time (an ifunc, as glibc does for memcpy); not under
+// ThreadSanitizer, whose runtime is not ready when ifuncs resolve.
 #if defined(__x86_64__) && defined(__linux__) && defined(__GNUC__) && !defined(__clang__) && \
   !defined(__SANITIZE_THREAD__)
 #define ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL __attribute__((target_clones("avx2", "default")))
@@ -39,6 +41,17 @@ namespace robot_hardware_interface
 #define ROBOT_HARDWARE_INTERFACE_UNLIKELY(condition) (condition)
 #endif
 
+// The blocks of a kernel, and the loop over them, are always inlined into the kernel: only there
+// are they compiled for the kernel's target (AVX2 above); a block left out of line would be the
+// baseline build.
+#if defined(__GNUC__)
+#define ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK inline __attribute__((always_inline))
+#define ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK_LAMBDA __attribute__((always_inline))
+#else
+#define ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK inline
+#define ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK_LAMBDA
+#endif
+
 constexpr size_t kSlotBlock = 8;
 
 // Calls kernel(count, begin) over [0, N): whole blocks of kSlotBlock slots, then, when N is not a
@@ -46,7 +59,7 @@ constexpr size_t kSlotBlock = 8;
 // slot (what they write never feeds what they read), so a slot done twice gets the same value.
 // `count` is a std::integral_constant: the block size, or N for robots with fewer slots.
 template<size_t N, typename Kernel>
-void for_each_slot_block(Kernel && kernel)
+ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK void for_each_slot_block(Kernel && kernel)
 {
   if constexpr (N < kSlotBlock) {
     kernel(std::integral_constant<size_t, N>{}, size_t{0});
@@ -60,20 +73,19 @@ void for_each_slot_block(Kernel && kernel)
   }
 }
 
-// What write() works on: one object, so that the compiler sees that no two arrays overlap.
+// What write() works on: one object, so that the compiler sees that no two arrays overlap. The
+// frame write() hands to the command writer is built in the command buffer's slot (__restrict).
 template<size_t N, typename T>
 struct ControllerFrames
 {
   JointStorage<N> joints;      // the exported doubles (read() fills the state ones)
   MotorCommand<N, T> lower;    // per-slot bounds of every command value
   MotorCommand<N, T> upper;
-  MotorCommand<N, T> command;  // the frame write() hands to the command writer
 };
 
 // read(): `Count` slots of a state frame, from `begin`, into the exported doubles.
 template<size_t Count, size_t N, typename T>
-ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
-void copy_state_block(
+ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK void copy_state_block(
   const MotorState<N, T> & __restrict state, JointStorage<N> & __restrict joints, size_t begin)
 {
   for (size_t k = 0; k < Count; ++k) {
@@ -98,8 +110,7 @@ struct TransmissionFactors
 // read() on a robot with transmissions: copy_state_block through the factors (effort: power is
 // conserved, so it scales by the inverse).
 template<size_t Count, size_t N, typename T>
-ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
-void transmit_state_block(
+ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK void transmit_state_block(
   const MotorState<N, T> & __restrict state, const TransmissionFactors<N> & __restrict factors,
   JointStorage<N> & __restrict joints, size_t begin)
 {
@@ -116,8 +127,7 @@ void transmit_state_block(
 // effort by scale. Signs are kept (a negative gain stays negative for the command guard), NaN
 // stays NaN.
 template<size_t Count, size_t N, typename T>
-ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
-void transmit_command_block(
+ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK void transmit_command_block(
   const TransmissionFactors<N> & __restrict factors, MotorCommand<N, T> & __restrict command,
   size_t begin)
 {
@@ -148,13 +158,13 @@ T bounded(double value, T lower, T upper)
 // bounded by its slot's [lower, upper] (limits for a claimed interface, a fixed value for an
 // unclaimed one).
 template<size_t Count, size_t N, typename T>
-ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
-void bound_command_block(ControllerFrames<N, T> & frames, size_t begin)
+ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK void bound_command_block(
+  const ControllerFrames<N, T> & __restrict frames, MotorCommand<N, T> & __restrict command,
+  size_t begin)
 {
   const JointStorage<N> & joints = frames.joints;
   const MotorCommand<N, T> & lower = frames.lower;
   const MotorCommand<N, T> & upper = frames.upper;
-  MotorCommand<N, T> & command = frames.command;
   for (size_t k = 0; k < Count; ++k) {
     const size_t i = begin + k;
     command.q_target[i] = bounded(joints.pos_des[i], lower.q_target[i], upper.q_target[i]);
@@ -163,6 +173,58 @@ void bound_command_block(ControllerFrames<N, T> & frames, size_t begin)
     command.kd[i] = bounded(joints.kd[i], lower.kd[i], upper.kd[i]);
     command.tau_ff[i] = bounded(joints.ff[i], lower.tau_ff[i], upper.tau_ff[i]);
   }
+}
+
+// The kernels read() and write() call: each block function above over all N slots, in one call.
+
+// read(): the state frame into the exported doubles.
+template<size_t N, typename T>
+ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
+void copy_state_slots(
+  const MotorState<N, T> & __restrict state, JointStorage<N> & __restrict joints)
+{
+  for_each_slot_block<N>(
+    [&](auto count, size_t begin) ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK_LAMBDA {
+      copy_state_block<decltype(count)::value>(state, joints, begin);
+    });
+}
+
+// read() on a robot with transmissions: the state frame through the factors.
+template<size_t N, typename T>
+ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
+void transmit_state_slots(
+  const MotorState<N, T> & __restrict state, const TransmissionFactors<N> & __restrict factors,
+  JointStorage<N> & __restrict joints)
+{
+  for_each_slot_block<N>(
+    [&](auto count, size_t begin) ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK_LAMBDA {
+      transmit_state_block<decltype(count)::value>(state, factors, joints, begin);
+    });
+}
+
+// write(): every slot of `command` (all of it: it may hold an older frame) from the exported
+// command doubles, bounded.
+template<size_t N, typename T>
+ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
+void bound_command_slots(
+  const ControllerFrames<N, T> & __restrict frames, MotorCommand<N, T> & __restrict command)
+{
+  for_each_slot_block<N>(
+    [&](auto count, size_t begin) ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK_LAMBDA {
+      bound_command_block<decltype(count)::value>(frames, command, begin);
+    });
+}
+
+// write() on a robot with transmissions: the bounded command, in place, into motor space.
+template<size_t N, typename T>
+ROBOT_HARDWARE_INTERFACE_SLOT_KERNEL
+void transmit_command_slots(
+  const TransmissionFactors<N> & __restrict factors, MotorCommand<N, T> & __restrict command)
+{
+  for_each_slot_block<N>(
+    [&](auto count, size_t begin) ROBOT_HARDWARE_INTERFACE_SLOT_BLOCK_LAMBDA {
+      transmit_command_block<decltype(count)::value>(factors, command, begin);
+    });
 }
 
 }  // namespace robot_hardware_interface

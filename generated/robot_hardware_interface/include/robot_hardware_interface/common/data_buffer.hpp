@@ -48,14 +48,32 @@ public:
 
   // Producer side: copy `data` into the back slot and publish it as the newest frame.
   // Producers::kMany: any number of producer threads, serialised by a mutex held only for this
-  // copy. Producers::kOne: the caller guarantees its calls never overlap.
+  // copy (or fill). Producers::kOne: the caller guarantees its calls never overlap.
   void set_data(const T & data)
   {
     if constexpr (kProducers == Producers::kMany) {
       std::lock_guard<std::mutex> lock(write_mutex_);
-      publish(data);
+      slots_[back_] = data;
+      publish();
     } else {
-      publish(data);
+      slots_[back_] = data;
+      publish();
+    }
+  }
+
+  // Producer side, in place: `fill(slot)` writes the new frame straight into the back slot, which
+  // is then published like a copy set_data() made (same ordering of producers). The slot holds an
+  // older frame: `fill` must write all of it. Spares the copy of a frame built elsewhere.
+  template<typename Fill>
+  void fill_data(Fill && fill)
+  {
+    if constexpr (kProducers == Producers::kMany) {
+      std::lock_guard<std::mutex> lock(write_mutex_);
+      fill(slots_[back_]);
+      publish();
+    } else {
+      fill(slots_[back_]);
+      publish();
     }
   }
 
@@ -72,10 +90,9 @@ public:
   }
 
 private:
-  // Copy into the back slot, then swap it with the middle one (under the producers' ordering).
-  void publish(const T & data)
+  // Swap the back slot, just written, with the middle one (under the producers' ordering).
+  void publish()
   {
-    slots_[back_] = data;
     const auto published = static_cast<uint8_t>(back_ | kFreshBit);
     const uint8_t previous = middle_.exchange(published, std::memory_order_acq_rel);
     back_ = static_cast<uint8_t>(previous & kIndexMask);

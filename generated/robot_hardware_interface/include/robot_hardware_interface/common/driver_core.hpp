@@ -310,10 +310,7 @@ public:
       if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(transmissions_.active())) {
         transmit_state(*state);
       } else {
-        for_each_slot_block<N>(
-          [this, state](auto count, size_t begin) {
-            copy_state_block<decltype(count)::value>(*state, frames_.joints, begin);
-          });
+        copy_state_slots(*state, frames_.joints);
       }
       if (state_is_current) {
         safe_start_.mark_state_copied();
@@ -357,20 +354,20 @@ public:
       rewritten = true;
       RCLCPP_INFO(logger(), "command initialized to the measured position with zero gains");
     }
-    for_each_slot_block<N>(
-      [this](auto count, size_t begin) {
-        bound_command_block<decltype(count)::value>(frames_, begin);
+    // The command is built in the command buffer's back slot itself (no frame to copy there).
+    motor_command_buffer_.fill_data(
+      [this](Command & command) {
+        bound_command_slots(frames_, command);
+        // A velocity-commanded joint has no position target: its measured position (its kp is 0).
+        for (size_t k = 0; k < slots_.velocity_slot_count(); ++k) {
+          const size_t slot = slots_.velocity_slots()[k];
+          command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);
+        }
+        // Bounded in joint space above; the motors' command from here.
+        if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(transmissions_.active())) {
+          transmit_command(command);
+        }
       });
-    // A velocity-commanded joint has no position target: its measured position (its kp is 0).
-    for (size_t k = 0; k < slots_.velocity_slot_count(); ++k) {
-      const size_t slot = slots_.velocity_slots()[k];
-      frames_.command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);
-    }
-    // Bounded in joint space above; the motors' command from here.
-    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(transmissions_.active())) {
-      transmit_command();
-    }
-    motor_command_buffer_.set_data(frames_.command);
     return rewritten;
   }
 
@@ -379,22 +376,14 @@ private:
   // plain loops of every other robot stay as they were).
   ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE void transmit_state(const State & state)
   {
-    for_each_slot_block<N>(
-      [this, &state](auto count, size_t begin) {
-        transmit_state_block<decltype(count)::value>(
-          state, transmissions_.factors(), frames_.joints, begin);
-      });
+    transmit_state_slots(state, transmissions_.factors(), frames_.joints);
     transmissions_.couple_state(state, frames_.joints);
   }
 
-  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE void transmit_command()
+  ROBOT_HARDWARE_INTERFACE_OUT_OF_LINE void transmit_command(Command & command)
   {
-    for_each_slot_block<N>(
-      [this](auto count, size_t begin) {
-        transmit_command_block<decltype(count)::value>(
-          transmissions_.factors(), frames_.command, begin);
-      });
-    transmissions_.couple_command(frames_.command);
+    transmit_command_slots(transmissions_.factors(), command);
+    transmissions_.couple_command(command);
   }
 
   const RobotSpec & spec_;
@@ -417,7 +406,7 @@ private:
   // state thread -> the /diagnostics thread
   DataBuffer<MotorHealthFrame<N>, Producers::kOne> motor_health_diagnostics_buffer_;
 
-  // ros2_control storage, the per-slot command bounds and write()'s frame: controller thread only
+  // ros2_control storage and the per-slot command bounds: controller thread only
   ControllerFrames<N, T> frames_{};
   ImuData imu_data_{};
   DriverHealthData health_{};

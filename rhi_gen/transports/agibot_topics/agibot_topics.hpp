@@ -298,16 +298,23 @@ private:
     const size_t count = msg.joints.size();
     const size_t remembered = std::min(count, group.entry_slots.size());
     size_t * const entry_slots = group.entry_slots.data();
-    size_t matched = 0;
-    bool resolved = count > remembered;  // some entry was matched by the slow path
     double non_finite = 0.0;  // stays 0 while every value is finite: x * 0 is NaN for inf and NaN
-    const auto check = [&non_finite, &matched](const auto & joint) {
+    const auto check = [&non_finite](const auto & joint) {
         non_finite += joint.position * 0.0 + joint.velocity * 0.0 + joint.effort * 0.0;
-        ++matched;
       };
-    for (size_t i = 0; i < remembered; ++i) {
+    // The usual message: every entry names the joint it named in the last message. This loop
+    // calls nothing, so that its sum stays in a register; the first other entry ends it.
+    size_t first_miss = 0;
+    while (first_miss < remembered && entry_slots[first_miss] != kNoSlot &&
+      names_.matches(msg.joints[first_miss].name, entry_slots[first_miss]))
+    {
+      check(msg.joints[first_miss]);
+      ++first_miss;
+    }
+    size_t matched = first_miss;
+    bool resolved = count > remembered;  // some entry was matched by the slow path
+    for (size_t i = first_miss; i < remembered; ++i) {
       const auto & joint = msg.joints[i];
-      // The usual case inline: the entry names the joint it named in the last message.
       size_t slot = entry_slots[i];
       if (slot == kNoSlot || !names_.matches(joint.name, slot)) {
         slot = resolve_slot(group, i, joint.name);
@@ -316,11 +323,13 @@ private:
       }
       if (slot != kNoSlot) {
         check(joint);
+        ++matched;
       }
     }
     for (size_t i = remembered; i < count; ++i) {  // more entries than the group has
       if (resolve_slot(group, i, msg.joints[i].name) != kNoSlot) {
         check(msg.joints[i]);
+        ++matched;
       }
     }
     // A joint counts once however often the message repeats it: a duplicate must not stand in
@@ -339,24 +348,44 @@ private:
     }
     auto & state = core_->state_frame();
     auto & health = core_->motor_health_frame();  // JointState.error_code (v1.0.0)
-    const auto store = [&state, &health](size_t slot, const auto & joint) {
-        state.q[slot] = static_cast<T>(joint.position);
-        state.dq[slot] = static_cast<T>(joint.velocity);
-        state.tau[slot] = static_cast<T>(joint.effort);
-        store_error_code(health, slot, joint);
+    // `with_health`: std::true_type while a motor health frame is due (health_frame_due()).
+    const auto store_all = [&](auto with_health) {
+        const auto store = [&state, &health](size_t slot, const auto & joint) {
+            state.q[slot] = static_cast<T>(joint.position);
+            state.dq[slot] = static_cast<T>(joint.velocity);
+            state.tau[slot] = static_cast<T>(joint.effort);
+            if constexpr (decltype(with_health)::value) {
+              store_error_code(health, slot, joint);
+            }
+          };
+        for (size_t i = 0; i < remembered; ++i) {
+          if (entry_slots[i] != kNoSlot) {
+            store(entry_slots[i], msg.joints[i]);
+          }
+        }
+        for (size_t i = remembered; i < count; ++i) {
+          const size_t slot = resolve_slot(group, i, msg.joints[i].name);
+          if (slot != kNoSlot) {
+            store(slot, msg.joints[i]);
+          }
+        }
       };
-    for (size_t i = 0; i < remembered; ++i) {
-      if (entry_slots[i] != kNoSlot) {
-        store(entry_slots[i], msg.joints[i]);
-      }
+    const bool health_due = health_frame_due(start);
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(health_due)) {
+      store_all(std::true_type{});
+    } else {
+      store_all(std::false_type{});
     }
-    for (size_t i = remembered; i < count; ++i) {
-      const size_t slot = resolve_slot(group, i, msg.joints[i].name);
-      if (slot != kNoSlot) {
-        store(slot, msg.joints[i]);
-      }
-    }
-    accept(group, start);
+    accept(group, start, health_due);
+  }
+
+  // Whether the motor health frame is due for a frame that started at `start`: only then do the
+  // callbacks store their error codes into it. Nothing reads the frame between two publications,
+  // and once it is due every group stores into it until the last one of the round publishes it
+  // (collect_motor_health()), so it holds each group's newest codes, as if stored every time.
+  bool health_frame_due(std::chrono::steady_clock::time_point start) const
+  {
+    return core_->motor_health_due(steady_ns(start));
   }
 
   // Decimation per group: the first frame of a group in an activation is always processed. A
@@ -377,8 +406,8 @@ private:
     return true;
   }
 
-  // A group's frame has been stored in the state frame.
-  void accept(Group & group, std::chrono::steady_clock::time_point start)
+  // A group's frame has been stored in the state frame (its error codes too when `health_due`).
+  void accept(Group & group, std::chrono::steady_clock::time_point start, bool health_due)
   {
     group.state_time_ns = steady_ns(start);
     group.frames_valid = true;
@@ -388,7 +417,7 @@ private:
     }
     // A motor health frame holds one round of every group's error codes: once one is due, each
     // group stores into it once, and the last one publishes it.
-    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(core_->motor_health_due(group.state_time_ns))) {
+    if (ROBOT_HARDWARE_INTERFACE_UNLIKELY(health_due)) {
       collect_motor_health(group);
     }
     // First-state rule: only once every group has reported is the state complete.
@@ -452,17 +481,20 @@ private:
     }
     auto & state = core_->state_frame();
     auto & health = core_->motor_health_frame();
-    const auto store = [&state, &health](size_t slot, const auto & axis) {
+    const bool health_due = health_frame_due(start);
+    const auto store = [&state, &health, health_due](size_t slot, const auto & axis) {
         state.q[slot] = static_cast<T>(axis.position);
         state.dq[slot] = static_cast<T>(axis.velocity);
         state.tau[slot] = T{0};
-        health.error_code[slot] = static_cast<double>(axis.faultcode);
+        if (health_due) {
+          health.error_code[slot] = static_cast<double>(axis.faultcode);
+        }
       };
     for (size_t i = 0; i < hands.axes; ++i) {
       store(hands.first_slot + i, msg.left_hands[i]);
       store(hands.first_slot + hands.axes + i, msg.right_hands[i]);
     }
-    accept(group, start);
+    accept(group, start, health_due);
   }
 
   // Executor thread (writer): both hands' position targets, in the writer cycle of the groups'.

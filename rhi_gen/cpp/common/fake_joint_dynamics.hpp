@@ -48,6 +48,41 @@ struct FakeMotorCommand
   double kd{0.0};
 };
 
+// The motors' last commands, as their boards keep them (FakeJointDynamics and a physics engine
+// standing in for it hold one each): a command with a non-finite number is dropped, as a real motor
+// board drops it, and counted; a slot past N is never commanded.
+template<size_t N>
+class FakeMotorCommands
+{
+public:
+  void set(size_t slot, const FakeMotorCommand & c)
+  {
+    if (slot >= N) {
+      return;
+    }
+    if (!std::isfinite(c.q) || !std::isfinite(c.dq) || !std::isfinite(c.tau_ff) ||
+      !std::isfinite(c.kp) || !std::isfinite(c.kd))
+    {
+      ++rejected_;
+      return;
+    }
+    commands_[slot] = c;
+  }
+
+  // Every motor passive (zero gains, zero torque), as when nobody commands the robot.
+  void release() {commands_.fill(FakeMotorCommand{});}
+  // An engine's copy of its FakeJointDynamics's commands, already checked there.
+  void assign(const std::array<FakeMotorCommand, N> & commands) {commands_ = commands;}
+
+  const FakeMotorCommand & operator[](size_t slot) const {return commands_[slot];}
+  const std::array<FakeMotorCommand, N> & all() const {return commands_;}
+  uint64_t rejected() const {return rejected_;}
+
+private:
+  std::array<FakeMotorCommand, N> commands_{};
+  uint64_t rejected_{0};
+};
+
 // A physics engine the joints can be handed to instead (fake_physics_mujoco.hpp: MuJoCo, with
 // gravity, contacts and the links' coupling). FakeJointDynamics then keeps the commands and the
 // state the transports read, and the engine moves the joints.
@@ -79,24 +114,11 @@ public:
     }
   }
 
-  // A motor's new command; a command with a non-finite number is ignored (a real motor board
-  // drops it too) and counted. A slot no joint drives is never moved.
-  void command(size_t slot, const FakeMotorCommand & c)
-  {
-    if (slot >= N) {
-      return;
-    }
-    if (!std::isfinite(c.q) || !std::isfinite(c.dq) || !std::isfinite(c.tau_ff) ||
-      !std::isfinite(c.kp) || !std::isfinite(c.kd))
-    {
-      ++rejected_commands_;
-      return;
-    }
-    command_[slot] = c;
-  }
-
+  // A motor's new command (FakeMotorCommands::set: non-finite ones dropped and counted). A slot no
+  // joint drives is never moved.
+  void command(size_t slot, const FakeMotorCommand & c) {command_.set(slot, c);}
   // Every motor passive (zero gains, zero torque), as when nobody commands the robot.
-  void release() {command_.fill(FakeMotorCommand{});}
+  void release() {command_.release();}
 
   // Hand the joints to a physics engine (nullptr: back to the rotors above). Not owned; it starts
   // from its own model of the robot, and place() reaches it too.
@@ -107,7 +129,7 @@ public:
   void step(double dt)
   {
     if (engine_ != nullptr) {
-      engine_->advance(dt, command_, q_, dq_, tau_);
+      engine_->advance(dt, command_.all(), q_, dq_, tau_);
       return;
     }
     for (size_t k = 0; k < count_; ++k) {
@@ -134,7 +156,7 @@ public:
   double velocity(size_t slot) const {return dq_[slot];}
   double effort(size_t slot) const {return tau_[slot];}
   const FakeMotorCommand & last_command(size_t slot) const {return command_[slot];}
-  uint64_t rejected_commands() const {return rejected_commands_;}
+  uint64_t rejected_commands() const {return command_.rejected();}
   const FakeJointSpec * joints() const {return joints_;}
   size_t joint_count() const {return count_;}
 
@@ -178,8 +200,7 @@ private:
   std::array<double, N> q_{};
   std::array<double, N> dq_{};
   std::array<double, N> tau_{};
-  std::array<FakeMotorCommand, N> command_{};
-  uint64_t rejected_commands_{0};
+  FakeMotorCommands<N> command_;
   FakeJointEngine<N> * engine_{nullptr};
 };
 

@@ -154,22 +154,9 @@ public:
 
   bool loaded() const {return data_ != nullptr;}
 
-  // A motor's new command, as FakeJointDynamics::command: non-finite numbers are dropped, counted.
-  void command(size_t slot, const FakeMotorCommand & c)
-  {
-    if (slot >= N) {
-      return;
-    }
-    if (!std::isfinite(c.q) || !std::isfinite(c.dq) || !std::isfinite(c.tau_ff) ||
-      !std::isfinite(c.kp) || !std::isfinite(c.kd))
-    {
-      ++rejected_commands_;
-      return;
-    }
-    command_[slot] = c;
-  }
-
-  void release() {command_.fill(FakeMotorCommand{});}
+  // A motor's new command, as FakeJointDynamics::command (FakeMotorCommands::set).
+  void command(size_t slot, const FakeMotorCommand & c) {command_.set(slot, c);}
+  void release() {command_.release();}
 
   // Advance the simulation by dt seconds, in physics steps of the options' timestep (the rest is
   // carried to the next call), the motor law recomputed before each.
@@ -194,7 +181,7 @@ public:
     double dt, const std::array<FakeMotorCommand, N> & command, std::array<double, N> & q,
     std::array<double, N> & dq, std::array<double, N> & tau) override
   {
-    command_ = command;
+    command_.assign(command);
     step(dt);
     for (size_t k = 0; k < count_; ++k) {
       const size_t s = joints_[k].slot;
@@ -234,7 +221,7 @@ public:
   double velocity(size_t slot) const {return dq_[slot];}
   double effort(size_t slot) const {return tau_[slot];}
   const FakeMotorCommand & last_command(size_t slot) const {return command_[slot];}
-  uint64_t rejected_commands() const {return rejected_commands_;}
+  uint64_t rejected_commands() const {return command_.rejected();}
   const FakeJointSpec * joints() const {return joints_;}
   size_t joint_count() const {return count_;}
 
@@ -740,8 +727,7 @@ private:
   std::array<double, N> q_{};
   std::array<double, N> dq_{};
   std::array<double, N> tau_{};
-  std::array<FakeMotorCommand, N> command_{};
-  uint64_t rejected_commands_{0};
+  FakeMotorCommands<N> command_;
   FakeImuReading imu_;
 };
 

@@ -958,13 +958,7 @@ def build_driver_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
     """Only the driver object (-Werror) against ``distro``'s stand-ins: the warning-free proof for
     a distro whose runtime path another distro's harness run already covers. Same shape as
     build_harness: (the object's result, [it])."""
-    m = rb.model
-    toy_bus = [TOY_BUS_DIR] if m.transport == "custom" else []
-    obj = builder.compile(driver_source(rb.package_dir, m.vendor, m.robot), FLAVOURS[flavour],
-                          [rb.package_dir / "include", *toy_bus, *DISTROS[distro].include_dirs],
-                          package=rb.package_dir,
-                          name=f"driver_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
-                          transport=m.transport, variants=message_variants(rb.label))
+    obj = compile_driver(builder, rb.package_dir, rb.label, rb.model.transport, flavour, distro)
     return obj, [obj]
 
 

@@ -44,6 +44,7 @@ from tests.support.cpp_build import (
     HARNESS_ROBOTS,
     OVERLAP_WORKERS,
     PACKAGE,
+    PHYSICS_CELL,
     WARNING_FLAGS,
     build_driver_object,
     build_harness,
@@ -51,6 +52,8 @@ from tests.support.cpp_build import (
     label_yaml,
     message_include_flags,
     message_variants,
+    physics_arguments,
+    physics_robot,
     project_robot_labels,
     render_test_package,
     require_compiler,
@@ -117,8 +120,10 @@ def build_and_run_cells(reference, builder, labels: set[str] | None = None
                 return None, None, set(used)
             if (distro, flavour) in COMPILE_MATRIX:
                 return build_driver_object(builder, b, flavour, distro=distro), None, set(used)
-            built = build_harness(builder, b, flavour, distro=distro)
-            run = run_binary_retrying(built[0].path, [f"--threads-ms={THREADS_MS}"]) if built[0].ok else None
+            physics = physics_robot(b.label, distro, flavour)
+            built = build_harness(builder, b, flavour, distro=distro, physics=physics is not None)
+            args = [f"--threads-ms={THREADS_MS}", *(physics_arguments(b, physics) if physics else [])]
+            run = run_binary_retrying(built[0].path, args) if built[0].ok else None
             return built, run, set(used)
 
     results = dict(zip(((b.label, d, f) for b, d, f in jobs), run_parallel(jobs, build_and_run, OVERLAP_WORKERS),
@@ -242,6 +247,9 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
         expected.add("take_control")
     if vendor_msgs.ENGINEAI_NATIVE_SDK in message_variants(label):  # MotorDebug.offline: an offline motor faults
         expected.add("offline")
+    physics = physics_robot(label, distro, flavour)
+    if physics is not None:  # the fake robot on MuJoCo (tests/cpp/harness/physics_checks.inc)
+        expected |= {"physics_faults", *(f"physics_{s}" for s in physics.scenarios)}
     missing = expected - set(run.sections)
     assert not missing, f"{label} ({flavour}): sections not run: {sorted(missing)}"
 
@@ -260,6 +268,67 @@ def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
     counts = dict(zip(("state callback", "IMU callback", "read()", "write()", "command writer"),
                       map(int, m.groups()[1:]), strict=False))
     assert all(v == 0 for v in counts.values()), f"{label}: heap allocations after activation: {counts}"
+
+
+# ------------------------------------------------------------------------------------ physics (issue 36)
+# The driver against its fake robot on MuJoCo (tests/cpp/harness/physics_checks.inc), in the harness cell
+# PHYSICS_CELL: the package's own URDF (the reference robots': inertial-only, no collision geometry, so the bases
+# hang on the band), the YAML's default_gains, no feed-forward. Bounds [rad, degrees], with what was measured:
+# - band, 5 s (the harness checks the base within 5 mm and the IMU's 9.81 +- 0.1 m/s^2 itself):
+#   the G1's legs within 0.05 (0.018, the hip pitches), its arms within 0.15 (0.092, the elbows), its IMU link
+#   upright within 3 (2.0); the waist pitch is not held: its kp of 40 N m/rad (unitree_sdk2's g1_ankle_swing)
+#   against the package URDF's placeholder torso, arms and head leans it 0.48 rad, and that moves the centre of
+#   mass under the band (the pelvis tilts). The PM01's joints within 0.05 (0.0035, the shoulder rolls), upright
+#   within 2 (0.03).
+# - arm, base fixed: the G1's left arm follows 0.5 Hz sines of 0.25 rad (kp 40, kd 1) within 0.15 at most
+#   (0.113, the elbow: gravity over kp) and 0.1 RMS (0.088); passive (kp = kd = 0) for 2 s, the shoulder pitch
+#   and the elbow fall by more than 0.3 (0.51 and 2.07).
+# label: ({part of a joint's name: its bound}, the tilt's bound, the joints not held)
+BAND_BOUNDS = {"unitree/g1": ({"hip": 0.05, "knee": 0.05, "ankle": 0.05, "shoulder": 0.15, "elbow": 0.15,
+                               "wrist": 0.15, "waist_yaw": 0.05, "waist_roll": 0.05}, 3.0, {"waist_pitch_joint"}),
+               "engineai/pm01": ({"": 0.05}, 2.0, set())}
+ARM_TRACK_MAX, ARM_TRACK_RMS, ARM_SAG = 0.15, 0.1, 0.3
+ARM_SAGS = {"unitree/g1": ("left_shoulder_pitch_joint", "left_elbow_joint")}
+PHYSICS_LABELS = sorted(label for label in ROBOTS if physics_robot(label, *PHYSICS_CELL) is not None)
+
+
+def physics_figures(stdout: str) -> dict[str, float]:
+    """The harness's "physics <scenario>.<name>=<value>" lines."""
+    return {k: float(v) for k, v in re.findall(r"^physics (\S+)=(\S+)$", stdout, re.M)}
+
+
+@pytest.mark.parametrize("label", PHYSICS_LABELS)
+def test_the_driver_drives_its_fake_robot_on_mujoco(harness_runs, reference, label, report):
+    _compilable_robot(reference, label)
+    run = harness_runs.get((label, *PHYSICS_CELL))
+    assert run is not None and "physics_faults" in run.sections, f"{label}: no physics run (see the cell's test)"
+    assert run.sections["physics_faults"][1] == 0, run.describe()
+    figures = physics_figures(run.stdout)
+    physics = physics_robot(label, *PHYSICS_CELL)
+    assert physics is not None
+    if "band" in physics.scenarios:
+        bounds, tilt, unheld = BAND_BOUNDS[label]
+        errors = {k.split(".", 2)[2]: v for k, v in figures.items() if k.startswith("band.error.")}
+        assert errors, run.stdout[-3000:]
+        bounded = {j: (e, next(b for part, b in bounds.items() if part in j))
+                   for j, e in errors.items() if j not in unheld and any(part in j for part in bounds)}
+        assert set(bounded) | unheld == set(errors), f"{label}: joints without a bound: {set(errors) - set(bounded)}"
+        over = {j: e for j, (e, b) in bounded.items() if e > b}
+        assert not over, f"{label} on the band: joints off their start pose beyond the bounds: {over}"
+        assert figures["band.tilt_deg"] < tilt, f"{label} on the band tilts {figures['band.tilt_deg']:.2f} degrees"
+        worst = max(bounded.items(), key=lambda kv: kv[1][0])
+        report(f"{label} on MuJoCo, on the band 5 s: worst held joint {worst[0]} {worst[1][0]:.4f} rad, base "
+               f"{figures['band.base_z'] * 1000:.2f} mm, tilt {figures['band.tilt_deg']:.2f} deg, "
+               f"IMU {figures['band.imu_acc']:.3f} m/s^2")
+    if "arm" in physics.scenarios:
+        track = {k.split(".", 2)[2]: v for k, v in figures.items() if k.startswith("arm.track_max.")}
+        rms = {k.split(".", 2)[2]: v for k, v in figures.items() if k.startswith("arm.track_rms.")}
+        assert track and max(track.values()) < ARM_TRACK_MAX and max(rms.values()) < ARM_TRACK_RMS, (track, rms)
+        for joint in ARM_SAGS[label]:
+            assert figures[f"arm.sag.{joint}"] > ARM_SAG, f"{label}: passive, {joint} did not sag: {figures}"
+        report(f"{label} on MuJoCo, arm base fixed: tracking max {max(track.values()):.4f} rad, RMS "
+               f"{max(rms.values()):.4f} rad; passive sag " +
+               ", ".join(f"{j} {figures[f'arm.sag.{j}']:.2f}" for j in ARM_SAGS[label]))
 
 
 # The threaded scenario commands every joint; an upper_body robot's real-thread checks are in its arm_sdk section.

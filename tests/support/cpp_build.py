@@ -938,16 +938,19 @@ ROBOT_SIDE_FLAGS = ("-Drobot_hardware_interface=rhi_harness_robot_side",)
 
 
 def compile_harness_object(builder: CppBuilder, rb: RobotBuild, flavour: str,
-                           distro: str = DEFAULT_DISTRO, robot_side: RobotBuild | None = None) -> CompileResult:
+                           distro: str = DEFAULT_DISTRO, robot_side: RobotBuild | None = None,
+                           extra_flags: Sequence[str] = (), extra_key: str = "") -> CompileResult:
     """driver_harness.cpp for one robot against ``distro``'s stand-ins (no driver needed; with a fake robot,
-    its section includes the fake robot headers of ``robot_side``'s package, ``rb``'s by default)."""
+    its section includes the fake robot headers of ``robot_side``'s package, ``rb``'s by default). ``extra_flags``
+    (the physics sections') and ``extra_key`` (what else they depend on) go into the compile and its key."""
     m = rb.model
     robot_package = (robot_side or rb).package_dir
     fake = fake_robot_source(robot_package, m.vendor, m.robot) is not None
-    return builder.compile(HARNESS_DIR / "driver_harness.cpp", (*harness_flags(flavour), *ROBOT_SIDE_FLAGS),
+    return builder.compile(HARNESS_DIR / "driver_harness.cpp",
+                           (*harness_flags(flavour), *ROBOT_SIDE_FLAGS, *extra_flags),
                            [rb.data_dir, HARNESS_DIR, TOY_BUS_DIR, *([robot_package / "include"] if fake else []),
                             *DISTROS[distro].include_dirs],
-                           digest_parts=[rb.data_header, builder._harness],
+                           digest_parts=[rb.data_header, builder._harness, extra_key],
                            package=robot_package if fake else None,
                            name=f"harness_{m.vendor}_{m.robot}_{flavour}_{distro}", distro=distro,
                            transport=m.transport, variants=message_variants(rb.label))
@@ -977,12 +980,58 @@ def compile_driver(builder: CppBuilder, package_dir: Path, label: str, transport
                            transport=transport, variants=message_variants(label))
 
 
+# The fake robot on MuJoCo in the harness (tests/cpp/harness/physics_checks.inc, issue 36): in PHYSICS_CELL the
+# harness and fake robot objects of these robots are built with MuJoCo (the test extra's mujoco-core) and the binary
+# runs the physics sections on the package's URDF: the faults on every one (its robot held as the base says), and
+# the scenarios named. No other cell changes: the physics adds no compile to the suite.
+PHYSICS_CELL = ("jazzy", "plain")
+
+
+@dataclass(frozen=True)
+class PhysicsRobot:
+    base: str                         # how the faults section holds it: band (a floating base) or fixed
+    scenarios: tuple[str, ...] = ()   # band, arm (the joints ARM_JOINTS names, base fixed), roll
+    arm: str = ""                     # a regular expression of the arm's joints, for "arm"
+
+
+PHYSICS_ROBOTS = {
+    "unitree/g1": PhysicsRobot("band", ("band", "arm"), r"left_(shoulder|elbow|wrist)"),
+    "engineai/pm01": PhysicsRobot("band", ("band",)),
+    "engineai/pm01_native_sdk": PhysicsRobot("band"),
+    "agibot/x2": PhysicsRobot("band"),
+}
+
+
+def physics_robot(label: str, distro: str, flavour: str) -> PhysicsRobot | None:
+    """How robot ``label`` runs on MuJoCo in the harness cell (distro, flavour); None: in a vacuum only."""
+    return PHYSICS_ROBOTS.get(label) if (distro, flavour) == PHYSICS_CELL else None
+
+
+def physics_arguments(rb: RobotBuild, physics: PhysicsRobot) -> list[str]:
+    """The harness binary's options for its physics sections (driver_harness.cpp main)."""
+    arm = [j for j in yaml_joint_map(rb.loaded.yaml_path) if physics.arm and re.search(physics.arm, j)]
+    return [f"--physics-urdf={rb.package_dir / 'urdf' / f'{rb.model.robot}.urdf'}", f"--physics-base={physics.base}",
+            f"--physics={','.join(physics.scenarios)}", f"--physics-arm={','.join(arm)}"]
+
+
+def _mujoco_parts() -> tuple[list[str], list[str], str] | None:
+    """(compile flags, link arguments, the library's name: part of the object keys), None without MuJoCo."""
+    mj = mujoco_dir()
+    libs = sorted(mj.glob("libmujoco.so*")) if mj is not None else []
+    if not libs:
+        return None
+    return ["-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()], \
+        ["-Wl,--no-as-needed", str(libs[-1]), f"-Wl,-rpath,{mj}"], libs[-1].name
+
+
 def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str = DEFAULT_DISTRO,
-                  robot_side: RobotBuild | None = None) -> tuple[CompileResult, list[CompileResult]]:
+                  robot_side: RobotBuild | None = None, physics: bool = False
+                  ) -> tuple[CompileResult, list[CompileResult]]:
     """Driver object (-Werror), harness object, fake robot object (where the package has one), CRC probe
     (unitree) and the linked binary, all against ``distro``'s stand-ins. ``robot_side``: the same robot in
     another rendered package to build the fake robot from (the robot as it really is, when ``rb``'s driver
-    is broken on purpose); ``rb`` by default.
+    is broken on purpose); ``rb`` by default. ``physics``: the fake robot and the harness with MuJoCo (the
+    physics sections; a failed step when MuJoCo is not installed).
 
     Returns (link result, [object results]); a failed step leaves later ones out."""
     m = rb.model
@@ -991,12 +1040,19 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str
     standins = DISTROS[distro].include_dirs
     tag = f"{m.vendor}_{m.robot}_{flavour}_{distro}"
     variants = message_variants(rb.label)
+    mujoco = _mujoco_parts() if physics else None
+    if physics and mujoco is None:
+        return CompileResult(False, Path("mujoco"), [], "MuJoCo is not installed: pip install -e '.[test]' "
+                             "installs mujoco-core (the harness's physics sections need it)"), []
+    physics_flags, link_libs, mujoco_key = mujoco if mujoco is not None else ([], [], "")
     steps = [compile_driver(builder, rb.package_dir, rb.label, m.transport, flavour, distro)]
-    steps.append(compile_harness_object(builder, rb, flavour, distro, robot_side))
+    steps.append(compile_harness_object(builder, rb, flavour, distro, robot_side,
+                                        [*physics_flags, "-DRHI_HARNESS_PHYSICS"] if mujoco else [], mujoco_key))
     robot_package = (robot_side or rb).package_dir
     fake = fake_robot_source(robot_package, m.vendor, m.robot)
     if fake is not None:
-        steps.append(builder.compile(fake, (*flags, *ROBOT_SIDE_FLAGS), [robot_package / "include", *standins],
+        steps.append(builder.compile(fake, (*flags, *ROBOT_SIDE_FLAGS, *physics_flags),
+                                     [robot_package / "include", *standins], digest_parts=[mujoco_key],
                                      package=robot_package, name=f"fake_{tag}", distro=distro,
                                      transport=m.transport, variants=variants))
     if m.transport == "unitree_dds":
@@ -1014,7 +1070,7 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str
     failed = [s for s in steps if not s.ok]
     if failed:
         return failed[0], steps
-    return builder.link(steps, flags, f"harness_{tag}"), steps
+    return builder.link(steps, flags, f"harness_{tag}", link_libs), steps
 
 
 @dataclass

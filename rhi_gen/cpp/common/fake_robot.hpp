@@ -185,6 +185,9 @@ public:
     std::vector<std::string> * warnings) = 0;
   // "vacuum", or "mujoco" once use_mujoco() succeeded.
   virtual const char * physics() const = 0;
+  // Where the robot's root link is in the world [m]: the simulation's, the origin in a vacuum
+  // (where nothing carries the robot anywhere).
+  virtual std::array<double, 3> base_position() const = 0;
 };
 
 // The robot-independent fake robot: its loop, its faults, its body; the transport speaks.
@@ -314,6 +317,16 @@ public:
   const char * physics() const override
   {
     return model_.dynamics.has_engine() ? "mujoco" : "vacuum";
+  }
+
+  std::array<double, 3> base_position() const override
+  {
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    if (physics_) {
+      return physics_->base_position();
+    }
+#endif
+    return {0.0, 0.0, 0.0};
   }
 
 private:

@@ -2778,6 +2778,9 @@ void test_unfilled_refuses_activation() {
 #if defined(RHI_FAKE_ROBOT)
 #include "fake_robot_checks.inc"
 #endif
+#if defined(RHI_HARNESS_PHYSICS)
+#include "physics_checks.inc"
+#endif
 #if defined(RHI_ARM_SDK)
 #include "arm_sdk_checks.inc"
 #endif
@@ -2802,11 +2805,24 @@ static bool selected(const std::string& only, const char* name) {
 int main(int argc, char** argv) {
   int threads_ms = 300;
   std::string only;
+#if defined(RHI_HARNESS_PHYSICS)
+  PhysicsSetup physics;  // the fake robot on MuJoCo: --physics-urdf, --physics-base, --physics, --physics-arm
+#endif
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--threads-ms=", 13) == 0) {
       threads_ms = std::atoi(argv[i] + 13);
     } else if (std::strncmp(argv[i], "--only=", 7) == 0) {
       only = argv[i] + 7;
+#if defined(RHI_HARNESS_PHYSICS)
+    } else if (std::strncmp(argv[i], "--physics-urdf=", 15) == 0) {
+      physics.urdf = argv[i] + 15;
+    } else if (std::strncmp(argv[i], "--physics-base=", 15) == 0) {
+      CHECK(FakePhysicsOptions::parse_base(argv[i] + 15, &physics.base), "%s names a base", argv[i]);
+    } else if (std::strncmp(argv[i], "--physics=", 10) == 0) {
+      physics.scenarios = argv[i] + 10;
+    } else if (std::strncmp(argv[i], "--physics-arm=", 14) == 0) {
+      physics.arm = argv[i] + 14;
+#endif
     }
   }
   std::printf("robot %s: transport %s, %zu SDK slots, %zu mapped joints, SDK float type %s, plugin %s\n",
@@ -2843,6 +2859,9 @@ int main(int argc, char** argv) {
 #endif
 #if defined(RHI_FAKE_ROBOT)
     if (selected(only, "fake_robot")) test_fake_robot();
+#endif
+#if defined(RHI_HARNESS_PHYSICS)
+    if (selected(only, "physics")) test_physics(physics);
 #endif
 #if defined(RHI_ARM_SDK)
     if (selected(only, "arm_sdk")) test_arm_sdk();

@@ -309,3 +309,14 @@ def test_benchmark_reports_rate_and_jitter(tmp_path):
     assert loop and int(loop.group(1)) > 0 and float(loop.group(2)) > 0, run.stdout
     assert re.search(r"^step pm01_fake_robot: median \d+ ns, p99 \d+ ns, p99\.9 \d+ ns over 200 steps$", run.stdout,
                      re.M), run.stdout
+
+
+def test_physics_benchmark_reports_the_real_time_factor(cpp_builder):
+    """benchmarks/bench_physics.py builds the PM01's harness with MuJoCo (the suite's own objects: the same keys in
+    the session's cache) and reports the real-time factor of physics, driver and controller on one thread."""
+    run = subprocess.run([sys.executable, str(REPO / "benchmarks" / "bench_physics.py"), "--robot", "pm01",
+                          "--repeat", "1"], capture_output=True, text=True, timeout=900,
+                         env={**os.environ, "RHI_CPP_CACHE": str(cpp_builder.cache_dir)})
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-4000:]
+    assert re.search(r"^engineai/pm01: physics 1000 Hz, robot 500 Hz, driver \+ controller on the same thread: "
+                     r"real-time factor [\d.]+ \(median of 1: [\d.]+\)$", run.stdout, re.M), run.stdout

@@ -1,0 +1,73 @@
+"""Benchmark: the fake robot on MuJoCo with the driver and the controller beside it, in real-time factors (issue 36).
+
+Run (from the repository root):
+
+    .venv/bin/python benchmarks/bench_physics.py [--robot g1] [--repeat 3]
+
+It renders the reference robots' package into a temporary folder and builds each robot's driver harness in the
+cell whose fake robot runs on MuJoCo (tests/support/cpp_build.py PHYSICS_CELL: Jazzy, -O2, the test extra's
+mujoco-core), then runs its physics sections (tests/cpp/harness/physics_checks.inc): the robot compiled by MuJoCo
+from the package's URDF, on the elastic band, the physics at 1 kHz, the fake robot answering the real driver at the
+robot's state rate through the robot's own protocol, the harness playing the controller manager (read(), a
+controller holding the start pose with the YAML's gains, write()), all of it on one thread as fast as it goes, for
+5 simulated seconds. The real-time factor is simulated time over wall time (above 1.0: the physics, both sides of
+the protocol and the control loop together keep up with the robot's clock on one core). Figures, never asserted:
+they depend on the machine and its load. --repeat runs each robot that many times (the median is printed).
+
+A robot whose vendor messages are not available here (AgiBot X2 without ../shared) is skipped with one line.
+Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import statistics
+import sys
+import tempfile
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from tests.support import cpp_build, vendor_msgs  # noqa: E402
+
+ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--robot", action="append", help="g1, x2 or pm01 (repeatable; default all)")
+    parser.add_argument("--repeat", type=int, default=3, help="runs per robot (default 3; the median is printed)")
+    args = parser.parse_args()
+    robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
+    cache = Path(os.environ.get("RHI_CPP_CACHE") or Path(tempfile.gettempdir()) / "rhi_bench_cache")
+    builder = cpp_build.CppBuilder(cache)
+    distro, flavour = cpp_build.PHYSICS_CELL
+    band = cpp_build.PhysicsRobot("band", ("band",))
+    with tempfile.TemporaryDirectory(prefix="rhi_bench_physics_") as tmp:
+        package = cpp_build.render_test_package(Path(tmp), only=robots, extra_robots=False)
+        for label in robots:
+            rb = package.build(label)
+            reason = vendor_msgs.skip_reason(rb.model.transport)
+            if reason:
+                print(f"{label}: skipped: {reason}")
+                continue
+            linked, _ = cpp_build.build_harness(builder, rb, flavour, distro, physics=True)
+            if not linked.ok:
+                sys.exit(f"bench_physics: {label} did not build:\n{linked.stderr[-4000:]}")
+            factors, rate = [], 0.0
+            for _ in range(max(1, args.repeat)):
+                run = cpp_build.run_binary(linked.path, ["--only=physics", *cpp_build.physics_arguments(rb, band)])
+                figures = dict(re.findall(r"^physics band\.(rtf|rate_hz)=(\S+)$", run.stdout, re.M))
+                if run.returncode != 0 or "rtf" not in figures:
+                    sys.exit(f"bench_physics: {label} failed:\n{run.describe()}")
+                factors.append(float(figures["rtf"]))
+                rate = float(figures["rate_hz"])
+            print(f"{label}: physics 1000 Hz, robot {rate:.0f} Hz, driver + controller on the same thread: real-time "
+                  f"factor {statistics.median(factors):.2f} (median of {len(factors)}: "
+                  f"{', '.join(f'{f:.2f}' for f in factors)})", flush=True)
+
+
+if __name__ == "__main__":
+    main()

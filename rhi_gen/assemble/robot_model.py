@@ -13,7 +13,7 @@ from pathlib import Path
 
 from .. import transports
 from ..errors import ConfigError, UrdfError
-from ..model.config import VendorConfig
+from ..model.config import ARMATURE_DEFAULT, VendorConfig
 from ..model.motor_groups import is_leg
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
 from ..model.robot import InputProvenance, JointTransmission, KdlRoot, MotorJoint, RobotModel
@@ -103,6 +103,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                       f"{config.hands}): the hand's own controller tracks them, so it takes no command mode or gains",
                       f"remove {key}.{name}")
     initial = dict(config.initial_positions)
+    armatures = dict(config.armatures)
     for name, value in config.initial_positions:
         joint = by_name[name]
         if (problem := limits_problem(joint.type, joint.limits, value)):
@@ -131,6 +132,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  default_damping=damping,
                                  initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),
                                  transmission=decided.joints.get(joint.name, JointTransmission()),
+                                 armature=armatures.get(joint.name, ARMATURE_DEFAULT),
                                  **_simulated(dynamics.get(joint.name))))
 
     if config.authority == "upper_body" and all(j.command_mode == "state" for j in joints):

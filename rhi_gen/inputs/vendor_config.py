@@ -14,6 +14,7 @@ from typing import Any
 from .. import transports
 from ..errors import ConfigError
 from ..model import AUTHORITIES, FLOAT_TYPES, HANDS, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
+from ..model.config import MAX_ARMATURE
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
 from ..typed_yaml.validator import Validator
 from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
@@ -21,7 +22,7 @@ from .vendor_transmissions import read_coupled_joints, read_transmissions
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
-            "unmapped_joints", "default_gains", "command_modes", "initial_positions", "transmissions",
+            "unmapped_joints", "default_gains", "command_modes", "initial_positions", "armatures", "transmissions",
             "coupled_joints", "urdf_transmissions", "authority", "hands")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
@@ -192,6 +193,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     default_gains = _default_gains(v, data.get("default_gains"), mapped) if "default_gains" in data else ()
     command_modes = _command_modes(v, data.get("command_modes"), mapped) if "command_modes" in data else ()
     initial = _initial_positions(v, data.get("initial_positions"), mapped) if "initial_positions" in data else ()
+    armatures = _armatures(v, data.get("armatures"), mapped) if "armatures" in data else ()
     coupled = read_coupled_joints(v, data["coupled_joints"], mapped) if "coupled_joints" in data else ()
     transmissions = read_transmissions(
         v, _joint_entries(v, data["transmissions"], "transmissions", mapped, "{knee_joint: {reduction: 50.0}}"),
@@ -206,7 +208,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         transport=transport.name, motor_count=motor_count, float_type=float_type, joint_map=joint_map,
         unmapped_joints=unmapped, imu=imu, transport_options=options, parameters=params,
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
-        default_gains=default_gains, command_modes=command_modes, initial_positions=initial,
+        default_gains=default_gains, command_modes=command_modes, initial_positions=initial, armatures=armatures,
         transmissions=transmissions, coupled_joints=coupled, urdf_transmissions=urdf_transmissions,
         authority=authority, hands=hands,
         content_sha256=content_sha256(data), key_lines=dict(lines),
@@ -263,6 +265,22 @@ def _initial_positions(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[
         q = f"{path}.{name}"
         out.append((name, v.finite_number(
             item, q, "write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")))
+    return tuple(out)
+
+
+def _armatures(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[str, float], ...]:
+    """armatures: {joint: kg m^2 (kg for a prismatic joint)}, finite, from 0 to MAX_ARMATURE."""
+    path = "armatures"
+    entries = _joint_entries(v, raw, path, mapped, "{knee_joint: 0.02}")
+    out = []
+    for name, item in entries.items():
+        q = f"{path}.{name}"
+        what = f"a number from 0 to {MAX_ARMATURE:g}"
+        fix = "write the rotor inertia reflected to the joint in kg*m^2 (kg for a prismatic joint), e.g. 0.01"
+        value = v.finite_number(item, q, fix, what)
+        if not 0.0 <= value <= MAX_ARMATURE:
+            raise v.error(q, f"must be {what}, got {item.raw!r}", fix=fix)
+        out.append((name, value))
     return tuple(out)
 
 

@@ -15,6 +15,10 @@ AUTHORITIES = ("full", "upper_body")
 # The robot's hands (vendor YAML `hands`): none, or a hand its transport drives beside the body (the G1's
 # Dex3-1 over unitree_sdk2, the X2's OmniHands over AimDK; hand motors in the joint_map slots after the body's).
 HANDS = ("none", "dex3", "omnihand")
+# The rotor inertia reflected to a joint the vendor YAML gives none for [kg m^2, or kg for a prismatic joint]: what
+# unitree_mujoco's robot models give their joints (armature 0.01), the order of a humanoid's geared motors.
+ARMATURE_DEFAULT = 0.01
+MAX_ARMATURE = 100.0  # far above any real rotor; a typo of a few zeros still fails
 MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the generated tables sane
 
 
@@ -104,6 +108,9 @@ class VendorConfig:
     # joint -> rad (or m) the description starts the joint at (YAML initial_positions); checked against
     # the URDF limits in assemble/robot_model.py
     initial_positions: tuple[tuple[str, float], ...] = ()
+    # joint -> kg m^2 (kg for a prismatic joint): the rotor inertia reflected to the joint, for the fake robot's
+    # physics (YAML armatures; ARMATURE_DEFAULT for a joint not listed)
+    armatures: tuple[tuple[str, float], ...] = ()
     # joint -> (direction, reduction, offset): joint = direction * motor / reduction + offset (YAML transmissions)
     transmissions: tuple[tuple[str, int, float, float], ...] = ()
     # (group, joints, matrix): joint = matrix @ motor + offset, motor k in the slot of joints[k] (YAML coupled_joints)

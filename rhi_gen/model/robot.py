@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .config import ImuConfig, Parameters, TransportOptions
+from .config import ARMATURE_DEFAULT, ImuConfig, Parameters, TransportOptions
 from .motor_groups import MotorGroup, motor_groups
 from .naming import PACKAGE_NAMESPACE
 from .urdf import JointLimits
@@ -64,6 +64,9 @@ class MotorJoint:
     # [kg m^2, or kg for a prismatic joint] and the URDF <dynamics damping> or a default.
     inertia: float = 0.01
     damping: float = 0.1
+    # The rotor inertia reflected to the joint [kg m^2, or kg], the fake robot's physics adds it to the joint
+    # (MuJoCo's armature): the YAML's armatures, or ARMATURE_DEFAULT.
+    armature: float = ARMATURE_DEFAULT
 
 
 @dataclass(frozen=True)

@@ -30,6 +30,7 @@ class FakeJointLine:
     damping: float
     initial_position: float
     velocity_commanded: bool = False  # a wheel
+    armature: float = 0.01  # [kg m^2 or kg] the rotor inertia reflected to the URDF joint, for the physics
     gain: float = 1.0     # its transmission, for the physics: motor = gain * (joint - offset)
     offset: float = 0.0
 
@@ -87,7 +88,8 @@ def has_fake_robot(robot: RobotModel) -> bool:
 def fake_robot_view(robot: RobotModel) -> FakeRobotView:
     coupled = {name for group in robot.coupled_groups for name in group.joints}
     transport = transports.get(robot.transport)
-    lines = (replace(_line(j, j.name in coupled), velocity_commanded=j.command_mode == "velocity")
+    lines = (replace(_line(j, j.name in coupled), velocity_commanded=j.command_mode == "velocity",
+                     armature=j.armature)
              for j in robot.joints_by_index)
     return FakeRobotView(tuple(lines),
                          transport.fake_state_rate_hz, f"{robot.robot}_fake_robot", f"urdf/{robot.robot}.urdf",

@@ -281,6 +281,18 @@ def test_motors_behind_transmissions_move_their_joints_as_the_urdf_joints_would(
     assert float(joint_units["effort.arm_left_4_joint"]) != 0.0   # the geared motor holds weight
 
 
+def test_each_joint_gets_its_own_rotor_inertia(checker, talos_table):
+    """FakeJointSpec::armature (the vendor YAML's armatures, rhi_gen/model/config.py ARMATURE_DEFAULT otherwise)
+    becomes the armature of that joint in MuJoCo's model, joint by joint."""
+    proc = run_check(checker, "armature", talos_table, TALOS_URDF)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    found = re.findall(r"^armature\.(\S+)=(\S+) given=(\S+)$", proc.stdout, re.M)
+    assert len(found) == len(yaml_joint_map(TALOS_YAML)), proc.stdout
+    assert len({given for _, _, given in found}) == len(found)  # distinct: a mix-up would show
+    for joint, held, given in found:
+        assert float(held) == pytest.approx(float(given), rel=1e-12), (joint, held, given)
+
+
 def test_the_physics_steps_every_step_and_allocates_nothing(checker, talos_table, report):
     proc = run_check(checker, "rate", talos_table, TALOS_URDF, package_path=str(example_robot_data_prefix()),
                      seconds=10.0)

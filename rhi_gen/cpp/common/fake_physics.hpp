@@ -61,9 +61,8 @@ struct FakePhysicsOptions
   std::string urdf_path;          // the package's installed URDF
   FakeBase base{FakeBase::kBand};
   double timestep{0.001};         // [s] one physics step: 1 kHz (at most kLongestTimestep)
-  // Rotor inertia reflected to each joint of the table [kg m^2] (slider: [kg]); `armatures`, when
-  // it has one value per joint of the table (FakeJointSpec order), overrides it joint by joint.
-  double armature{0.01};
+  // Rotor inertia reflected to each joint of the table [kg m^2] (slider: [kg]): FakeJointSpec's
+  // armature, unless this has one value per joint of the table (FakeJointSpec order).
   std::vector<double> armatures;
   // One per joint of the table (FakeJointSpec order), or none: every motor is its joint.
   std::vector<FakeTransmission> transmissions;

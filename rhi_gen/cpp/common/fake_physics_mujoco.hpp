@@ -17,7 +17,8 @@
 // What it simulates:
 // - the robot from the URDF: MuJoCo's URDF defaults (visual elements discarded, static bodies
 //   fused, radians), the URDF's joint limits, <dynamics damping friction> and <inertial>s; each
-//   joint of the table gets an armature (rotor inertia, FakePhysicsOptions::armature);
+//   joint of the table gets an armature (rotor inertia: FakeJointSpec::armature, the vendor
+//   YAML's);
 // - meshes: `package://<pkg>/<path>` is looked up as <prefix>/share/<pkg>/<path> (and
 //   <prefix>/<pkg>/<path>) under each prefix of FakePhysicsOptions::package_path, `file://` and
 //   relative paths as MuJoCo does; when one cannot be found, every mesh geom is dropped and the
@@ -333,7 +334,7 @@ private:
           "moving joint of the URDF as MuJoCo reads it";
         return false;
       }
-      mjs_asJoint(e)->armature = options_.armatures.empty() ? options_.armature :
+      mjs_asJoint(e)->armature = options_.armatures.empty() ? joints_[k].armature :
         options_.armatures[k];
     }
     const std::string imu = options_.imu_link.empty() ? root_name_ : options_.imu_link;

@@ -10,6 +10,8 @@
 // (rhi-gen's reading of the URDF and the vendor YAML, written by the test), optionally followed
 // by "gain offset", the motor's transmission (then the row is in motor units). Scenarios:
 //   load   load only: ok=1 or error=<the one line>, warning=<line> each, the model's sizes
+//   armature  load with a rotor inertia of 0.01 k kg m^2 on the k-th joint of the table: armature.<joint>=
+//          <what the model holds> given=<what the table gave>, each
 //   track  the YAML's gains, the joints following sines of their amplitude (0.5 Hz) from their
 //          start pose under gravity, after a second at rest, with a controller's gravity
 //          feed-forward (tau_ff: a perfect model's gravity torque at the target); then a hold
@@ -118,6 +120,7 @@ std::vector<Row> read_table(const char * path)
     r.spec.effort_max = number(eff);
     r.spec.inertia = 0.01;
     r.spec.damping = 0.0;
+    r.spec.armature = 0.01;  // the vendor YAML default (rhi_gen/model/config.py ARMATURE_DEFAULT)
     r.spec.initial_position = number(init);
     r.kp = number(kp);
     r.kd = number(kd);
@@ -194,6 +197,9 @@ int main(int argc, char ** argv)
   std::vector<rhi::FakeJointSpec> specs;
   for (const Row & r : rows) {
     specs.push_back(r.spec);
+    if (scenario == "armature") {  // a distinct rotor inertia per joint, to find in the model
+      specs.back().armature = 0.01 * static_cast<double>(specs.size());
+    }
   }
   rhi::FakePhysicsOptions options;
   options.urdf_path = argv[3];
@@ -233,6 +239,14 @@ int main(int argc, char ** argv)
     static_cast<long long>(m->nmesh), static_cast<long long>(m->nq),  // NOLINT(runtime/int)
     m->opt.timestep, sim.floor_height());
   if (scenario == "load") {
+    return 0;
+  }
+  if (scenario == "armature") {
+    for (const rhi::FakeJointSpec & j : specs) {
+      const int id = mj_name2id(m, mjOBJ_JOINT, j.name);
+      std::printf("armature.%s=%.17g given=%.17g\n", j.name, id >= 0 ? m->dof_armature[m->jnt_dofadr[id]] : -1.0,
+        j.armature);
+    }
     return 0;
   }
 

@@ -10,6 +10,7 @@ from rhi_gen.assemble.robot_model import build_model
 from rhi_gen.errors import ConfigError
 from rhi_gen.inputs.urdf_loader import load_urdf, parse_urdf_bytes
 from rhi_gen.inputs.vendor_config import load_config
+from rhi_gen.model.config import ARMATURE_DEFAULT
 from rhi_gen.model.naming import joint_name_problem
 from tests.support.repo import URDF_FIXTURES as FIXTURES
 
@@ -170,6 +171,31 @@ def test_existing_ros2_control_mimic_joint_takes_no_commands(tmp_path):
         model_for(tmp_path, _urdf_with_tag(tmp_path, "j2"), "joint_map:\n  j1: 0\n", motor_count=1)
     m = model_for(tmp_path, _urdf_with_tag(tmp_path, "j2", command=False), "joint_map:\n  j1: 0\n", motor_count=1)
     assert m.mimic_joints == ("j2",)
+
+
+# ---------------------------------------------------------------- armatures
+def test_armatures_default_and_are_read_joint_by_joint(tmp_path):
+    m = model_for(tmp_path, FIXTURES / "simple_arm.urdf", ARM_MAP)
+    assert [j.armature for j in m.joints] == [ARMATURE_DEFAULT] * 3
+    m = model_for(tmp_path, FIXTURES / "simple_arm.urdf", ARM_MAP + "armatures: {elbow: 0.002, shoulder_pan: 0}\n")
+    assert [(j.name, j.armature) for j in m.joints] == [("shoulder_pan", 0.0), ("shoulder_lift", ARMATURE_DEFAULT),
+                                                        ("elbow", 0.002)]
+
+
+@pytest.mark.parametrize(("body", "key", "message", "fix"), [
+    ("armatures: {elbow: -0.1}\n", "armatures.elbow", "must be a number from 0 to 100, got '-0.1'", "kg*m^2"),
+    ("armatures: {elbow: 1000}\n", "armatures.elbow", "must be a number from 0 to 100", "e.g. 0.01"),
+    ("armatures: {elbow: heavy}\n", "armatures.elbow", "must be a number from 0 to 100, got 'heavy'", "kg*m^2"),
+    ("armatures: {elbw: 0.01}\n", "armatures.elbw", "'elbw' is not a joint of joint_map", "did you mean 'elbow'?"),
+    ("armatures: 0.01\n", "armatures", "must be a mapping", "{knee_joint: 0.02}"),
+])
+def test_bad_armatures_are_one_line_with_the_yaml_line_and_a_fix(tmp_path, body, key, message, fix):
+    with pytest.raises(ConfigError) as info:
+        model_for(tmp_path, FIXTURES / "simple_arm.urdf", ARM_MAP + body)
+    err = info.value
+    assert err.key == key and err.line == 10, (err.key, err.line)
+    assert message in err.message and fix in (err.fix or ""), str(err)
+    assert "\n" not in str(err)
 
 
 # ---------------------------------------------------------------- initial_positions

@@ -37,6 +37,9 @@ struct FakeJointSpec
   double damping;           // [N m s / rad] or [N s / m]: URDF <dynamics damping> or a default
   double initial_position;  // where the fake robot starts: the description's initial_value
   bool velocity_commanded;  // a wheel: a servo without gains in the command keeps its velocity
+  // [kg m^2] or [kg]: the rotor inertia reflected to the URDF joint (vendor YAML armatures, default
+  // 0.01), which the physics adds to the joint (fake_physics_mujoco.hpp); the vacuum ignores it
+  double armature;
 };
 
 // What one motor was last told, in the vendor's terms.

@@ -283,12 +283,18 @@ def test_hot_paths_allocate_nothing(harness_runs, reference, label, distro):
 # - arm, base fixed: the G1's left arm follows 0.5 Hz sines of 0.25 rad (kp 40, kd 1) within 0.15 at most
 #   (0.113, the elbow: gravity over kp) and 0.1 RMS (0.088); passive (kp = kd = 0) for 2 s, the shoulder pitch
 #   and the elbow fall by more than 0.3 (0.51 and 2.07).
+# - roll, base free: the Go2-W (tests/cpp/harness/robots/unitree/go2w.urdf: the Go2's kinematics and inertials,
+#   primitive collisions, 0.09 m wheels) stands on its wheels at the YAML's initial_positions (go2w_stand_example's
+#   pose), legs held with kp 70, kd 5; its wheels ramped to 10 rad/s over 0.5 s (kd 5) for 2 s: it travels more
+#   than 1.0 m forwards (1.55; 1.58 without slip), less than 0.05 m sideways (0.000), its wheels within 0.5 rad/s
+#   of the command after the first second (0.10), its IMU link within 10 degrees of upright (2.5).
 # label: ({part of a joint's name: its bound}, the tilt's bound, the joints not held)
 BAND_BOUNDS = {"unitree/g1": ({"hip": 0.05, "knee": 0.05, "ankle": 0.05, "shoulder": 0.15, "elbow": 0.15,
                                "wrist": 0.15, "waist_yaw": 0.05, "waist_roll": 0.05}, 3.0, {"waist_pitch_joint"}),
                "engineai/pm01": ({"": 0.05}, 2.0, set())}
 ARM_TRACK_MAX, ARM_TRACK_RMS, ARM_SAG = 0.15, 0.1, 0.3
 ARM_SAGS = {"unitree/g1": ("left_shoulder_pitch_joint", "left_elbow_joint")}
+ROLL_FORWARD, ROLL_SIDEWAYS, ROLL_SPEED, ROLL_TILT = 1.0, 0.05, 0.5, 10.0
 PHYSICS_LABELS = sorted(label for label in ROBOTS if physics_robot(label, *PHYSICS_CELL) is not None)
 
 
@@ -329,6 +335,12 @@ def test_the_driver_drives_its_fake_robot_on_mujoco(harness_runs, reference, lab
         report(f"{label} on MuJoCo, arm base fixed: tracking max {max(track.values()):.4f} rad, RMS "
                f"{max(rms.values()):.4f} rad; passive sag " +
                ", ".join(f"{j} {figures[f'arm.sag.{j}']:.2f}" for j in ARM_SAGS[label]))
+    if "roll" in physics.scenarios:
+        roll = {k.split(".", 1)[1]: v for k, v in figures.items() if k.startswith("roll.")}
+        assert roll["dx"] > ROLL_FORWARD and abs(roll["dy"]) < ROLL_SIDEWAYS, f"{label} did not roll: {roll}"
+        assert roll["speed_error"] < ROLL_SPEED and roll["tilt_deg"] < ROLL_TILT, f"{label}: {roll}"
+        report(f"{label} on MuJoCo, wheels at 10 rad/s for 2 s: {roll['dx']:.3f} m forwards, {roll['dy']:.3f} m "
+               f"sideways, wheel speed within {roll['speed_error']:.3f} rad/s, tilt {roll['tilt_deg']:.1f} deg")
 
 
 # The threaded scenario commands every joint; an upper_body robot's real-thread checks are in its arm_sdk section.

@@ -999,6 +999,7 @@ PHYSICS_ROBOTS = {
     "engineai/pm01": PhysicsRobot("band", ("band",)),
     "engineai/pm01_native_sdk": PhysicsRobot("band"),
     "agibot/x2": PhysicsRobot("band"),
+    "unitree/go2w": PhysicsRobot("band", ("roll",)),
 }
 
 

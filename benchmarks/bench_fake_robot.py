@@ -19,19 +19,18 @@ Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs.
 from __future__ import annotations
 
 import argparse
-import os
 import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from tests.support import cpp_build, vendor_msgs  # noqa: E402
+from reference_builds import chosen, reference_builds  # noqa: E402  (benchmarks/, the script's folder)
+
+from tests.support import cpp_build  # noqa: E402
 
 BENCH_SOURCE = REPO / "benchmarks" / "cpp" / "bench_fake_robot.cpp"
-ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
 DISTRO = "rolling"
 FLAGS = cpp_build.FLAVOURS["plain"]
 
@@ -61,17 +60,9 @@ def main() -> None:
     parser.add_argument("--steps", type=int, default=20000, help="timed loop iterations (default 20000)")
     parser.add_argument("--robot", action="append", help="g1, x2 or pm01 (repeatable; default all)")
     args = parser.parse_args()
-    robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
-    cache = Path(os.environ.get("RHI_CPP_CACHE") or Path(tempfile.gettempdir()) / "rhi_bench_cache")
-    builder = cpp_build.CppBuilder(cache)
-    with tempfile.TemporaryDirectory(prefix="rhi_bench_fake_") as tmp:
-        package = cpp_build.render_test_package(Path(tmp), only=robots, extra_robots=False)
-        for label in robots:
-            rb = package.build(label)
-            reason = vendor_msgs.skip_reason(rb.model.transport)
-            if reason:
-                print(f"{label}: skipped: {reason}")
-                continue
+    with reference_builds(chosen(args.robot), "rhi_bench_fake_") as (builder, builds):
+        for rb in builds:
+            label = rb.label
             binary = build(builder, rb)
             run = subprocess.run([str(binary), f"--seconds={args.seconds}", f"--steps={args.steps}"],
                                  capture_output=True, text=True, timeout=120 + args.seconds)

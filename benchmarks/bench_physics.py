@@ -20,19 +20,17 @@ Environment: RHI_CPP_CACHE=<dir> keeps compiled objects between runs.
 from __future__ import annotations
 
 import argparse
-import os
 import re
 import statistics
 import sys
-import tempfile
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from tests.support import cpp_build, vendor_msgs  # noqa: E402
+from reference_builds import chosen, reference_builds  # noqa: E402  (benchmarks/, the script's folder)
 
-ROBOTS = ("unitree/g1", "agibot/x2", "engineai/pm01")
+from tests.support import cpp_build  # noqa: E402
 
 
 def main() -> None:
@@ -40,19 +38,11 @@ def main() -> None:
     parser.add_argument("--robot", action="append", help="g1, x2 or pm01 (repeatable; default all)")
     parser.add_argument("--repeat", type=int, default=3, help="runs per robot (default 3; the median is printed)")
     args = parser.parse_args()
-    robots = [r for r in ROBOTS if not args.robot or r.split("/")[1] in args.robot]
-    cache = Path(os.environ.get("RHI_CPP_CACHE") or Path(tempfile.gettempdir()) / "rhi_bench_cache")
-    builder = cpp_build.CppBuilder(cache)
     distro, flavour = cpp_build.PHYSICS_CELL
     band = cpp_build.PhysicsRobot("band", ("band",))
-    with tempfile.TemporaryDirectory(prefix="rhi_bench_physics_") as tmp:
-        package = cpp_build.render_test_package(Path(tmp), only=robots, extra_robots=False)
-        for label in robots:
-            rb = package.build(label)
-            reason = vendor_msgs.skip_reason(rb.model.transport)
-            if reason:
-                print(f"{label}: skipped: {reason}")
-                continue
+    with reference_builds(chosen(args.robot), "rhi_bench_physics_") as (builder, builds):
+        for rb in builds:
+            label = rb.label
             linked, _ = cpp_build.build_harness(builder, rb, flavour, distro, physics=True)
             if not linked.ok:
                 sys.exit(f"bench_physics: {label} did not build:\n{linked.stderr[-4000:]}")

@@ -258,30 +258,30 @@ def _command_modes(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tupl
 
 def _initial_positions(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[str, float], ...]:
     """initial_positions: {joint: rad (m for a prismatic joint)}, finite; URDF limits are checked in assemble."""
-    path = "initial_positions"
-    entries = _joint_entries(v, raw, path, mapped, "{knee_joint: 0.3}")
+    return _joint_numbers(v, raw, mapped, "initial_positions", "{knee_joint: 0.3}",
+                          "write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")
+
+
+def _joint_numbers(v: Validator, raw: Any, mapped: dict[str, int], path: str, example: str, fix: str,
+                   most: float | None = None) -> tuple[tuple[str, float], ...]:
+    """{joint: finite number} (from 0 to ``most`` when given), each error naming its joint's line."""
+    entries = _joint_entries(v, raw, path, mapped, example)
+    what = f"a number from 0 to {most:g}" if most is not None else "a finite number"
     out = []
     for name, item in entries.items():
         q = f"{path}.{name}"
-        out.append((name, v.finite_number(
-            item, q, "write the joint's start position in rad (m for a prismatic joint), e.g. 0.0")))
+        value = v.finite_number(item, q, fix, what)
+        if most is not None and not 0.0 <= value <= most:
+            raise v.error(q, f"must be {what}, got {item.raw!r}", fix=fix)
+        out.append((name, value))
     return tuple(out)
 
 
 def _armatures(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[str, float], ...]:
     """armatures: {joint: kg m^2 (kg for a prismatic joint)}, finite, from 0 to MAX_ARMATURE."""
-    path = "armatures"
-    entries = _joint_entries(v, raw, path, mapped, "{knee_joint: 0.02}")
-    out = []
-    for name, item in entries.items():
-        q = f"{path}.{name}"
-        what = f"a number from 0 to {MAX_ARMATURE:g}"
-        fix = "write the rotor inertia reflected to the joint in kg*m^2 (kg for a prismatic joint), e.g. 0.01"
-        value = v.finite_number(item, q, fix, what)
-        if not 0.0 <= value <= MAX_ARMATURE:
-            raise v.error(q, f"must be {what}, got {item.raw!r}", fix=fix)
-        out.append((name, value))
-    return tuple(out)
+    return _joint_numbers(v, raw, mapped, "armatures", "{knee_joint: 0.02}",
+                          "write the rotor inertia reflected to the joint in kg*m^2 (kg for a prismatic joint), "
+                          "e.g. 0.01", MAX_ARMATURE)
 
 
 def _joint_map(v: Validator, raw: Any, motor_count: int) -> tuple[tuple[str, int], ...]:

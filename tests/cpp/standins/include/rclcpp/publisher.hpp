@@ -92,6 +92,9 @@ public:
     slot_->last = msg;
     slot_->count++;
     slot_->has_value = true;
+    if (slot_->observer) {
+      slot_->observer(static_cast<const void *>(&slot_->last));
+    }
   }
 
   void publish(std::unique_ptr<MessageT, std::default_delete<MessageT>> msg)

@@ -130,6 +130,26 @@ std::optional<MessageT> last_published(std::string_view topic)
   return out;
 }
 
+/// Call `observer` with every message published on `topic` from now on (as `const void*`, on the
+/// publishing thread, under the topic's lock: it must not publish on the topic); an empty function
+/// stops observing. False when no publisher has created the topic yet. The call allocates nothing.
+inline bool observe_publishes(std::string_view topic, std::function<void(const void *)> observer)
+{
+  char buffer[512];
+  const std::string_view key = ::rhi_fake::detail::hook_topic_key(topic, buffer);
+  std::shared_ptr<::rhi_fake::detail::TopicSlotBase> slot;
+  {
+    auto & reg = ::rhi_fake::detail::ros_registry();
+    std::lock_guard<std::mutex> lock(reg.mutex);
+    auto it = reg.topics.find(key);
+    if (it == reg.topics.end() || !it->second.slot) {return false;}
+    slot = it->second.slot;
+  }
+  std::lock_guard<std::mutex> lock(slot->mutex);
+  slot->observer = std::move(observer);
+  return true;
+}
+
 /// Number of publish() calls on `topic` (all publishers together) since the topic appeared.
 inline std::uint64_t publish_count(std::string_view topic)
 {

@@ -80,6 +80,8 @@ struct TopicSlotBase
   std::mutex mutex;
   std::uint64_t count = 0;   // under mutex
   bool has_value = false;    // under mutex
+  // Called with the message after each publish, under mutex (rhi_fake::ros::observe_publishes).
+  std::function<void(const void *)> observer;
 };
 
 template<typename MessageT>

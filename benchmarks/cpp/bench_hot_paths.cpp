@@ -30,6 +30,9 @@
 //        bench_hot_paths count <path> <iterations>  runs only <path>; under
 //               valgrind --tool=callgrind --instr-atstart=no the measured loop alone is
 //               instrumented (client requests), so Ir / iterations = instructions per call.
+//        bench_hot_paths latency <seconds> <robot_hz> <update_hz> <busy_threads>  the closed loop
+//               (issue 37, benchmarks/bench_latency.py): from a state on the wire to the command
+//               that answers it on the wire, with the driver's own threads; see closed_loop().
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -360,6 +363,219 @@ void clock_overhead(uint32_t iterations) {
               ns[ns.size() * 99 / 100], ns[ns.size() * 999 / 1000], ns.back());
 }
 
+// ------------------------------------------------------------------ closed-loop latency (issue 37)
+// A robot thread sends a state every 1 / robot_hz s, each joint's position carrying the state's sequence
+// (coded_state: kCodes positions inside the joint's range), and notes when it put it on the wire; the
+// stand-in hands it to the driver's state callback on that thread, as a DDS listener thread would. The
+// controller manager's loop, played as ros2_control runs it (one thread, every 1 / update_hz s: read(), a
+// controller holding each joint's measured position, write()), echoes the sequence into the position
+// commands; the command leaves on the driver's own writer (its SDK thread or executor timer, every
+// command_writer_period_us). An observer of the command topic decodes the first joint's position target and
+// notes, per state, the first command that carries its sequence: latency = command on the wire - state on
+// the wire. The floor, same binary: a state answered directly from its callback (read(), the controller,
+// write() and the writer's send on the robot thread, nothing waiting), the least the driver's code takes.
+// busy_threads spin beside it all (the machine loaded).
+#if defined(RHI_TRANSPORT_UNITREE_DDS)
+bool observe_commands(std::function<void(const void*)> fn) {
+  return rhi_fake::unitree::observe_writes(kCommandTopic, std::move(fn));
+}
+double commanded_position(const void* msg, const Joint& j) {
+  return static_cast<const Transport::LowCmd*>(msg)->motor_cmd()[j.slot].q();
+}
+#elif defined(RHI_TRANSPORT_AGIBOT_TOPICS)
+bool observe_commands(std::function<void(const void*)> fn) {
+  return rhi_fake::ros::observe_publishes(kGroups[kJoints[0].group].command_topic, std::move(fn));
+}
+double commanded_position(const void* msg, const Joint& j) {
+  const auto& m = *static_cast<const Transport::CommandMsg*>(msg);
+  const size_t p = j.slot - kGroups[j.group].offset;
+  return p < m.joints.size() ? m.joints[p].position : -1e9;
+}
+#elif defined(RHI_TRANSPORT_ENGINEAI_TOPICS)
+bool observe_commands(std::function<void(const void*)> fn) {
+  return rhi_fake::ros::observe_publishes(kCommandTopic, std::move(fn));
+}
+double commanded_position(const void* msg, const Joint& j) {
+  const auto& m = *static_cast<const Transport::CommandMsg*>(msg);
+  return j.slot < m.position.size() ? m.position[j.slot] : -1e9;
+}
+#else
+bool observe_commands(std::function<void(const void*)>) { return false; }
+double commanded_position(const void*, const Joint&) { return -1e9; }
+#endif
+
+struct LatencyProbe {
+  static constexpr size_t kRing = 4096;  // states remembered (8 s at 500 Hz): far more than a command lags
+  std::array<std::atomic<int64_t>, kRing> sent_ns{};
+  std::atomic<uint32_t> last_sent{0};
+  uint32_t answered = 0;          // the newest sequence answered (observer thread only)
+  uint64_t commands = 0;          // commands observed while recording (observer thread only)
+  uint64_t undecoded = 0;         // of those, carrying no sequence of a state sent
+  std::vector<int64_t> samples;   // [ns], reserved up front (observer thread only)
+  std::atomic<bool> recording{false};
+
+  static int64_t now_ns() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+  }
+  void sent(uint32_t seq) {
+    sent_ns[seq % kRing].store(now_ns(), std::memory_order_relaxed);
+    last_sent.store(seq, std::memory_order_release);
+  }
+  // A command on the wire: the newest state sent whose code it carries, if no earlier command answered it.
+  void command(const void* msg) {
+    const int64_t t = now_ns();
+    const int code = decode_position(kJoints[0], commanded_position(msg, kJoints[0]));
+    const uint32_t last = last_sent.load(std::memory_order_acquire);
+    const bool counting = recording.load(std::memory_order_relaxed);
+    commands += counting ? 1U : 0U;
+    const uint32_t back = (last % kCodes + kCodes - static_cast<uint32_t>(code)) % kCodes;
+    if (code < 0 || code >= kCodes || last == 0 || back >= last) {
+      undecoded += counting ? 1U : 0U;
+      return;
+    }
+    const uint32_t seq = last - back;
+    if (seq <= answered) return;  // the writer sending the same command again, or an older state's
+    answered = seq;
+    if (counting && samples.size() < samples.capacity()) {
+      samples.push_back(t - sent_ns[seq % kRing].load(std::memory_order_relaxed));
+    }
+  }
+};
+
+void report_latency(const char* mode, LatencyProbe& probe, uint64_t states) {
+  std::vector<int64_t>& ns = probe.samples;
+  std::printf("latency %s samples %zu states %" PRIu64 " commands %" PRIu64 " undecoded %" PRIu64, mode, ns.size(),
+              states, probe.commands, probe.undecoded);
+  if (!ns.empty()) {
+    std::sort(ns.begin(), ns.end());
+    auto at = [&](double q) { return ns[std::min<size_t>(ns.size() - 1, static_cast<size_t>(q * ns.size()))]; };
+    std::printf(" median_us %.1f p99_us %.1f p99.9_us %.1f max_us %.1f", at(0.5) / 1e3, at(0.99) / 1e3,
+                at(0.999) / 1e3, ns.back() / 1e3);
+  }
+  std::printf("\n");
+}
+
+// The driver set up as ros2_control runs it with a forward position controller: a position claim, the
+// transport's real threads (SDK threads / wall timers) when `threaded`.
+void start_closed_loop(Rig& rig, bool threaded) {
+  rhi_fake::reset_all();
+  rclcpp::init(0, nullptr);
+  rig.t.use_real_threads(threaded);
+  hardware_interface::HardwareInfo info = make_hardware_info();
+  info.hardware_parameters["enable_monitor"] = "true";
+  rig.hw = rhi_fake::plugins::create<SystemInterface>(kPluginType);
+  if (rig.fw.init(*rig.hw, info) != CallbackReturn::SUCCESS) fail("on_init failed");
+  rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
+  rig.ifs.index();
+  if (!rig.ifs.complete()) fail("incomplete interfaces");
+  if (rig.hw->on_configure(kUnconfigured) != CallbackReturn::SUCCESS) fail("on_configure failed");
+  claim(rig, Claim::kTargets);
+  if (rig.hw->on_activate(kInactive) != CallbackReturn::SUCCESS) fail("on_activate failed");
+#if defined(RHI_TRANSPORT_ROS)
+  if (!rhi_fake::ros::wait_spinning_executors(1, std::chrono::seconds(30))) fail("no executor");
+#endif
+}
+
+// The controller: every claimed position target at the joint's measured position.
+void hold_measured(Rig& rig) {
+  for (size_t k = 0; k < kJointCount; ++k) {
+    if (rig.ifs.cpos[k] != nullptr && rig.ifs.pos[k] != nullptr) rig.ifs.cpos[k]->set(rig.ifs.pos[k]->get());
+  }
+}
+
+void stop_closed_loop(Rig& rig, LatencyProbe& probe, const char* mode, uint64_t states) {
+  observe_commands({});
+  stop(rig);
+  rig.t.use_real_threads(false);
+  report_latency(mode, probe, states);
+}
+
+void closed_loop(double seconds, double robot_hz, double update_hz, int busy_threads) {
+  std::atomic<bool> quit{false};
+  std::vector<std::thread> busy;
+  for (int i = 0; i < busy_threads; ++i) {
+    busy.emplace_back([&quit] {
+      volatile double x = 1.0;
+      while (!quit.load(std::memory_order_relaxed)) x = x * 1.0000001 + 1e-9;
+    });
+  }
+  // The robot's clock runs 0.1 % fast against the controller's: two free-running clocks, whose phase offset
+  // sweeps through a whole period every 1000 periods (2 s at 500 Hz), so the run sees every offset.
+  const auto robot_period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / (robot_hz * 1.001)));
+  const auto update_period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / update_hz));
+  const auto samples_wanted = static_cast<size_t>((seconds + 1.0) * robot_hz * 1.01) + 16;  // every state sent
+  {  // the timer mode: the controller manager's loop and the driver's writer, each on its own clock
+    Rig rig;
+    start_closed_loop(rig, true);
+    LatencyProbe probe;
+    probe.samples.reserve(samples_wanted);
+    if (!observe_commands([&probe](const void* msg) { probe.command(msg); })) fail("no command topic to observe");
+    std::atomic<bool> stop{false};
+    std::atomic<uint64_t> states{0};
+    std::thread robot([&] {
+      Transport t;
+      auto next = std::chrono::steady_clock::now();
+      for (uint32_t seq = 1; !stop.load(std::memory_order_relaxed); ++seq) {
+        const StateFrame f = coded_state(seq);
+        t.prepare_state(f);  // the frame (and its CRC) made before it goes on the wire
+        probe.sent(seq);
+        t.deliver_prepared();
+        t.deliver_imu(f);
+        states.fetch_add(1, std::memory_order_relaxed);
+        next += robot_period;
+        std::this_thread::sleep_until(next);
+      }
+    });
+    const auto begin = std::chrono::steady_clock::now();
+    auto next = begin;
+    while (next - begin < std::chrono::duration<double>(seconds + 0.3)) {
+      if (!probe.recording.load() && next - begin > std::chrono::milliseconds(300)) {
+        probe.recording.store(true);  // after the safe start's first state and the writer's first cycles
+        states.store(0);
+      }
+      rig.hw->read(kTime, kPeriod);
+      hold_measured(rig);
+      rig.hw->write(kTime, kPeriod);
+      next += update_period;
+      std::this_thread::sleep_until(next);
+    }
+    probe.recording.store(false);
+    stop.store(true);
+    robot.join();
+    stop_closed_loop(rig, probe, "timer", states.load());
+  }
+  {  // the floor: each state answered from its callback on the robot's thread, nothing waiting
+    Rig rig;
+    start_closed_loop(rig, false);
+    LatencyProbe probe;
+    probe.samples.reserve(samples_wanted);
+    if (!observe_commands([&probe](const void* msg) { probe.command(msg); })) fail("no command topic to observe");
+    Transport t;
+    uint64_t states = 0;
+    auto next = std::chrono::steady_clock::now();
+    const auto end = next + std::chrono::duration<double>(seconds + 0.3);
+    for (uint32_t seq = 1; next < end; ++seq) {
+      probe.recording.store(seq > 50);
+      const StateFrame f = coded_state(seq);
+      t.prepare_state(f);  // the frame (and its CRC) made before it goes on the wire
+      probe.sent(seq);
+      t.deliver_prepared();
+      t.deliver_imu(f);
+      rig.hw->read(kTime, kPeriod);
+      hold_measured(rig);
+      rig.hw->write(kTime, kPeriod);
+      rig.t.tick_writer();
+      states += seq > 50 ? 1U : 0U;
+      next += robot_period;
+      std::this_thread::sleep_until(next);
+    }
+    stop_closed_loop(rig, probe, "floor", states);
+  }
+  quit.store(true);
+  for (std::thread& b : busy) b.join();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -385,6 +601,11 @@ int main(int argc, char** argv) {
       time_path(p, &rig, floors, iterations);
       stop(rig);
     }
+    return 0;
+  }
+  if (mode == "latency" && argc >= 6) {
+    closed_loop(std::strtod(argv[2], nullptr), std::strtod(argv[3], nullptr), std::strtod(argv[4], nullptr),
+                std::atoi(argv[5]));
     return 0;
   }
   if (mode == "count" && argc >= 4) {

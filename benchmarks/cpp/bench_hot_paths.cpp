@@ -162,6 +162,21 @@ __attribute__((noinline)) void handle_locks(Rig& rig) {
 #endif
 }
 
+// Created through pluginlib's registry, initialised with `info`, configured, claimed, activated.
+void bring_up(Rig& rig, const hardware_interface::HardwareInfo& info, Claim claim_kind) {
+  rig.hw = rhi_fake::plugins::create<SystemInterface>(kPluginType);
+  if (rig.fw.init(*rig.hw, info) != CallbackReturn::SUCCESS) fail("on_init failed");
+  rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
+  rig.ifs.index();
+  if (!rig.ifs.complete()) fail("incomplete interfaces");
+  if (rig.hw->on_configure(kUnconfigured) != CallbackReturn::SUCCESS) fail("on_configure failed");
+  claim(rig, claim_kind);
+  if (rig.hw->on_activate(kInactive) != CallbackReturn::SUCCESS) fail("on_activate failed");
+#if defined(RHI_TRANSPORT_ROS)
+  if (!rhi_fake::ros::wait_spinning_executors(1, std::chrono::seconds(30))) fail("no executor");
+#endif
+}
+
 // Initialised, exported, activated (monitoring on, as the issue measures), first state delivered,
 // a controller command in the command interfaces and the writer warmed up.
 // `calibrated`: a calibration_file gives every joint a small offset, so read() and write() convert
@@ -182,17 +197,7 @@ void start(Rig& rig, uint32_t decimation, Claim claim_kind, bool calibrated) {
   info.hardware_parameters["state_decimation"] = std::to_string(decimation);
   info.hardware_parameters["state_timeout_ms"] = "100000";  // valgrind is slow: never stale
   info.hardware_parameters["fault_timeout_ms"] = "200000";  // nor faulted
-  rig.hw = rhi_fake::plugins::create<SystemInterface>(kPluginType);
-  if (rig.fw.init(*rig.hw, info) != CallbackReturn::SUCCESS) fail("on_init failed");
-  rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
-  rig.ifs.index();
-  if (!rig.ifs.complete()) fail("incomplete interfaces");
-  if (rig.hw->on_configure(kUnconfigured) != CallbackReturn::SUCCESS) fail("on_configure failed");
-  claim(rig, claim_kind);
-  if (rig.hw->on_activate(kInactive) != CallbackReturn::SUCCESS) fail("on_activate failed");
-#if defined(RHI_TRANSPORT_ROS)
-  if (!rhi_fake::ros::wait_spinning_executors(1, std::chrono::seconds(30))) fail("no executor");
-#endif
+  bring_up(rig, info, claim_kind);
   const ControllerCommand cmd = distinct_command(1);
   for (uint32_t k = 0; k < 50; ++k) {  // warm-up: the fakes size their retained messages
     rig.t.deliver_state(coded_state(k + 1));
@@ -464,17 +469,7 @@ void start_closed_loop(Rig& rig, bool threaded) {
   rig.t.use_real_threads(threaded);
   hardware_interface::HardwareInfo info = make_hardware_info();
   info.hardware_parameters["enable_monitor"] = "true";
-  rig.hw = rhi_fake::plugins::create<SystemInterface>(kPluginType);
-  if (rig.fw.init(*rig.hw, info) != CallbackReturn::SUCCESS) fail("on_init failed");
-  rig.ifs.exported = rhi_fake::hw::export_interfaces(*rig.hw);
-  rig.ifs.index();
-  if (!rig.ifs.complete()) fail("incomplete interfaces");
-  if (rig.hw->on_configure(kUnconfigured) != CallbackReturn::SUCCESS) fail("on_configure failed");
-  claim(rig, Claim::kTargets);
-  if (rig.hw->on_activate(kInactive) != CallbackReturn::SUCCESS) fail("on_activate failed");
-#if defined(RHI_TRANSPORT_ROS)
-  if (!rhi_fake::ros::wait_spinning_executors(1, std::chrono::seconds(30))) fail("no executor");
-#endif
+  bring_up(rig, info, Claim::kTargets);
 }
 
 // The controller: every claimed position target at the joint's measured position.

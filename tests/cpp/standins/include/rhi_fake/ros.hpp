@@ -130,21 +130,26 @@ std::optional<MessageT> last_published(std::string_view topic)
   return out;
 }
 
+namespace detail_ {
+/// The slot of `topic`'s published messages, null before a publisher created the topic.
+inline std::shared_ptr<::rhi_fake::detail::TopicSlotBase> published_slot(std::string_view topic)
+{
+  char buffer[512];
+  const std::string_view key = ::rhi_fake::detail::hook_topic_key(topic, buffer);
+  auto & reg = ::rhi_fake::detail::ros_registry();
+  std::lock_guard<std::mutex> lock(reg.mutex);
+  auto it = reg.topics.find(key);
+  return it == reg.topics.end() ? nullptr : it->second.slot;
+}
+}  // namespace detail_
+
 /// Call `observer` with every message published on `topic` from now on (as `const void*`, on the
 /// publishing thread, under the topic's lock: it must not publish on the topic); an empty function
 /// stops observing. False when no publisher has created the topic yet. The call allocates nothing.
 inline bool observe_publishes(std::string_view topic, std::function<void(const void *)> observer)
 {
-  char buffer[512];
-  const std::string_view key = ::rhi_fake::detail::hook_topic_key(topic, buffer);
-  std::shared_ptr<::rhi_fake::detail::TopicSlotBase> slot;
-  {
-    auto & reg = ::rhi_fake::detail::ros_registry();
-    std::lock_guard<std::mutex> lock(reg.mutex);
-    auto it = reg.topics.find(key);
-    if (it == reg.topics.end() || !it->second.slot) {return false;}
-    slot = it->second.slot;
-  }
+  const auto slot = detail_::published_slot(topic);
+  if (!slot) {return false;}
   std::lock_guard<std::mutex> lock(slot->mutex);
   slot->observer = std::move(observer);
   return true;
@@ -153,16 +158,8 @@ inline bool observe_publishes(std::string_view topic, std::function<void(const v
 /// Number of publish() calls on `topic` (all publishers together) since the topic appeared.
 inline std::uint64_t publish_count(std::string_view topic)
 {
-  char buffer[512];
-  const std::string_view key = ::rhi_fake::detail::hook_topic_key(topic, buffer);
-  std::shared_ptr<::rhi_fake::detail::TopicSlotBase> slot;
-  {
-    auto & reg = ::rhi_fake::detail::ros_registry();
-    std::lock_guard<std::mutex> lock(reg.mutex);
-    auto it = reg.topics.find(key);
-    if (it == reg.topics.end() || !it->second.slot) {return 0;}
-    slot = it->second.slot;
-  }
+  const auto slot = detail_::published_slot(topic);
+  if (!slot) {return 0;}
   std::lock_guard<std::mutex> lock(slot->mutex);
   return slot->count;
 }

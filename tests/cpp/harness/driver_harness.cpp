@@ -2794,13 +2794,7 @@ void test_unfilled_refuses_activation() {
 #include "take_control_checks.inc"
 #endif
 
-static bool selected(const std::string& only, const char* name) {
-  if (only.empty()) {
-    return true;
-  }
-  const std::string list = "," + only + ",";
-  return list.find(std::string(",") + name + ",") != std::string::npos;
-}
+static bool selected(const std::string& only, const char* name) { return only.empty() || in_list(only, name); }
 
 int main(int argc, char** argv) {
   int threads_ms = 300;

@@ -72,6 +72,11 @@ enum JointMode : int {
 // The joint's position target comes from ros2_control, clamped into its URDF limits; held, it is the
 // measured position.
 inline bool commands_position(const Joint& j) { return j.mode == kModePosition || j.mode == kModePositionTarget; }
+
+// Whether `name` is an entry of the comma-separated `list` (a harness option: --only, --physics, ...).
+inline bool in_list(const std::string& list, const std::string& name) {
+  return ("," + list + ",").find("," + name + ",") != std::string::npos;
+}
 // Velocity, damping and effort travel (a position-target joint sends 0 for each, a state-only one nothing).
 inline bool takes_pd_command(const Joint& j) { return j.mode == kModePosition || j.mode == kModeVelocity; }
 // The command interface a position- or velocity-only controller claims: its target.

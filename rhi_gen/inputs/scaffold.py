@@ -111,6 +111,7 @@ def suggest_yaml(*, vendor: str, robot: str, urdf: UrdfRobot, urdf_relative: str
         "  network_interface: lo",
         "  enable_monitor: true",
         "  command_writer_period_us: 2000",
+        "  command_writer_mode: timer",
         "  state_decimation: 1",
         "  state_timeout_ms: 100",
         "  fault_timeout_ms: 1000",

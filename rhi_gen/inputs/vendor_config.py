@@ -25,11 +25,12 @@ TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type",
             "unmapped_joints", "default_gains", "command_modes", "initial_positions", "armatures", "transmissions",
             "coupled_joints", "urdf_transmissions", "authority", "hands")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
-PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us",
+PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us", "command_writer_mode",
                   "state_decimation", "state_timeout_ms", "fault_timeout_ms", "first_state_timeout_ms",
                   "diagnostics_period_ms",
                   "motor_temperature_warn_c", "motor_temperature_error_c", "motor_error_fault_mask", "is_async",
                   "rw_rate")
+COMMAND_WRITER_MODES = ("timer", "on_write")  # cpp/common/robot_spec.hpp CommandWriterMode
 MAX_ERROR_FAULT_MASK = 0xFFFF_FFFF  # motor error codes are at most 32 bits (hg motorstate)
 MAX_RW_RATE = 100_000  # Hz; ros2_control caps rw_rate at the controller manager's update rate anyway
 IMU_KEYS = ("enabled", "name", "frame_id")
@@ -139,6 +140,8 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
                                          d.network_interface),
             enable_monitor=v.optional(m, p, "enable_monitor", v.boolean, d.enable_monitor),
             command_writer_period_us=whole("command_writer_period_us", 100, 10_000_000),
+            command_writer_mode=v.optional(m, p, "command_writer_mode",
+                                           lambda x, q: v.choice(x, q, COMMAND_WRITER_MODES), d.command_writer_mode),
             state_decimation=whole("state_decimation", 1, 10_000),
             state_timeout_ms=whole("state_timeout_ms", 1, 600_000),
             fault_timeout_ms=whole("fault_timeout_ms", 2, 3_600_000),

@@ -41,6 +41,7 @@ class Parameters:
     network_interface: str = "lo"
     enable_monitor: bool = False          # console timing warnings; overruns are on /diagnostics anyway
     command_writer_period_us: int = 2000
+    command_writer_mode: str = "timer"    # or "on_write": the command leaves when write() has built it
     state_decimation: int = 1
     state_timeout_ms: int = 100
     fault_timeout_ms: int = 1000

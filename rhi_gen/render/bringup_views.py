@@ -34,6 +34,8 @@ ARGUMENT_HELP = {
     "enable_monitor": "true: the driver warns on the console about read/write latency and send jitter above "
                       "its thresholds, for timing bring-up (driver parameter enable_monitor)",
     "command_writer_period_us": "period of the command writer in microseconds",
+    "command_writer_mode": "timer: the command writer sends every command_writer_period_us; on_write: it sends each "
+                           "command as soon as write() has built it (at most one per period on average)",
     "state_decimation": "process every n-th state message",
     "state_timeout_ms": "milliseconds without state before the driver holds the joints",
     "fault_timeout_ms": "milliseconds without state before read() returns ERROR (the link is dead)",
@@ -55,6 +57,7 @@ def argument_defaults(robot: RobotModel) -> tuple[tuple[str, str], ...]:
     p = robot.parameters
     values = {"network_interface": p.network_interface, "enable_monitor": "true" if p.enable_monitor else "false",
               "command_writer_period_us": str(p.command_writer_period_us),
+              "command_writer_mode": p.command_writer_mode,
               "state_decimation": str(p.state_decimation), "state_timeout_ms": str(p.state_timeout_ms),
               "fault_timeout_ms": str(p.fault_timeout_ms), "first_state_timeout_ms": str(p.first_state_timeout_ms),
               "calibration_file": "", "is_async": "true" if p.is_async else "false", "rw_rate": str(p.rw_rate)}

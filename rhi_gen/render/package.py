@@ -33,8 +33,8 @@ COMMON_FILES = tuple(
     for name in ("data_buffer.hpp", "types.hpp", "motor_types.hpp", "monitor.hpp", "robot_spec.hpp",
                  "hardware_parameters.hpp", "ros2_control_compat.hpp", "slot_kernels.hpp", "slot_table.hpp",
                  "safe_start.hpp", "driver_health.hpp", "driver_diagnostics.hpp", "state_freshness.hpp",
-                 "driver_monitor.hpp", "command_claims.hpp", "command_guard.hpp", "joint_transmissions.hpp",
-                 "calibration_file.hpp", "driver_core.hpp", "system_driver.hpp"))
+                 "driver_monitor.hpp", "command_claims.hpp", "command_guard.hpp", "command_writer.hpp",
+                 "joint_transmissions.hpp", "calibration_file.hpp", "driver_core.hpp", "system_driver.hpp"))
 TEST_FILES = (("cpp/test/hardware_interface_test.hpp", "test/hardware_interface_test.hpp"),)
 # The fake robot's robot-independent part, in a package where a robot has one.
 FAKE_ROBOT_FILES = (

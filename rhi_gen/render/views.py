@@ -27,8 +27,8 @@ from .fake_robot_views import has_fake_robot
 # The ros2_control macro's parameters a launch file passes to xacro (templates/robot/ros2_control.xacro.j2):
 # the mock switch, then the driver's parameters, the same for every transport.
 DESCRIPTION_ARGUMENTS = ("use_mock_hardware", "network_interface", "enable_monitor", "command_writer_period_us",
-                         "state_decimation", "state_timeout_ms", "fault_timeout_ms", "first_state_timeout_ms",
-                         "calibration_file", "is_async", "rw_rate")
+                         "command_writer_mode", "state_decimation", "state_timeout_ms", "fault_timeout_ms",
+                         "first_state_timeout_ms", "calibration_file", "is_async", "rw_rate")
 
 
 # The driver's health GPIO, <gpio name="<hardware name>_health"> (cpp/common/driver_health.hpp holds
@@ -293,7 +293,8 @@ def xacro_view(robot: RobotModel) -> XacroView:
     p = robot.parameters
     defaults = (("name", f"{robot.robot}_hardware"), ("network_interface", p.network_interface),
                 ("enable_monitor", "true" if p.enable_monitor else "false"),
-                ("command_writer_period_us", p.command_writer_period_us), ("state_decimation", p.state_decimation),
+                ("command_writer_period_us", p.command_writer_period_us),
+                ("command_writer_mode", p.command_writer_mode), ("state_decimation", p.state_decimation),
                 ("state_timeout_ms", p.state_timeout_ms), ("fault_timeout_ms", p.fault_timeout_ms),
                 ("first_state_timeout_ms", p.first_state_timeout_ms), ("calibration_file", ""),
                 ("is_async", "true" if p.is_async else "false"), ("rw_rate", p.rw_rate))

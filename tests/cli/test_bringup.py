@@ -29,8 +29,8 @@ from tests.support.repo import URDF_FIXTURES, copy_project
 LABELS = project_robot_labels()
 XACRO = Path(sys.executable).parent / "xacro"
 DESCRIPTION_ARGUMENTS = ["use_mock_hardware", "network_interface", "enable_monitor", "command_writer_period_us",
-                         "state_decimation", "state_timeout_ms", "fault_timeout_ms", "first_state_timeout_ms",
-                         "calibration_file", "is_async", "rw_rate"]
+                         "command_writer_mode", "state_decimation", "state_timeout_ms", "fault_timeout_ms",
+                         "first_state_timeout_ms", "calibration_file", "is_async", "rw_rate"]
 LAUNCH_ARGUMENTS = [*DESCRIPTION_ARGUMENTS, "description_file", "controllers_file", "active_controllers",
                     "inactive_controllers"]
 
@@ -99,10 +99,12 @@ def test_description_arguments_reach_the_driver(package):
     package_dir, _ = package
     path = package_dir / "description" / "g1.urdf.xacro"
     d, _ = parse_ros2_control(xacro(path, "network_interface:=enp3s0", "enable_monitor:=false",
-                                    "command_writer_period_us:=5000", "state_decimation:=4", "state_timeout_ms:=250",
+                                    "command_writer_period_us:=5000", "command_writer_mode:=on_write",
+                                    "state_decimation:=4", "state_timeout_ms:=250",
                                     "fault_timeout_ms:=3000", "first_state_timeout_ms:=20000"))
     assert d.parameters == {"network_interface": "enp3s0", "enable_monitor": "false",
-                            "command_writer_period_us": "5000", "state_decimation": "4", "state_timeout_ms": "250",
+                            "command_writer_period_us": "5000", "command_writer_mode": "on_write",
+                            "state_decimation": "4", "state_timeout_ms": "250",
                             "fault_timeout_ms": "3000", "first_state_timeout_ms": "20000"}
 
 
@@ -248,7 +250,8 @@ def test_launch_file_starts_the_robot(package, label, mock) -> None:
         **({"use_fake_robot": "false", "physics": "vacuum", "physics_base": "band"} if fake else {}),
         "network_interface": p.network_interface,
         "enable_monitor": "true" if p.enable_monitor else "false",
-        "command_writer_period_us": str(p.command_writer_period_us), "state_decimation": str(p.state_decimation),
+        "command_writer_period_us": str(p.command_writer_period_us),
+        "command_writer_mode": p.command_writer_mode, "state_decimation": str(p.state_decimation),
         "state_timeout_ms": str(p.state_timeout_ms), "fault_timeout_ms": str(p.fault_timeout_ms),
         "first_state_timeout_ms": str(p.first_state_timeout_ms), "calibration_file": "",
         "is_async": "true" if p.is_async else "false", "rw_rate": str(p.rw_rate),

@@ -386,6 +386,30 @@ def test_unknown_yaml_key_suggests_the_closest(project, addition, line, key, hin
     generate_rejected(project, file=YAML_REL, line=line, key=key, words=("unknown key", hint))
 
 
+@pytest.mark.parametrize("value, words", [
+    ("onwrite", ("'onwrite' is not supported", "did you mean 'on_write'?")),
+    ("true", ("is not supported", "use one of: timer, on_write")),
+    ("[timer]", ("must be a single value",)),
+])
+def test_command_writer_mode_is_timer_or_on_write(project, value, words):
+    path = project / YAML_REL
+    path.write_text(path.read_text() + f"parameters:\n  command_writer_mode: {value}\n")
+    generate_rejected(project, file=YAML_REL, line=12, key="parameters.command_writer_mode", words=words)
+
+
+def test_command_writer_mode_reaches_the_driver_and_the_description(project):
+    """The YAML's mode becomes the driver's compiled-in default and the description's argument default."""
+    path = project / YAML_REL
+    path.write_text(path.read_text() + "parameters:\n  command_writer_mode: on_write\n")
+    assert run_cli("generate", "--project", project).code == 0
+    package = project / "generated" / PACKAGE
+    source = (package / "src" / "acme" / "arm.cpp").read_text()
+    assert source.count("CommandWriterMode::kOnWrite") == 1 and "kTimer" not in source
+    xacro = (package / "description" / "arm.ros2_control.xacro").read_text()
+    assert "command_writer_mode:='on_write'" in xacro
+    assert '<param name="command_writer_mode">${command_writer_mode}</param>' in xacro
+
+
 # ---------------------------------------------------------------- YAML that is not a mapping, empty files
 @pytest.mark.parametrize("text, line, words", [
     ("- vendor: acme\n- robot: arm\n", 1, "top level is a list"),

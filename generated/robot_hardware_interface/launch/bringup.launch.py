@@ -29,6 +29,7 @@ DESCRIPTION_ARGUMENTS = [
     'network_interface',
     'enable_monitor',
     'command_writer_period_us',
+    'command_writer_mode',
     'state_decimation',
     'state_timeout_ms',
     'fault_timeout_ms',

@@ -36,6 +36,8 @@ ARGUMENTS = [
      'true: the driver warns on the console about read/write latency and send jitter above its thresholds, for timing bring-up (driver parameter enable_monitor)'),
     ('command_writer_period_us', '2000',
      'period of the command writer in microseconds'),
+    ('command_writer_mode', 'timer',
+     'timer: the command writer sends every command_writer_period_us; on_write: it sends each command as soon as write() has built it (at most one per period on average)'),
     ('state_decimation', '1',
      'process every n-th state message'),
     ('state_timeout_ms', '100',

@@ -18,6 +18,7 @@
 #include "robot_hardware_interface/common/calibration_file.hpp"
 #include "robot_hardware_interface/common/command_claims.hpp"
 #include "robot_hardware_interface/common/command_guard.hpp"
+#include "robot_hardware_interface/common/command_writer.hpp"
 #include "robot_hardware_interface/common/data_buffer.hpp"
 #include "robot_hardware_interface/common/driver_health.hpp"
 #include "robot_hardware_interface/common/driver_monitor.hpp"
@@ -45,7 +46,8 @@ namespace robot_hardware_interface
 //   - controller: read() / write() through read_state() and write_command();
 //   - state: the transport's callbacks fill state_frame() / imu_frame() and publish them; the
 //     state callbacks never overlap each other, nor do the IMU ones (they share those frames);
-//   - commands: the transport's writer takes next_command() every command_writer_period_us.
+//   - commands: the transport's writer takes next_command() every command_writer_period_us, or
+//     (command_writer_mode on_write) the OnWriteCommandWriter's thread, woken by write().
 // They hand frames over only through DataBuffers, never by sharing mutable data.
 template<size_t N, typename T>
 class DriverCore
@@ -293,6 +295,14 @@ public:
     return guard_.guard(*cmd, freshness_.stale(parameters_.state_timeout_ms));
   }
 
+  // The writer thread of the on_write mode, nullptr in the timer mode (the transport's own timer
+  // sends). Transports start it in start() and stop it in stop().
+  OnWriteCommandWriter * on_write_writer()
+  {
+    return parameters_.command_writer_mode == CommandWriterMode::kOnWrite ? &on_write_writer_ :
+           nullptr;
+  }
+
   // Writer thread, after next_command(): whether that frame holds every joint damping-only (stale
   // state, on_error or the e-stop) rather than carrying what the controllers command.
   bool command_is_hold() const {return guard_.holding();}
@@ -370,6 +380,14 @@ public:
     return rewritten;
   }
 
+  // write(), once the command is published: in the on_write mode the writer sends it now.
+  void command_written()
+  {
+    if (parameters_.command_writer_mode == CommandWriterMode::kOnWrite) {
+      on_write_writer_.notify();
+    }
+  }
+
 private:
   // read() and write() of a robot whose motors are not its joints (kept out of line, so that the
   // plain loops of every other robot stay as they were).
@@ -394,6 +412,7 @@ private:
   SafeStart safe_start_;
   StateFreshness freshness_;
   JointTransmissions<N> transmissions_;  // read() / write(); calibrated in on_configure
+  OnWriteCommandWriter on_write_writer_;  // command_writer_mode on_write: started by the transport
 
   // Thread-safe state/command exchange (producer -> one consumer each)
   // The state and IMU callbacks never overlap (they share the parsing buffers state_frame() and

@@ -25,6 +25,7 @@ struct DriverParameters
   std::string network_interface;
   bool enable_monitor;
   uint64_t command_writer_period_us;
+  CommandWriterMode command_writer_mode;
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
   uint64_t fault_timeout_ms;  // no state for this long since the newest: read() returns ERROR
@@ -38,6 +39,7 @@ struct DriverParameters
   : network_interface(defaults.network_interface),
     enable_monitor(defaults.enable_monitor),
     command_writer_period_us(defaults.command_writer_period_us),
+    command_writer_mode(defaults.command_writer_mode),
     state_decimation(defaults.state_decimation),
     state_timeout_ms(defaults.state_timeout_ms),
     fault_timeout_ms(defaults.fault_timeout_ms),
@@ -135,6 +137,29 @@ bool read_bool_parameter(
   return true;
 }
 
+// command_writer_mode: "timer" or "on_write"; a missing one keeps `value` (the default).
+template<typename Parameters>
+bool read_writer_mode_parameter(
+  const rclcpp::Logger & logger, const Parameters & parameters, CommandWriterMode & value)
+{
+  const auto it = parameters.find("command_writer_mode");
+  if (it == parameters.end()) {
+    return true;
+  }
+  const std::string_view text = trimmed(it->second);
+  if (text == "timer") {
+    value = CommandWriterMode::kTimer;
+  } else if (text == "on_write") {
+    value = CommandWriterMode::kOnWrite;
+  } else {
+    RCLCPP_ERROR(
+      logger, "hardware parameter 'command_writer_mode' is '%s': expected timer or on_write",
+      it->second.c_str());
+    return false;
+  }
+  return true;
+}
+
 // Every <hardware> parameter of the driver, over the defaults in `out`, in the ranges rhi-gen
 // accepts in the vendor YAML. false (with an error line naming the parameter) on a bad value.
 template<typename Parameters>
@@ -146,6 +171,7 @@ bool read_driver_parameters(
     !read_unsigned_parameter(
       logger, parameters, "command_writer_period_us", 100, 10000000,
       out.command_writer_period_us) ||
+    !read_writer_mode_parameter(logger, parameters, out.command_writer_mode) ||
     !read_unsigned_parameter(logger, parameters, "state_decimation", 1, 10000, decimation) ||
     !read_unsigned_parameter(
       logger, parameters, "state_timeout_ms", 1, 600000, out.state_timeout_ms) ||

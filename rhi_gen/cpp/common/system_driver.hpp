@@ -227,6 +227,7 @@ public:
     if (core_.write_command()) {
       publish_command_values();
     }
+    core_.command_written();
     core_.monitor().check_write_latency(start);
     return return_type::OK;
   }

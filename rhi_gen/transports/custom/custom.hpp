@@ -11,7 +11,8 @@
 // and in the shared core. Threads:
 //   - on_activate (controller manager thread): connect(), then the command writer starts;
 //   - command writer (an executor thread spinning the driver's node, a wall timer at
-//     command_writer_period_us): send(command), never before the first valid state;
+//     command_writer_period_us; with command_writer_mode on_write the driver's own writer thread,
+//     woken by write()): send(command), never two at once, never before the first valid state;
 //   - the SDK's own thread(s): receive_state() / receive_imu() from its callbacks, never two
 //     receive_state() (or two receive_imu()) calls at once;
 //   - on_deactivate and destruction: the writer stops and is joined, then disconnect().
@@ -89,7 +90,8 @@ public:
     activated_ns_ = steady_now_ns();
     no_state_warned_ = false;
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
+      core_->parameters().command_writer_period_us, core_->logger(), core_->on_write_writer(),
+      [this]() {write_command();});
     return true;
   }
 

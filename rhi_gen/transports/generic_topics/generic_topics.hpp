@@ -96,7 +96,8 @@ public:
     slots_reported_ = 0;
     slot_state_time_ns_.fill(0);
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
+      core_->parameters().command_writer_period_us, core_->logger(), core_->on_write_writer(),
+      [this]() {write_command();});
     return true;
   }
 

@@ -25,6 +25,7 @@
 #include <rclcpp/qos.hpp>
 #include <rclcpp/timer.hpp>
 
+#include "robot_hardware_interface/common/command_writer.hpp"
 #include "robot_hardware_interface/common/driver_core.hpp"
 #include "robot_hardware_interface/common/monitor.hpp"
 
@@ -56,8 +57,8 @@ inline rclcpp::QoS make_qos(const TopicQos & options)
 }
 
 // Spins the driver's node on its own thread from start() (on_activate) to stop()
-// (on_deactivate), with the command writer as a wall timer on it: topic callbacks and the writer
-// never run concurrently.
+// (on_deactivate), with the command writer as a wall timer on it (topic callbacks and the writer
+// never run concurrently), or in the on_write mode on the OnWriteCommandWriter's thread.
 class TopicExecutor
 {
 public:
@@ -73,12 +74,18 @@ public:
     executor_->add_node(node_);
   }
 
-  // Starts spinning, with `writer` called every `period_us`. May throw (then call stop()).
+  // Starts spinning, with `writer` called every `period_us` on the executor (a wall timer), or,
+  // given `on_write` (command_writer_mode on_write), on that writer's thread as write() wakes it
+  // (then topic callbacks and the writer may run at the same time). May throw (then call stop()).
   template<typename Writer>
-  void start(uint64_t period_us, const rclcpp::Logger & logger, Writer && writer)
+  void start(
+    uint64_t period_us, const rclcpp::Logger & logger, OnWriteCommandWriter * on_write,
+    Writer && writer)
   {
-    command_timer_ = node_->create_wall_timer(
-      std::chrono::microseconds(period_us), std::forward<Writer>(writer));
+    if (on_write == nullptr) {
+      command_timer_ = node_->create_wall_timer(
+        std::chrono::microseconds(period_us), std::forward<Writer>(writer));
+    }
     stopped_.store(false, std::memory_order_release);
     thread_ = std::thread(
       [this, logger]() {
@@ -89,6 +96,10 @@ public:
         }
         stopped_.store(true, std::memory_order_release);
       });
+    if (on_write != nullptr) {
+      on_write_ = on_write;
+      on_write->start(period_us, std::forward<Writer>(writer));
+    }
   }
 
   // While the executor does not spin (before start(), after stop()): spins it on the caller's
@@ -102,6 +113,10 @@ public:
 
   void stop()
   {
+    if (on_write_ != nullptr) {
+      on_write_->stop();
+      on_write_ = nullptr;
+    }
     if (thread_.joinable()) {
       // A cancel() issued before spin() has started is lost (rclcpp behaviour) and join() would
       // then wait forever: repeat it until the thread has really left spin().
@@ -122,7 +137,8 @@ private:
   rclcpp::executors::SingleThreadedExecutor::SharedPtr executor_;
   std::thread thread_;
   std::atomic<bool> stopped_{true};  // set by the executor thread when it leaves spin()
-  rclcpp::TimerBase::SharedPtr command_timer_;
+  rclcpp::TimerBase::SharedPtr command_timer_;  // the timer mode's writer
+  OnWriteCommandWriter * on_write_{nullptr};  // the on_write mode's writer, while started
 };
 
 // An IMU sample from ROS message fields (quaternion x, y, z, w; vectors x, y, z) into the core,

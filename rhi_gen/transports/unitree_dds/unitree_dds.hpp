@@ -149,22 +149,34 @@ public:
         "over %.2f s once a controller drives them", core_->slots().commanded_slots().size(),
         arm_sdk_->topic, arm_sdk_->weight_slot, arm_sdk_->ramp_s);
     }
+    const uint64_t period_us = core_->parameters().command_writer_period_us;
+    if (OnWriteCommandWriter * writer = core_->on_write_writer()) {
+      writer->start(period_us, [this]() {write_command();});
+      writing_ = true;
+      return true;
+    }
     writer_thread_ = ::unitree::common::CreateRecurrentThreadEx(
-      "command_writer", UT_CPU_ID_NONE, core_->parameters().command_writer_period_us,
-      &UnitreeDdsTransport::write_command, this);
+      "command_writer", UT_CPU_ID_NONE, period_us, &UnitreeDdsTransport::write_command, this);
+    writing_ = true;
     return true;
   }
 
   void stop() override
   {
-    if (!writer_thread_) {
+    if (!writing_) {
       return;
     }
-    // The SDK creates its threads detached and does not join them on destruction: Wait()
-    // (RecurrentThread's override sets the loop's quit flag, then waits for the loop to end) is
-    // what guarantees write_command() has returned for good.
-    writer_thread_->Wait();
-    writer_thread_.reset();
+    writing_ = false;
+    if (OnWriteCommandWriter * writer = core_->on_write_writer()) {
+      writer->stop();
+    }
+    if (writer_thread_) {
+      // The SDK creates its threads detached and does not join them on destruction: Wait()
+      // (RecurrentThread's override sets the loop's quit flag, then waits for the loop to end)
+      // is what guarantees write_command() has returned for good.
+      writer_thread_->Wait();
+      writer_thread_.reset();
+    }
     if (arm_sdk_ != nullptr) {
       hand_back_upper_body();
     }
@@ -270,7 +282,8 @@ private:
     core_->publish_imu();
   }
 
-  // SDK recurrent thread: one LowCmd_ every command_writer_period_us.
+  // SDK recurrent thread: one LowCmd_ every command_writer_period_us (on_write mode: the
+  // OnWriteCommandWriter's thread, woken by write()).
   void write_command()
   {
     const auto start = std::chrono::steady_clock::now();
@@ -375,7 +388,8 @@ private:
   LowCmd low_cmd_;  // writer thread: the message sent (constant parts filled in configure())
   ::unitree::robot::ChannelPublisherPtr<LowCmd> publisher_;
   ::unitree::robot::ChannelSubscriberPtr<LowState> subscriber_;
-  ::unitree::common::ThreadPtr writer_thread_;
+  ::unitree::common::ThreadPtr writer_thread_;  // the timer mode's writer
+  bool writing_{false};  // caller's thread (start / stop): a writer was started and not stopped
   std::atomic<uint8_t> state_tag_{0};  // hg mode_machine: from every valid LowState_, echoed back
   uint64_t crc_error_count_{0};           // listener thread: frames dropped for a bad CRC
 };

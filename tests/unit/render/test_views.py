@@ -80,7 +80,8 @@ def test_xacro_view_interfaces_comments_and_defaults():
     view = xacro_view(replace(robot, joints=(grouped, robot.joints[1])))
     assert view.macro_name == "arm_ros2_control" and view.joint_count == 2
     assert view.defaults == {"name": "arm_hardware", "network_interface": "lo", "enable_monitor": "false",
-                             "command_writer_period_us": "2000", "state_decimation": "1", "state_timeout_ms": "100",
+                             "command_writer_period_us": "2000", "command_writer_mode": "timer",
+                             "state_decimation": "1", "state_timeout_ms": "100",
                              "fault_timeout_ms": "1000", "first_state_timeout_ms": "10000", "calibration_file": "",
                              "is_async": "false", "rw_rate": "0"}
     shoulder, wheel = view.joints

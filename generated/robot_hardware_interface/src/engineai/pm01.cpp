@@ -60,7 +60,8 @@ static_assert(robot_hardware_interface::slots_are_valid(kJoints, PM01_NUM_MOTOR)
 
 // Plugin and node name, joints, IMU sensor name, motor groups, the <hardware> parameter
 // defaults and the controllers the launch file activates (named by the recovery hint). Defaults:
-// network_interface, enable_monitor, command_writer_period_us, state_decimation, state_timeout_ms,
+// network_interface, enable_monitor, command_writer_period_us, command_writer_mode,
+// state_decimation, state_timeout_ms,
 // fault_timeout_ms, first_state_timeout_ms, diagnostics_period_ms, motor_temperature_warn_c,
 // motor_temperature_error_c,
 // motor_error_fault_mask
@@ -68,7 +69,7 @@ constexpr RobotSpec kRobot{"robot_hardware_interface/engineai/PM01HardwareInterf
   "pm01_hardware_interface", kJoints.data(), kJoints.size(), "base_imu",
   {{"left leg motors", "right leg motors", "waist motors", "left arm motors", "right arm motors",
     "head motors"}},
-  {"lo", false, 2000, 1, 100, 1000, 10000, 1000, 70, 85, 0x0U},
+  {"lo", false, 2000, CommandWriterMode::kTimer, 1, 100, 1000, 10000, 1000, 70, 85, 0x0U},
   "joint_state_broadcaster imu_sensor_broadcaster health_controller forward_position_controller"};
 
 // transport_options: command, state, IMU and motor debug topics, parallel_parser_type (0 CLASSIC, 1

@@ -62,12 +62,20 @@ struct JointSpec
 // this many (rhi_gen/model/motor_groups.py MAX_MOTOR_GROUPS: 7 sides by 6 limbs).
 inline constexpr size_t kMaxMotorGroups = 48;
 
+// How the command leaves the driver (hardware parameter command_writer_mode).
+enum class CommandWriterMode : uint8_t
+{
+  kTimer,    // "timer": the transport's writer sends every command_writer_period_us
+  kOnWrite,  // "on_write": sent as soon as write() has built it (command_writer.hpp)
+};
+
 // Defaults of the <hardware> parameters (the vendor YAML's `parameters`).
 struct ParameterDefaults
 {
   const char * network_interface;
   bool enable_monitor;
   uint64_t command_writer_period_us;
+  CommandWriterMode command_writer_mode;
   uint32_t state_decimation;
   uint64_t state_timeout_ms;
   uint64_t fault_timeout_ms;

@@ -168,7 +168,8 @@ public:
     }
     controlling_ = true;
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
+      core_->parameters().command_writer_period_us, core_->logger(), core_->on_write_writer(),
+      [this]() {write_command();});
     return true;
   }
 

@@ -139,7 +139,8 @@ public:
   bool start() override
   {
     executor_.start(
-      core_->parameters().command_writer_period_us, core_->logger(), [this]() {write_command();});
+      core_->parameters().command_writer_period_us, core_->logger(), core_->on_write_writer(),
+      [this]() {write_command();});
     return true;
   }
 

@@ -229,7 +229,7 @@ def test_driver_against_simulated_robot(harness_runs, harness_binaries, referenc
     assert run.returncode == 0 and run.failed == 0 and run.passed > 0, f"{label} ({flavour}): {run.describe()}"
     model = _robot(reference, label).model
     expected = {"interfaces", "safety", "joint_map", "imu", "commands", "command_safety", "command_modes", "parameters",
-                "decimation", "faults", "allocations", "threads", "transmission"}
+                "decimation", "faults", "allocations", "threads", "transmission", "on_write"}
     if model.has_transmission:
         # motors that are not joints: the exact motor = joint checks give way to the transmission section's
         expected = {"interfaces", "transmission", "faults", "threads"}

@@ -63,6 +63,7 @@ DRIVER_CORE = COMMON + "driver_core.hpp"
 COMMAND_CLAIMS = COMMON + "command_claims.hpp"
 STATE_FRESHNESS = COMMON + "state_freshness.hpp"
 COMMAND_GUARD = COMMON + "command_guard.hpp"
+COMMAND_WRITER = COMMON + "command_writer.hpp"
 SLOT_KERNELS = COMMON + "slot_kernels.hpp"
 JOINT_TRANSMISSIONS = COMMON + "joint_transmissions.hpp"
 PARAMETERS = COMMON + "hardware_parameters.hpp"
@@ -94,6 +95,7 @@ class Mutation:
     what: str
     change: TokenEdit | SwapSlots   # a generated file's tokens, or the RobotModel before rendering
     sections: tuple[str, ...]       # the harness sections expected to catch it
+    also: tuple[str, ...] = ()      # sections that must each catch it too (the on_write mode's guarantees)
     robots: tuple[str, ...] = ROBOTS
     data_buffer: bool = False       # run data_buffer_stress instead of the driver harness
     distro: str = DEFAULT_DISTRO    # the ros2_control stand-ins the harness is built against
@@ -103,14 +105,15 @@ class Mutation:
 MUTATIONS = (
     Mutation("layer1_writer_guard", "delete layer 1: the command writer no longer waits for the first state",
              TokenEdit(DRIVER_CORE, "if (!safe_start_.first_state_received()) { return nullptr; }", ""),
-             ("safety",)),
+             ("safety",), also=("on_write",)),
     Mutation("layer2_initial_command", "delete layer 2: the first state no longer seeds the hold command",
              TokenEdit(DRIVER_CORE, "motor_command_buffer_.set_data(initial_cmd_cache_);", ""), ("safety",)),
     Mutation("layer3_write_guard", "delete layer 3: write() forwards commands before read() copied a state",
              TokenEdit(DRIVER_CORE, "if (!safe_start_.state_copied()) { return false; }", ""),
-             ("safety",)),
+             ("safety",), also=("on_write",)),
     Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
-             TokenEdit(DRIVER_CORE, "frames_.joints.pos_des = frames_.joints.pos;", ""), ("safety",)),
+             TokenEdit(DRIVER_CORE, "frames_.joints.pos_des = frames_.joints.pos;", ""), ("safety",),
+             also=("on_write",)),
     Mutation("default_gains_ignored", "a position-only controller gets zero stiffness instead of the default",
              TokenEdit(COMMAND_CLAIMS,
                        "position_mode && (claims & kClaimPosition) != 0U ? slots_.default_stiffness(i) : 0.0", "0.0"),
@@ -158,7 +161,7 @@ MUTATIONS = (
              TokenEdit(STATE_FRESHNESS, "if (frames_valid_)", "if (true)"), ("decimation",)),
     Mutation("stale_state_never_held", "the command writer never notices that the state stopped",
              TokenEdit(STATE_FRESHNESS, "age_ns > static_cast<int64_t>(timeout_ms) * 1000000",
-                       "age_ns < 0 && timeout_ms == 0"), ("command_safety",)),
+                       "age_ns < 0 && timeout_ms == 0"), ("command_safety",), also=("on_write",)),
     Mutation("dead_link_never_faults", "read() never returns ERROR: controllers keep running on a held state",
              TokenEdit(SYSTEM_DRIVER, "const bool link_dead = $$ && core_.link_dead($$);",
                        "const bool link_dead = false;"), ("faults",)),
@@ -169,7 +172,19 @@ MUTATIONS = (
              ("faults",)),
     Mutation("error_hold_released", "on_error does not latch the hold: once the state is back the last "
              "controller command is sent again",
-             TokenEdit(SYSTEM_DRIVER, "core_.hold_until_activation();", ""), ("faults",)),
+             TokenEdit(SYSTEM_DRIVER, "core_.hold_until_activation();", ""), ("faults",), also=("on_write",)),
+    # command_writer_mode on_write (common/command_writer.hpp): the writer woken by write()
+    Mutation("on_write_no_rate_limit", "on_write: the writer sends on every write(), faster than the period allows",
+             TokenEdit(COMMAND_WRITER, "if (Clock::now() < allowed) { $$ }", "static_cast<void>(allowed);"),
+             ("on_write",),
+             robots=("unitree/g1",)),
+    Mutation("on_write_no_fallback", "on_write: the writer sends only when write() wakes it, so no hold flows "
+             "once ros2_control stops calling write() (on_error)",
+             TokenEdit(COMMAND_WRITER, "wake_.wait_until(lock, due, [this]() {return woken_ || stopping_;});",
+                       "wake_.wait(lock, [this]() {return woken_ || stopping_;}); static_cast<void>(due);"),
+             ("on_write",), robots=("engineai/pm01",)),
+    Mutation("on_write_not_woken", "on_write: write() does not wake the writer: commands leave on its period only",
+             TokenEdit(DRIVER_CORE, "on_write_writer_.notify();", ""), ("on_write",), robots=("unitree/g1",)),
     Mutation("negative_gain_forwarded", "the command guard forwards a negative gain",
              TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", ""), ("command_safety",)),
     Mutation("fetch_unclaimed", "write() fetches every command handle, claimed or not (framework-owned handles)",
@@ -266,7 +281,8 @@ MUTATIONS = (
     Mutation("take_control_after_commands", "the driver starts commanding before it has taken control",
              TokenEdit(AGIBOT_TOPICS, "if (!control_.take(executor_, core_->logger())) { return false; }",
                        "executor_.start(core_->parameters().command_writer_period_us, core_->logger(), "
-                       "[this]() {write_command();}); std::this_thread::sleep_for(std::chrono::milliseconds(20)); "
+                       "core_->on_write_writer(), [this]() {write_command();}); "
+                       "std::this_thread::sleep_for(std::chrono::milliseconds(20)); "
                        "executor_.stop(); if (!control_.take(executor_, core_->logger())) { return false; }"),
              ("take_control",), robots=TAKE_CONTROL_ROBOTS),
     Mutation("take_control_refusal_ignored", "a refused Develop_MC is taken for an accepted one",
@@ -438,6 +454,9 @@ def test_mutation_is_caught(outcomes, mutation):
                                      f"{run.passed} checks passed, none failed")
         assert set(failed_sections) & set(mutation.sections), (
             f"{mutation.id} ({mutation.what}) on {o.robot} failed, but not in {mutation.sections}: "
+            f"failed sections {failed_sections}\n{run.describe()}")
+        assert not set(mutation.also) - set(failed_sections), (
+            f"{mutation.id} ({mutation.what}) on {o.robot} was not caught by {sorted(mutation.also)}: "
             f"failed sections {failed_sections}\n{run.describe()}")
 
 

@@ -1063,6 +1063,8 @@ void test_parameters() {
         {"command_writer_period_us", "abc"}, {"command_writer_period_us", ""},
         {"command_writer_period_us", "-1"},  {"command_writer_period_us", "0"},
         {"command_writer_period_us", "12x"}, {"command_writer_period_us", "99999999999999999999999"},
+        {"command_writer_mode", "onwrite"},  {"command_writer_mode", ""},
+        {"command_writer_mode", "Timer"},
         {"state_decimation", "0"},           {"state_decimation", "-3"},
         {"state_decimation", "two"},         {"state_decimation", "4.5"},
         {"state_timeout_ms", "0"},           {"state_timeout_ms", "soon"},
@@ -2775,6 +2777,7 @@ void test_unfilled_refuses_activation() {
 
 // --only=threads (or a comma list of interfaces,main,parameters,decimation,faults,health,diagnostics,crc,threads)
 // runs just those scenarios, e.g. to repeat the threaded one many times.
+#include "on_write_checks.inc"
 #if defined(RHI_FAKE_ROBOT)
 #include "fake_robot_checks.inc"
 #endif
@@ -2867,6 +2870,7 @@ int main(int argc, char** argv) {
     if (selected(only, "take_control")) test_take_control();
 #endif
     if (selected(only, "threads")) test_threads(threads_ms);
+    if (selected(only, "on_write")) test_on_write();
 #if RHI_FAKE_HI_MAJOR >= 4
     if (selected(only, "async")) test_async(threads_ms);
 #endif

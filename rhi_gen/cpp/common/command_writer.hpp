@@ -24,8 +24,8 @@ namespace robot_hardware_interface
 //     the mutex only while the writer checks the flag (a few instructions).
 //   - Rate limit: never more than one command per period on average, never two less than half a
 //     period apart (a virtual schedule: a send is allowed from half a period before its turn), so
-//     the robot never sees a faster command rate than the timer mode gives it, and one late
-//     write() does not delay the following ones.
+//     the robot never sees a faster command rate than the timer mode gives it. A write() that
+//     comes sooner is not answered on its own; its command leaves with the next write()'s.
 //   - Fallback: when write() has not woken it for two periods (the controller manager is late or
 //     stalled, or ros2_control stopped calling write() after on_error), it sends every period, as
 //     the timer mode does, so the holds keep flowing until write() wakes it again.
@@ -85,10 +85,15 @@ private:
   void run(std::chrono::microseconds period, Send & send)
   {
     const auto tolerance = period / 2;
-    Clock::time_point turn = Clock::now();   // the next send's turn in the virtual schedule
-    Clock::time_point last_woken = turn;     // the newest send that write() asked for
+    // The rate limit, a policer rather than a queue: a send is allowed from half a period before
+    // its turn at the average rate (`turn`). A write() that comes sooner is not answered on its
+    // own (its command leaves with the next one, or with the fallback): waiting for the turn
+    // instead would tie every later command to the late one's phase, a lag that never ends when
+    // the controller manager runs at exactly the writer's rate.
+    Clock::time_point turn = Clock::now();
+    Clock::time_point last_woken = turn;  // the newest send that write() asked for
     Clock::time_point last_sent = turn;
-    bool falling_back = false;               // write() is late: sending every period
+    bool falling_back = false;            // write() is late: sending every period
     std::unique_lock<std::mutex> lock(mutex_);
     while (!stopping_) {
       const Clock::time_point due = falling_back ? last_sent + period : last_woken + 2 * period;
@@ -97,16 +102,18 @@ private:
         break;
       }
       const bool asked = woken_;
-      // The rate limit: not before half a period ahead of this send's turn. A write() meanwhile
-      // is answered by this send too (it takes the newest command).
+      woken_ = false;
       const Clock::time_point allowed = turn - tolerance;
       if (Clock::now() < allowed) {
+        if (asked) {
+          continue;  // sooner than the rate allows
+        }
+        // The fallback's own period met a send write() asked for: wait for the turn.
         wake_.wait_until(lock, allowed, [this]() {return stopping_;});
         if (stopping_) {
           break;
         }
       }
-      woken_ = false;
       lock.unlock();
       const Clock::time_point now = Clock::now();
       send();

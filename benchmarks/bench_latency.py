@@ -16,6 +16,9 @@ machine and with as many busy threads as the machine has cores ("loaded"):
           command_writer_period_us). An observer of the command topic notes the first command carrying each
           state's sequence: latency = command on the wire - state on the wire. Two free-running clocks sit in
           that path (the state waits for the loop's next cycle, the command for the writer's next tick).
+* on_write the same loop with the driver's hardware parameter command_writer_mode on_write: the command leaves
+          on the driver's OnWriteCommandWriter thread as soon as write() has built it (rate-limited to one per
+          command_writer_period_us on average): one free-running clock fewer.
 * floor   the same driver, each state answered directly from its callback on the robot's thread (read(), the
           controller, write(), the writer's send): the driver's own code, nothing waiting.
 
@@ -82,7 +85,7 @@ def main() -> None:
                 for mode, samples, states, *figures in LINE.findall(run.stdout):
                     shown = (f"median {figures[0]} us, p99 {figures[1]} us, p99.9 {figures[2]} us, max {figures[3]} us"
                              if figures[0] else "no answered state")
-                    print(f"  {mode:5s} {load:6s}: {shown} ({samples} of {states} states answered)", flush=True)
+                    print(f"  {mode:8s} {load:6s}: {shown} ({samples} of {states} states answered)", flush=True)
 
 
 if __name__ == "__main__":

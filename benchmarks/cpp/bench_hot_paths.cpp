@@ -374,8 +374,8 @@ void clock_overhead(uint32_t iterations) {
 // stand-in hands it to the driver's state callback on that thread, as a DDS listener thread would. The
 // controller manager's loop, played as ros2_control runs it (one thread, every 1 / update_hz s: read(), a
 // controller holding each joint's measured position, write()), echoes the sequence into the position
-// commands; the command leaves on the driver's own writer (its SDK thread or executor timer, every
-// command_writer_period_us). An observer of the command topic decodes the first joint's position target and
+// commands; the command leaves on the driver's own writer: its SDK thread or executor timer, every
+// command_writer_period_us ("timer"), or its OnWriteCommandWriter woken by write() ("on_write"). An observer of the command topic decodes the first joint's position target and
 // notes, per state, the first command that carries its sequence: latency = command on the wire - state on
 // the wire. The floor, same binary: a state answered directly from its callback (read(), the controller,
 // write() and the writer's send on the robot thread, nothing waiting), the least the driver's code takes.
@@ -462,13 +462,15 @@ void report_latency(const char* mode, LatencyProbe& probe, uint64_t states) {
 }
 
 // The driver set up as ros2_control runs it with a forward position controller: a position claim, the
-// transport's real threads (SDK threads / wall timers) when `threaded`.
-void start_closed_loop(Rig& rig, bool threaded) {
+// transport's real threads (SDK threads / wall timers) when `threaded`; `writer_mode`: the hardware
+// parameter command_writer_mode (timer, on_write).
+void start_closed_loop(Rig& rig, bool threaded, const char* writer_mode = "timer") {
   rhi_fake::reset_all();
   rclcpp::init(0, nullptr);
   rig.t.use_real_threads(threaded);
   hardware_interface::HardwareInfo info = make_hardware_info();
   info.hardware_parameters["enable_monitor"] = "true";
+  info.hardware_parameters["command_writer_mode"] = writer_mode;
   bring_up(rig, info, Claim::kTargets);
 }
 
@@ -500,9 +502,11 @@ void closed_loop(double seconds, double robot_hz, double update_hz, int busy_thr
   const auto robot_period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / (robot_hz * 1.001)));
   const auto update_period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / update_hz));
   const auto samples_wanted = static_cast<size_t>((seconds + 1.0) * robot_hz * 1.01) + 16;  // every state sent
-  {  // the timer mode: the controller manager's loop and the driver's writer, each on its own clock
+  // The controller manager's loop on its own clock, the driver's writer on the writer's (timer) or woken by
+  // write() (on_write).
+  for (const char* writer_mode : {"timer", "on_write"}) {
     Rig rig;
-    start_closed_loop(rig, true);
+    start_closed_loop(rig, true, writer_mode);
     LatencyProbe probe;
     probe.samples.reserve(samples_wanted);
     if (!observe_commands([&probe](const void* msg) { probe.command(msg); })) fail("no command topic to observe");
@@ -538,7 +542,7 @@ void closed_loop(double seconds, double robot_hz, double update_hz, int busy_thr
     probe.recording.store(false);
     stop.store(true);
     robot.join();
-    stop_closed_loop(rig, probe, "timer", states.load());
+    stop_closed_loop(rig, probe, writer_mode, states.load());
   }
   {  // the floor: each state answered from its callback on the robot's thread, nothing waiting
     Rig rig;

@@ -564,11 +564,11 @@ private:
     }
     const DriverParameters & p = core_.parameters();
     RCLCPP_INFO(
-      log, "initialized: %zu joints, command period %" PRIu64 " us, state decimation %u, "
+      log, "initialized: %zu joints, command period %" PRIu64 " us (%s), state decimation %u, "
       "state timeout %" PRIu64 " ms, fault timeout %" PRIu64 " ms, monitor %s",
-      core_.spec().joint_count, p.command_writer_period_us, p.state_decimation, p.state_timeout_ms,
-      p.fault_timeout_ms,
-      p.enable_monitor ? "on" : "off");
+      core_.spec().joint_count, p.command_writer_period_us,
+      p.command_writer_mode == CommandWriterMode::kOnWrite ? "sent on write()" : "timer",
+      p.state_decimation, p.state_timeout_ms, p.fault_timeout_ms, p.enable_monitor ? "on" : "off");
     return CallbackReturn::SUCCESS;
   }
 

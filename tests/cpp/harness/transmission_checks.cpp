@@ -51,7 +51,9 @@ constexpr std::array<JointSpec, 5> kJoints = {{
     {"wheel", 5, CommandMode::kVelocity, -kNoLimit, kNoLimit, 30.0, 10.0, 0.0, 2.0, 0},
 }};
 constexpr RobotSpec kRobot{"test/TransmissionRobot", "transmission_robot", kJoints.data(), kJoints.size(),
-                           nullptr, {{"motors"}}, {"lo", false, 2000, 1, 100, 1000, 10000, 0, 70, 85, 0}};
+                           nullptr, {{"motors"}},
+                           {"lo", false, 2000, robot_hardware_interface::CommandWriterMode::kTimer, 1, 100, 1000, 10000, 0,
+                            70, 85, 0}};
 
 constexpr double kWristOffset[2] = {0.2, -0.3};
 constexpr std::array<JointTransmissionSpec, 4> kTransmissions = {{

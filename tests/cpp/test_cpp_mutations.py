@@ -14,11 +14,16 @@ The harness's fake robot is built from the unmutated package (the robot as it re
 expectations) unless the mutation breaks the fake robot itself; its objects are then the control's. The
 DataBuffer mutation builds tests/cpp/harness/data_buffer_stress.cpp instead. A control run of the
 unmodified package must pass, so the failures come from the mutations, not from the machinery.
+
+A TokenEdit that says how it is switched at run time (``switch``) is built into a mutation schema with the
+robot's other such edits: one driver build, one harness run per mutant (``--mutant=N``), and a run with every
+switch off that must pass (tests/cpp/harness/README.md, "Mutation tests").
 """
 from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -41,7 +46,15 @@ from tests.support.cpp_build import (
     run_parallel,
     session_builder,
 )
-from tests.support.cpp_mutate import MutationError, SwapSlots, TokenEdit, code_of, tokenize
+from tests.support.cpp_mutate import (
+    MutationError,
+    SwapSlots,
+    TokenEdit,
+    apply_schema,
+    code_of,
+    disjoint_groups,
+    tokenize,
+)
 from tests.support.repo import REPO
 
 ROBOTS = ("unitree/g1", "engineai/pm01")
@@ -102,31 +115,36 @@ class Mutation:
 
 
 # TokenEdit(file, pattern, replacement[, count]): C++ snippets; "$$" in a pattern is any balanced run of tokens.
+# switch: how the mutant is switched on in a mutation schema (tests/support/cpp_mutate.py); none: built alone.
+STATEMENTS, OPERAND = "statements", "operand"
 MUTATIONS = (
     Mutation("layer1_writer_guard", "delete layer 1: the command writer no longer waits for the first state",
-             TokenEdit(DRIVER_CORE, "if (!safe_start_.first_state_received()) { return nullptr; }", ""),
+             TokenEdit(DRIVER_CORE, "if (!safe_start_.first_state_received()) { return nullptr; }", "",
+                       switch=STATEMENTS),
              ("safety",), also=("on_write",)),
     Mutation("layer2_initial_command", "delete layer 2: the first state no longer seeds the hold command",
-             TokenEdit(DRIVER_CORE, "motor_command_buffer_.set_data(initial_cmd_cache_);", ""), ("safety",)),
+             TokenEdit(DRIVER_CORE, "motor_command_buffer_.set_data(initial_cmd_cache_);", "",
+                       switch=STATEMENTS), ("safety",)),
     Mutation("layer3_write_guard", "delete layer 3: write() forwards commands before read() copied a state",
-             TokenEdit(DRIVER_CORE, "if (!safe_start_.state_copied()) { return false; }", ""),
+             TokenEdit(DRIVER_CORE, "if (!safe_start_.state_copied()) { return false; }", "", switch=STATEMENTS),
              ("safety",), also=("on_write",)),
     Mutation("layer3_first_write_seed", "layer 3: the first write() no longer targets the measured position",
-             TokenEdit(DRIVER_CORE, "frames_.joints.pos_des = frames_.joints.pos;", ""), ("safety",),
+             TokenEdit(DRIVER_CORE, "frames_.joints.pos_des = frames_.joints.pos;", "", switch=STATEMENTS), ("safety",),
              also=("on_write",)),
     Mutation("default_gains_ignored", "a position-only controller gets zero stiffness instead of the default",
              TokenEdit(COMMAND_CLAIMS,
-                       "position_mode && (claims & kClaimPosition) != 0U ? slots_.default_stiffness(i) : 0.0", "0.0"),
+                       "position_mode && (claims & kClaimPosition) != 0U ? slots_.default_stiffness(i) : 0.0", "0.0",
+                       switch=OPERAND),
              ("command_modes",), robots=("unitree/g1",)),
     Mutation("velocity_joint_position_target", "a velocity-commanded joint is sent the stale position target",
              TokenEdit(DRIVER_CORE, "command.q_target[slot] = static_cast<T>(frames_.joints.pos[slot]);",
-                       "command.q_target[slot] = static_cast<T>(frames_.joints.pos_des[slot]);"),
+                       "command.q_target[slot] = static_cast<T>(frames_.joints.pos_des[slot]);", switch=STATEMENTS),
              ("command_modes",), robots=("acme/scara",)),
     Mutation("nan_command_bounded", "write() bounds a NaN command to the lower limit instead of passing it on",
              TokenEdit(SLOT_KERNELS, "const T raised = rounded < lower ? lower : rounded;",
-                       "const T raised = !(rounded >= lower) ? lower : rounded;"), ("command_safety",)),
+                       "const T raised = !(rounded >= lower) ? lower : rounded;", switch=OPERAND), ("command_safety",)),
     Mutation("agibot_duplicate_entry", "a JointStateArray naming one joint twice stands in for a missing joint",
-             TokenEdit(AGIBOT_TOPICS, "if (slot_stamps_[slot] == stamp)", "if (false)"), ("joint_map",),
+             TokenEdit(AGIBOT_TOPICS, "if (slot_stamps_[slot] == stamp)", "if (false)", switch=OPERAND), ("joint_map",),
              robots=("agibot/x2",)),
     Mutation("joint_map_swap", "the robot's joint table swaps the SDK slots of motors 0 and 1",
              SwapSlots(0, 1), ("joint_map",)),
@@ -148,108 +166,123 @@ MUTATIONS = (
              TokenEdit(UNITREE_GO, "kHead0 = 0xFE;", "kHead0 = 0xEF;"), ("commands",), robots=GO_ROBOTS),
     Mutation("go_motor_modes_ignored", "go LowCmd_ slots get mode 0x01 where motor_modes says 0 (stop)",
              TokenEdit(UNITREE_GO, "motor.mode() = motor_modes[slot];",
-                       "motor.mode() = static_cast<uint8_t>(motor_modes[slot] | 0x01U);"),
+                       "motor.mode() = static_cast<uint8_t>(motor_modes[slot] | 0x01U);", switch=STATEMENTS),
              ("commands",), robots=GO_ROBOTS),
     Mutation("imu_quaternion_order", "read() exports x as orientation.w",
              TokenEdit(DRIVER_CORE, "imu_data_.orientation[3] = static_cast<double>(imu->quat[0]);",
-                       "imu_data_.orientation[3] = static_cast<double>(imu->quat[1]);"), ("imu",)),
+                       "imu_data_.orientation[3] = static_cast<double>(imu->quat[1]);", switch=STATEMENTS), ("imu",)),
     Mutation("decimation", "state decimation off by one",
-             TokenEdit(STATE_FRESHNESS, "frame_count % decimation", "frame_count % (decimation + 1)"), ("decimation",)),
+             TokenEdit(STATE_FRESHNESS, "frame_count % decimation", "frame_count % (decimation + 1)",
+                       switch=OPERAND), ("decimation",)),
     Mutation("stale_ignores_decimated_frames", "decimated frames no longer count as state arriving",
-             TokenEdit(STATE_FRESHNESS, "if (frames_valid_) { mark_fresh($$); }", ""), ("decimation",)),
+             TokenEdit(STATE_FRESHNESS, "if (frames_valid_) { mark_fresh($$); }", "",
+                       switch=STATEMENTS), ("decimation",)),
     Mutation("stale_masked_by_decimated_frames", "decimated frames keep the state fresh after a rejected frame",
-             TokenEdit(STATE_FRESHNESS, "if (frames_valid_)", "if (true)"), ("decimation",)),
+             TokenEdit(STATE_FRESHNESS, "if (frames_valid_)", "if (true)", switch=OPERAND), ("decimation",)),
     Mutation("stale_state_never_held", "the command writer never notices that the state stopped",
-             TokenEdit(STATE_FRESHNESS, "age_ns > static_cast<int64_t>(timeout_ms) * 1000000",
-                       "age_ns < 0 && timeout_ms == 0"), ("command_safety",), also=("on_write",)),
+             TokenEdit(STATE_FRESHNESS, "return age_ns > static_cast<int64_t>(timeout_ms) * 1000000;",
+                       "return age_ns < 0 && timeout_ms == 0;", switch=STATEMENTS), ("command_safety",),
+             also=("on_write",)),
     Mutation("dead_link_never_faults", "read() never returns ERROR: controllers keep running on a held state",
              TokenEdit(SYSTEM_DRIVER, "const bool link_dead = $$ && core_.link_dead($$);",
-                       "const bool link_dead = false;"), ("faults",)),
+                       "const bool link_dead = false;", switch=OPERAND), ("faults",)),
     Mutation("dead_link_never_answered", "a robot that never answers after on_activate never faults: the "
              "wait for the first state is not counted",
              TokenEdit(STATE_FRESHNESS, "last_ns > activated_ns ? last_ns : activated_ns",
-                       "last_ns > activated_ns ? last_ns : now_ns"),
+                       "last_ns > activated_ns ? last_ns : now_ns", switch=OPERAND),
              ("faults",)),
     Mutation("error_hold_released", "on_error does not latch the hold: once the state is back the last "
              "controller command is sent again",
-             TokenEdit(SYSTEM_DRIVER, "core_.hold_until_activation();", ""), ("faults",), also=("on_write",)),
+             TokenEdit(SYSTEM_DRIVER, "core_.hold_until_activation();", "",
+                       switch=STATEMENTS), ("faults",), also=("on_write",)),
     # command_writer_mode on_write (common/command_writer.hpp): the writer woken by write()
     Mutation("on_write_no_rate_limit", "on_write: the writer sends on every write(), faster than the period allows",
-             TokenEdit(COMMAND_WRITER, "if (Clock::now() < allowed) { $$ }", "static_cast<void>(allowed);"),
+             TokenEdit(COMMAND_WRITER, "if (Clock::now() < allowed) { $$ }", "static_cast<void>(allowed);",
+                       switch=STATEMENTS),
              ("on_write",),
              robots=("unitree/g1",)),
     Mutation("on_write_no_fallback", "on_write: the writer sends only when write() wakes it, so no hold flows "
              "once ros2_control stops calling write() (on_error)",
              TokenEdit(COMMAND_WRITER, "wake_.wait_until(lock, due, [this]() {return woken_ || stopping_;});",
-                       "wake_.wait(lock, [this]() {return woken_ || stopping_;}); static_cast<void>(due);"),
+                       "wake_.wait(lock, [this]() {return woken_ || stopping_;}); static_cast<void>(due);",
+                       switch=STATEMENTS),
              ("on_write",), robots=("engineai/pm01",)),
     Mutation("on_write_not_woken", "on_write: write() does not wake the writer: commands leave on its period only",
-             TokenEdit(DRIVER_CORE, "on_write_writer_.notify();", ""), ("on_write",), robots=("unitree/g1",)),
+             TokenEdit(DRIVER_CORE, "on_write_writer_.notify();", "",
+                       switch=STATEMENTS), ("on_write",), robots=("unitree/g1",)),
     Mutation("negative_gain_forwarded", "the command guard forwards a negative gain",
-             TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", ""), ("command_safety",)),
+             TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", "&& true",
+                       switch=OPERAND), ("command_safety",)),
     Mutation("fetch_unclaimed", "write() fetches every command handle, claimed or not (framework-owned handles)",
-             TokenEdit(COMPAT, "{&claimed_links_, &gpio_command_links_}", "{&command_links_, &gpio_command_links_}"),
+             TokenEdit(COMPAT, "{&claimed_links_, &gpio_command_links_}", "{&command_links_, &gpio_command_links_}",
+                       switch=OPERAND),
              ("command_modes",), robots=("unitree/g1",), distro="jazzy"),
     Mutation("parameter_range", "an out-of-range parameter (0) is accepted",
-             TokenEdit(PARAMETERS, "|| parsed < min ||", "||"), ("parameters",)),
+             TokenEdit(PARAMETERS, "|| parsed < min ||", "|| false ||", switch=OPERAND), ("parameters",)),
     Mutation("hot_path_allocation", "write() allocates",
              TokenEdit(SYSTEM_DRIVER, "fetch_command_values();",
-                       "fetch_command_values(); { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }"),
+                       "fetch_command_values(); { std::vector<double> rhi_mutant(8); (void)rhi_mutant; }",
+                       switch=STATEMENTS),
              ("allocations",)),
     Mutation("transmission_effort_scaled", "read() scales a motor's effort like its position, not by the inverse",
              TokenEdit(SLOT_KERNELS, "joints.tau[i] = factors.inverse[i] *", "joints.tau[i] = factors.scale[i] *"),
              ("transmission",), robots=TRANSMISSION_ROBOTS),
     Mutation("coupled_command_untransformed", "write() sends a coupled group's joint targets to its motors as they are",
-             TokenEdit(JOINT_TRANSMISSIONS, "command.q_target[motor] = static_cast<T>(q);", ""),
+             TokenEdit(JOINT_TRANSMISSIONS, "command.q_target[motor] = static_cast<T>(q);", "", switch=STATEMENTS),
              ("transmission",), robots=TRANSMISSION_ROBOTS),
     Mutation("calibration_ignored", "on_configure reads the calibration file but does not apply it",
-             TokenEdit(DRIVER_CORE, "transmissions_.calibrate($$);", "static_cast<void>(entry);"), ("transmission",),
+             TokenEdit(DRIVER_CORE, "transmissions_.calibrate($$);", "static_cast<void>(entry);",
+                       switch=STATEMENTS), ("transmission",),
              robots=("engineai/pm01",)),
     Mutation("inactive_component_faults", "read() of an inactive, silent component returns ERROR",
              TokenEdit(SYSTEM_DRIVER, "const bool active = active_.load(std::memory_order_relaxed);",
-                       "const bool active = true;"), ("faults",),
+                       "const bool active = true;", switch=OPERAND), ("faults",),
              robots=("engineai/pm01",)),
     Mutation("estop_ignored", "write() never presses the e-stop the health GPIO commands",
-             TokenEdit(SYSTEM_DRIVER, "press_estop();", ""), ("health",), robots=("engineai/pm01",)),
+             TokenEdit(SYSTEM_DRIVER, "press_estop();", "", switch=STATEMENTS), ("health",), robots=("engineai/pm01",)),
     Mutation("invalid_states_uncounted", "a rejected state frame does not count in the health GPIO",
-             TokenEdit(STATE_FRESHNESS, "return invalid_states_.add();", "return 0;"), ("health",),
+             TokenEdit(STATE_FRESHNESS, "return invalid_states_.add();", "return 0;", switch=STATEMENTS), ("health",),
              robots=("engineai/pm01",)),
     Mutation("stale_holds_per_send", "every send of a stale hold counts as a new stale episode",
-             TokenEdit(COMMAND_GUARD, "if (!holding_) { stale_holds_.add(); }", "stale_holds_.add();"),
+             TokenEdit(COMMAND_GUARD, "if (!holding_) { stale_holds_.add(); }", "stale_holds_.add();",
+                       switch=STATEMENTS),
              ("health",), robots=("unitree/g1",)),
     Mutation("motor_health_not_published", "read() takes a new motor health frame but never writes its handles "
-             "(framework-owned handles)", TokenEdit(SYSTEM_DRIVER, "publish_slow_state_values();", ""), ("health",),
+             "(framework-owned handles)", TokenEdit(SYSTEM_DRIVER, "publish_slow_state_values();", "",
+                                                    switch=STATEMENTS), ("health",),
              robots=("unitree/g1",), distro="jazzy"),
     Mutation("hg_second_temperature", "the hg transport reports MotorState_.temperature[1] as the temperature",
-             TokenEdit(UNITREE_HG, "motor.temperature()[0]", "motor.temperature()[1]"), ("health",),
+             TokenEdit(UNITREE_HG, "motor.temperature()[0]", "motor.temperature()[1]", switch=OPERAND), ("health",),
              robots=("unitree/g1",)),
     Mutation("first_state_wait_ignored", "a first state later than fault_timeout_ms faults the driver at start-up "
              "(the DDS discovery race): first_state_timeout_ms not applied",
              TokenEdit(DRIVER_CORE, "!safe_start_.first_state_received(), parameters_.fault_timeout_ms,",
-                       "false, parameters_.fault_timeout_ms,"),
+                       "false, parameters_.fault_timeout_ms,", switch=OPERAND),
              ("faults",), robots=("engineai/pm01",)),
     Mutation("never_answered_not_said", "a robot that never answered is reported as a link that died",
-             TokenEdit(SYSTEM_DRIVER, "if (!core_.first_state_received()) {", "if (false) {"),
+             TokenEdit(SYSTEM_DRIVER, "if (!core_.first_state_received()) {", "if (false) {", switch=OPERAND),
              ("faults",), robots=("unitree/g1",)),
     Mutation("estop_not_diagnosed", "/diagnostics reports the safety of a robot held by the e-stop as fine",
-             TokenEdit(DRIVER_DIAGNOSTICS, "if (facts.estop) {", "if (false) {"), ("diagnostics",),
+             TokenEdit(DRIVER_DIAGNOSTICS, "if (facts.estop) {", "if (false) {", switch=OPERAND), ("diagnostics",),
              robots=("engineai/pm01",)),
     Mutation("hot_motor_ignored", "a motor at motor_temperature_error_c does not fault the driver",
-             TokenEdit(SYSTEM_DRIVER, "faulty_slot_ = faulty_motor_slot();", ""), ("health",), robots=("unitree/g1",)),
+             TokenEdit(SYSTEM_DRIVER, "faulty_slot_ = faulty_motor_slot();", "",
+                       switch=STATEMENTS), ("health",), robots=("unitree/g1",)),
     Mutation("motor_error_mask_ignored", "a motor error code with a bit of motor_error_fault_mask does not fault",
-             TokenEdit(SYSTEM_DRIVER, "core_.parameters().motor_error_fault_mask) != 0U;", "0U) != 0U;"),
+             TokenEdit(SYSTEM_DRIVER, "core_.parameters().motor_error_fault_mask) != 0U;", "0U) != 0U;",
+                       switch=OPERAND),
              ("diagnostics",), robots=("unitree/g1",)),
     Mutation("engineai_offline_ignored", "the EngineAI transport drops the native SDK's MotorDebug offline flags: "
              "an offline motor neither faults nor shows",
              TokenEdit(ENGINEAI_TOPICS, "health.offline[slot] = msg.offline[slot] != 0U;",
-                       "health.offline[slot] = false;"),
+                       "health.offline[slot] = false;", switch=OPERAND),
              ("offline",), robots=NATIVE_SDK_ROBOTS),
     Mutation("motor_groups_mixed_up", "every /diagnostics motor group status lists the first group's joints",
              TokenEdit(DRIVER_DIAGNOSTICS, "if (joint.motor_group != group) {",
-                       "if (joint.motor_group != 0 * group) {"),
+                       "if (joint.motor_group != 0 * group) {", switch=OPERAND),
              ("diagnostics",), robots=("engineai/pm01",)),
     Mutation("hardware_status_hides_estop", "ros2_control's ~/hardware_status does not name the e-stop (5.10+)",
-             TokenEdit(SYSTEM_DRIVER, "state.error_domain.push_back(State::EMERGENCY_STOP_SW);", ""),
+             TokenEdit(SYSTEM_DRIVER, "state.error_domain.push_back(State::EMERGENCY_STOP_SW);", "", switch=STATEMENTS),
              ("diagnostics",), robots=("engineai/pm01",), distro="kilted"),
     Mutation("fake_robot_motor_map_wrong", "the fake robot drives the first joint on the second joint's motor",
              TokenEdit(PM01_FAKE_ROBOT, '{"J00_HIP_PITCH_L", 0,', '{"J00_HIP_PITCH_L", 1,'),
@@ -259,51 +292,53 @@ MUTATIONS = (
              ("fake_robot",), robots=("unitree/g1",)),
     Mutation("arm_sdk_weight_jumps", "the arm SDK blend weight jumps from 0 to 1 (and back) in one message",
              TokenEdit(UNITREE_ARM_SDK, "step_(std::min(1.0, static_cast<double>(period_us) * 1e-6 / ramp_s))",
-                       "step_(1.0 + 0.0 * ramp_s * static_cast<double>(period_us))"),
+                       "step_(1.0 + 0.0 * ramp_s * static_cast<double>(period_us))", switch=OPERAND),
              ("arm_sdk",), robots=ARM_SDK_ROBOTS),
     Mutation("arm_sdk_legs_commanded", "under the arm SDK the command writer fills the legs' slots too",
              TokenEdit(UNITREE_DDS, "for (const size_t slot : core.slots().commanded_slots()) {",
                        "for (const size_t slot : core.slots().mapped_slots()) {"),
              ("arm_sdk",), robots=ARM_SDK_ROBOTS),
     Mutation("arm_sdk_no_hand_back", "on_deactivate stops the arm SDK at the weight it had, without ramping to 0",
-             TokenEdit(UNITREE_DDS, "if (arm_sdk_ != nullptr) { hand_back_upper_body(); }", ""),
+             TokenEdit(UNITREE_DDS, "if (arm_sdk_ != nullptr) { hand_back_upper_body(); }", "", switch=STATEMENTS),
              ("arm_sdk",), robots=ARM_SDK_ROBOTS),
     Mutation("dex3_mode_timeout", "every Dex3-1 motor's mode byte carries the timeout bit (the SDK's stop)",
              TokenEdit(UNITREE_DEX3, "(kStatusRun << 4U)", "(kStatusRun << 4U) | 0x80U"),
              ("hands",), robots=DEX3_ROBOTS),
     Mutation("dex3_hands_swapped", "the left hand's HandState_ feeds the right hand's joints and back",
              TokenEdit(UNITREE_DEX3, "on_hand_state(side, *static_cast<const HandState *>(message));",
-                       "on_hand_state(1 - side, *static_cast<const HandState *>(message));"),
+                       "on_hand_state(1 - side, *static_cast<const HandState *>(message));", switch=OPERAND),
              ("hands",), robots=DEX3_ROBOTS),
     Mutation("dex3_state_without_hands", "the body's state counts as complete before both hands have reported",
-             TokenEdit(UNITREE_DEX3, "return complete;", "return true || complete;"),
+             TokenEdit(UNITREE_DEX3, "return complete;", "return true || complete;", switch=OPERAND),
              ("hands",), robots=DEX3_ROBOTS),
     Mutation("take_control_after_commands", "the driver starts commanding before it has taken control",
              TokenEdit(AGIBOT_TOPICS, "if (!control_.take(executor_, core_->logger())) { return false; }",
                        "executor_.start(core_->parameters().command_writer_period_us, core_->logger(), "
                        "core_->on_write_writer(), [this]() {write_command();}); "
                        "std::this_thread::sleep_for(std::chrono::milliseconds(20)); "
-                       "executor_.stop(); if (!control_.take(executor_, core_->logger())) { return false; }"),
+                       "executor_.stop(); if (!control_.take(executor_, core_->logger())) { return false; }",
+                       switch=STATEMENTS),
              ("take_control",), robots=TAKE_CONTROL_ROBOTS),
     Mutation("take_control_refusal_ignored", "a refused Develop_MC is taken for an accepted one",
              TokenEdit(AGIBOT_SYSTEM_STATE, "if (header.header.code != 0 || header.status.value != "
-                       "aimdk_msgs::msg::CommonState::SUCCESS) {", "if (false) {"),
+                       "aimdk_msgs::msg::CommonState::SUCCESS) {", "if (false) {", switch=OPERAND),
              ("take_control",), robots=TAKE_CONTROL_ROBOTS),
     Mutation("take_control_never_released", "on_deactivate leaves the robot in Develop_MC",
-             TokenEdit(AGIBOT_TOPICS, "control_.release(executor_, core_->logger());", ""),
+             TokenEdit(AGIBOT_TOPICS, "control_.release(executor_, core_->logger());", "", switch=STATEMENTS),
              ("take_control",), robots=TAKE_CONTROL_ROBOTS),
     Mutation("omnihand_hands_swapped", "the left hand's HandStateArray entries feed the right hand's joints and back",
              TokenEdit(AGIBOT_TOPICS, "store(hands.first_slot + i, msg.left_hands[i]); "
                        "store(hands.first_slot + hands.axes + i, msg.right_hands[i]);",
                        "store(hands.first_slot + i, msg.right_hands[i]); "
-                       "store(hands.first_slot + hands.axes + i, msg.left_hands[i]);"),
+                       "store(hands.first_slot + hands.axes + i, msg.left_hands[i]);", switch=STATEMENTS),
              ("hands",), robots=OMNIHAND_ROBOTS),
     Mutation("omnihand_type_unchecked", "a HandStateArray from hands of another type is taken for the OmniHands'",
              TokenEdit(AGIBOT_TOPICS, "if (msg.left_hand_type.value != hands.hand_type || "
-                       "msg.right_hand_type.value != hands.hand_type) {", "if (false) {"),
+                       "msg.right_hand_type.value != hands.hand_type) {", "if (false) {", switch=OPERAND),
              ("hands",), robots=OMNIHAND_ROBOTS),
     Mutation("omnihand_current_as_effort", "the OmniHand's motor current reaches the joints' effort",
-             TokenEdit(AGIBOT_TOPICS, "state.tau[slot] = T{0};", "state.tau[slot] = static_cast<T>(axis.effort);"),
+             TokenEdit(AGIBOT_TOPICS, "state.tau[slot] = T{0};", "state.tau[slot] = static_cast<T>(axis.effort);",
+                       switch=OPERAND),
              ("hands",), robots=OMNIHAND_ROBOTS),
     Mutation("double_buffer", "DataBuffer hands out a slot the producer can overwrite (the seed's double buffer)",
              TokenEdit(DATA_BUFFER, "namespace robot_hardware_interface { $$ }", BROKEN_DOUBLE_BUFFER),
@@ -326,13 +361,17 @@ def mutated_plan(models, mutation: Mutation | None) -> dict[str, str]:
     return plan
 
 
-def render_mutated_package(root: Path, mutation: Mutation | None, robots: tuple[str, ...]) -> RenderedPackage:
-    """tests/support/cpp_build.py: render_test_package, with ``mutation`` applied. robot_data.hpp comes from
+def render_mutated_package(root: Path, mutation: Mutation | None, robots: tuple[str, ...],
+                           schema: Sequence[tuple[TokenEdit, int]] = ()) -> RenderedPackage:
+    """tests/support/cpp_build.py: render_test_package, with ``mutation`` applied (and the
+    ``schema``'s (edit, mutant number) pairs switched in). robot_data.hpp comes from
     the unmodified models and the vendor YAMLs: what the harness expects is what the robot really is."""
     extra = any(label not in ROBOTS for label in robots)  # the harness's test robots
     project = make_test_project(root / "project", extra_robots=extra, only=robots)
     loaded = load_models(project)
     plan = mutated_plan([r.model for r in loaded], mutation)
+    if schema:
+        apply_schema(plan, schema)
     package_dir = root / "generated" / PACKAGE
     for rel, text in plan.items():
         path = package_dir / rel
@@ -352,6 +391,7 @@ class Outcome:
     seconds: float
     skipped: str | None = None   # why this robot was not built (its vendor messages are missing)
     not_applied: str | None = None  # the mutation does not apply as written (MutationError)
+    schema: str = ""      # the mutation schema it ran in (its mutant switched on), "" when built alone
 
 
 def breaks_the_robot(mutation: Mutation) -> bool:
@@ -378,18 +418,118 @@ class RobotSides:
             return self._packages[robots]
 
 
-def _run_one(job, tmp_root: Path, builder, robot_sides: RobotSides) -> list[Outcome]:
+def mutant_number(mutation: Mutation) -> int:
+    """The mutant's switch in a mutation schema (--mutant=N of the harness binary; 0 runs none)."""
+    return MUTATIONS.index(mutation) + 1
+
+
+def switched(mutation: Mutation) -> bool:
+    """Whether ``mutation`` is built into a mutation schema (tests/support/cpp_mutate.py) rather than alone: an
+    edit of the driver that says how it is switched at run time."""
+    change = mutation.change
+    return isinstance(change, TokenEdit) and bool(change.switch) and not mutation.data_buffer \
+        and not breaks_the_robot(mutation)
+
+
+@dataclass(frozen=True)
+class Schema:
+    """One robot's driver with ``mutants`` switched in, built once against ``distro``'s stand-ins."""
+    robot: str
+    distro: str
+    index: int                       # the robot's schemata are numbered (their matches must not overlap)
+    mutants: tuple[Mutation, ...]
+
+    @property
+    def name(self) -> str:
+        return f"schema_{self.robot.replace('/', '_')}_{self.distro}_{self.index}"
+
+
+def plan_schemata(mutations: list[Mutation], root: Path) -> dict[tuple[str, str], Schema]:
+    """{(mutation id, robot): its schema} for the switched ``mutations``: per robot and distro, the mutants in as
+    few schemata as their non-overlapping matches allow."""
+    wanted: dict[tuple[str, str], list[Mutation]] = {}
+    for mutation in mutations:
+        for robot in mutation.robots:
+            wanted.setdefault((robot, mutation.distro), []).append(mutation)
+    plans: dict[str, dict[str, str]] = {}
+    where: dict[tuple[str, str], Schema] = {}
+    for (robot, distro), members in sorted(wanted.items()):
+        if robot not in plans:
+            loaded = load_models(make_test_project(root / robot.replace("/", "_"), extra_robots=robot not in ROBOTS,
+                                                   only=(robot,)))
+            plans[robot] = mutated_plan([r.model for r in loaded], None)
+        edits = [(m.change, mutant_number(m)) for m in members]
+        by_number = {mutant_number(m): m for m in members}
+        for index, group in enumerate(disjoint_groups(plans[robot], edits)):  # type: ignore[arg-type]
+            schema = Schema(robot, distro, index, tuple(by_number[n] for _, n in group))
+            for mutant in schema.mutants:
+                where[(mutant.id, robot)] = schema
+    return where
+
+
+class SchemaPackages:
+    """Each schema's package, rendered once (its mutants' jobs share it, and the builder compiles it once)."""
+
+    def __init__(self, root: Path) -> None:
+        self._root = root
+        self._lock = threading.Lock()
+        self._packages: dict[Schema, RenderedPackage] = {}
+
+    def package(self, schema: Schema) -> RenderedPackage:
+        with self._lock:
+            if schema not in self._packages:
+                self._packages[schema] = render_schema_package(self._root / schema.name, schema)
+            return self._packages[schema]
+
+
+def render_schema_package(root: Path, schema: Schema) -> RenderedPackage:
+    """render_mutated_package for a schema: the robot's package with every mutant of ``schema`` switched in."""
+    return render_mutated_package(root, None, (schema.robot,),
+                                  [(m.change, mutant_number(m)) for m in schema.mutants])  # type: ignore[misc]
+
+
+@dataclass(frozen=True)
+class Plan:
+    """Where the fixture's jobs build: the unmutated robots, and the schemata of the switched mutants."""
+    robot_sides: RobotSides
+    schemata: dict[tuple[str, str], Schema]
+    packages: SchemaPackages
+
+
+def _run_schema_mutant(mutation: Mutation | None, schema: Schema, builder, plan: Plan) -> Outcome:
+    """``mutation`` switched on in ``schema``'s harness binary (None: every switch off, the schema's control)."""
+    start = time.monotonic()
+    package = plan.packages.package(schema)
+    link, _ = build_harness(builder, package.build(schema.robot), "plain", schema.distro,
+                            plan.robot_sides.package((schema.robot,)).build(schema.robot))
+    mutant = [f"--mutant={mutant_number(mutation)}"] if mutation else []
+    run = run_binary(link.path, [f"--threads-ms={THREADS_MS}", *mutant], timeout=120) if link.ok else None
+    return Outcome(mutation, schema.robot, link.ok, link.stderr, run, time.monotonic() - start, schema=schema.name)
+
+
+def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome]:
+    if isinstance(job, Schema):
+        return [_run_schema_mutant(None, job, builder, plan)]
     mutation: Mutation | None = job
     name = mutation.id if mutation else "control"
     root = tmp_root / name
     start = time.monotonic()
     robots = mutation.robots if mutation else CONTROL_ROBOTS
+    if mutation is not None and switched(mutation):
+        outcomes = []
+        for label in robots:
+            reason = vendor_msgs.skip_reason(plan.robot_sides.package((label,)).build(label).model.transport)
+            if reason:
+                outcomes.append(Outcome(mutation, label, False, "", None, 0.0, skipped=reason))
+                continue
+            outcomes.append(_run_schema_mutant(mutation, plan.schemata[(mutation.id, label)], builder, plan))
+        return outcomes
     try:
         package = render_mutated_package(root, mutation, robots or ROBOTS[:1])
     except MutationError as err:  # this mutation's test fails with the message; the others run
         return [Outcome(mutation, "-", False, "", None, time.monotonic() - start, not_applied=str(err))]
     robot_side = package if mutation is None or breaks_the_robot(mutation) or not robots else \
-        robot_sides.package(robots)
+        plan.robot_sides.package(robots)
     outcomes = []
     if mutation is None or mutation.data_buffer:
         link = compile_data_buffer_stress(builder, package.package_dir, "plain")
@@ -409,19 +549,25 @@ def _run_one(job, tmp_root: Path, builder, robot_sides: RobotSides) -> list[Outc
 
 @pytest.fixture(scope="module")
 def outcomes(tmp_path_factory, request):
-    """The control (None) and the mutations the session's selected tests name (all of them in a whole run)."""
+    """The control (None), the mutations the session's selected tests name (all of them in a whole run) and the
+    control of each schema they are switched into (its name)."""
     builder = session_builder(tmp_path_factory)
     tmp_root = tmp_path_factory.mktemp("mutations")
-    jobs = selected.keep([None, *MUTATIONS], selected.values(request, "mutation", unparametrized=None))
-
-    robot_sides = RobotSides(tmp_root / "robot_sides")
+    chosen = selected.keep([None, *MUTATIONS], selected.values(request, "mutation", unparametrized=None))
+    try:
+        schemata = plan_schemata([m for m in chosen if m is not None and switched(m)], tmp_root / "plan")
+    except MutationError as err:
+        pytest.fail(f"the mutation schemata cannot be planned: {err}")
+    plan = Plan(RobotSides(tmp_root / "robot_sides"), schemata, SchemaPackages(tmp_root / "schemata"))
+    # the schemata's controls first: each builds its schema, which its mutants' jobs then wait for
+    jobs = [*sorted(set(schemata.values()), key=lambda s: s.name), *chosen]
 
     def run_one(job):  # each job records what it read of ../shared (the X2's mutations), not the whole fixture
         with shared_use.recording() as used:
-            return _run_one(job, tmp_root, builder, robot_sides), set(used)
+            return _run_one(job, tmp_root, builder, plan), set(used)
 
     results = run_parallel(jobs, run_one, OVERLAP_WORKERS)  # runs overlap the compiles (cpp_build.py)
-    return shared_use.Recorded({(job.id if job else "control"): result
+    return shared_use.Recorded({(job.name if isinstance(job, Schema) else job.id if job else "control"): result
                                 for job, result in zip(jobs, results, strict=True)})
 
 
@@ -440,6 +586,17 @@ def test_control_unmodified_package_passes(outcomes):
         assert o.built, f"control {o.robot} does not build:\n{o.build_error[:4000]}"
         assert o.run is not None
         assert o.run.returncode == 0 and o.run.failed == 0, f"control {o.robot}: {o.run.describe()}"
+
+
+def test_every_schema_passes_with_its_mutants_off(outcomes):
+    """A schema with every switch off is the robot as generated: it builds, and every check passes."""
+    schemata = [name for name in outcomes if name.startswith("schema_")]
+    assert bool(schemata) == any(switched(m) and m.id in outcomes for m in MUTATIONS), schemata
+    for name in schemata:
+        for o in _built(outcomes[name]):
+            assert o.built, f"{name} does not build:\n{o.build_error[:4000]}"
+            assert o.run is not None
+            assert o.run.returncode == 0 and o.run.failed == 0, f"{name}, every mutant off: {o.run.describe()}"
 
 
 @pytest.mark.parametrize("mutation", MUTATIONS, ids=[m.id for m in MUTATIONS])
@@ -490,3 +647,15 @@ def test_every_mutation_applies_and_changes_the_code(tmp_path):
 def _code(path: str, text: str):
     """What a change of the file must change: C++ tokens, or the text of any other file."""
     return [(t.kind, t.text) for t in tokenize(text)] if path.endswith((".hpp", ".cpp")) else text
+
+
+def test_every_schema_switches_each_of_its_mutants(tmp_path):
+    """Without a compiler: the switched mutations fall into schemata (per robot and distro, matches apart), and
+    each schema's package asks for each of its mutants where its edit matches, as often as it matches."""
+    schemata = plan_schemata([m for m in MUTATIONS if switched(m)], tmp_path / "plan")
+    assert {(m.id, robot) for m in MUTATIONS if switched(m) for robot in m.robots} == set(schemata)
+    for schema in sorted(set(schemata.values()), key=lambda s: s.name):
+        plan = render_schema_package(tmp_path / schema.name, schema)
+        for mutant in schema.mutants:
+            text = (plan.package_dir / mutant.change.file).read_text(encoding="utf-8")
+            assert text.count(f"rhi_mutant_on({mutant_number(mutant)})") == mutant.change.count, (schema, mutant.id)

@@ -20,6 +20,7 @@ the pattern matches ("any expression", "any statement list").
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -208,11 +209,13 @@ def code_of(text: str) -> str:
 @dataclass(frozen=True)
 class TokenEdit:
     """Replace ``pattern`` (exactly ``count`` matches) by ``replacement`` in the generated file ``file``
-    (its path in the package, e.g. include/robot_hardware_interface/common/driver_core.hpp)."""
+    (its path in the package, e.g. include/robot_hardware_interface/common/driver_core.hpp). ``switch``: how a
+    mutation schema switches it at run time ("statements" or "operand", see SWITCH_FORMS); "" builds it alone."""
     file: str
     pattern: str
     replacement: str
     count: int = 1
+    switch: str = ""
 
     def apply_to_plan(self, plan: dict[str, str], label: str = "") -> None:
         where = f"{self.file}" + (f" ({label})" if label else "")
@@ -238,3 +241,114 @@ class SwapSlots:
         joints = tuple(dataclasses.replace(j, index=swap[j.index]) if j.index in swap else j
                        for j in model.joints)
         return dataclasses.replace(model, joints=joints)
+
+
+# ------------------------------------------------------------------------------------ mutation schemata
+# Many TokenEdits of one robot compiled into one driver, each switched on at run time (a mutation schema,
+# Untch et al. 1993): the harness binary is built once and run once per mutant (--mutant=N), instead of one
+# driver build per mutant. With every switch off the code does what the unmutated code does; with switch N on,
+# what TokenEdit N's code does. A TokenEdit says how it is switched (``switch``):
+# - "statements": the match and the replacement are whole statements (declaring nothing used after them);
+#   switched as ``if (on(N)) { replacement } else { match }``;
+# - "operand": after the tokens both begin and end with, what is left of each is one expression in the same
+#   place (an operand, an argument, a condition, an initializer); switched as ``(on(N) ? (new) : (old))``.
+# A constant expression cannot be switched at run time: such an edit (and SwapSlots) is built on its own.
+SWITCH_FORMS = ("statements", "operand")
+SWITCH_FUNCTION = "rhi_mutant_on"
+SWITCH_DECLARATION = (f'extern "C" bool {SWITCH_FUNCTION}(int mutant) noexcept;  '
+                      "// a mutation schema's switch (tests/support/cpp_mutate.py)\n")
+
+
+def _balanced(tokens: Sequence[Token]) -> bool:
+    stack: list[str] = []
+    for t in tokens:
+        if t.kind != "punct":
+            continue
+        if t.text in _OPEN:
+            stack.append(_OPEN[t.text])
+        elif t.text in _CLOSE and (not stack or stack.pop() != t.text):
+            return False
+    return not stack
+
+
+def operand_split(old: Sequence[Token], new: Sequence[Token]) -> tuple[int, int]:
+    """(leading, trailing): how many tokens ``old`` and ``new`` share at their start and end such that what is
+    left of each is non-empty and balanced; the longest shared start first, then the longest shared end."""
+    def shared(a: Sequence[Token], b: Sequence[Token]) -> int:
+        n = 0
+        while n < min(len(a), len(b)) and _same(a[n], b[n]):
+            n += 1
+        return n
+
+    for lead in range(shared(old, new), -1, -1):
+        rest_old, rest_new = old[lead:], new[lead:]
+        for trail in range(shared(rest_old[::-1], rest_new[::-1]), -1, -1):
+            mid_old, mid_new = rest_old[:len(rest_old) - trail], rest_new[:len(rest_new) - trail]
+            if mid_old and mid_new and _balanced(mid_old) and _balanced(mid_new):
+                return lead, trail
+    raise MutationError("no operand: the match and the replacement share no balanced frame")
+
+
+def _switched_text(edit: TokenEdit, number: int, text: str, start: int, end: int) -> str:
+    """The switched form of ``edit``'s match text[start:end] (see SWITCH_FORMS)."""
+    on = f"::{SWITCH_FUNCTION}({number})"
+    old = text[start:end]
+    if edit.switch == "statements":
+        if not tokenize(edit.replacement):
+            return f"if (!{on}) {{ {old} }}"
+        return f"if ({on}) {{ {edit.replacement} }} else {{ {old} }}"
+    old_tokens, new_tokens = tokenize(old), tokenize(edit.replacement)
+    lead, trail = operand_split(old_tokens, new_tokens)
+    o0, o1 = old_tokens[lead].start, old_tokens[len(old_tokens) - trail - 1].end
+    n0, n1 = new_tokens[lead].start, new_tokens[len(new_tokens) - trail - 1].end
+    return f"{old[:o0]}({on} ? ({edit.replacement[n0:n1]}) : ({old[o0:o1]})){old[o1:]}"
+
+
+def edit_spans(edit: TokenEdit, plan: dict[str, str], label: str = "") -> list[tuple[int, int]]:
+    """The character spans of ``edit``'s matches in its file (exactly ``count``: otherwise MutationError)."""
+    where = f"{edit.file}" + (f" ({label})" if label else "")
+    if edit.file not in plan:
+        raise MutationError(f"{where}: the package has no such file")
+    spans = _find(_pattern_tokens(edit.pattern), tokenize(plan[edit.file]))
+    if len(spans) != edit.count:
+        raise MutationError(f"pattern matched {len(spans)} times in {where}, expected {edit.count}: "
+                            f"{edit.pattern!r}; update the mutation")
+    return spans
+
+
+def apply_schema(plan: dict[str, str], edits: Sequence[tuple[TokenEdit, int]]) -> None:
+    """Every (edit, number) of ``edits`` switched into ``plan`` at once; their matches must not overlap
+    (MutationError otherwise: put them in different schemata, see ``disjoint_groups``)."""
+    by_file: dict[str, list[tuple[int, int, TokenEdit, int]]] = {}
+    for edit, number in edits:
+        if edit.switch not in SWITCH_FORMS:
+            raise MutationError(f"{edit.file}: {edit.pattern!r} is not switchable (switch={edit.switch!r})")
+        for start, end in edit_spans(edit, plan, f"mutant {number}"):
+            by_file.setdefault(edit.file, []).append((start, end, edit, number))
+    for file, spans in by_file.items():
+        text = plan[file]
+        spans.sort(key=lambda s: s[0])
+        for (_, end, _, a), (start, _, _, b) in itertools.pairwise(spans):
+            if start < end:
+                raise MutationError(f"{file}: the matches of mutants {a} and {b} overlap")
+        out, last = [SWITCH_DECLARATION], 0
+        for start, end, edit, number in spans:
+            out += [text[last:start], _switched_text(edit, number, text, start, end)]
+            last = end
+        out.append(text[last:])
+        plan[file] = "".join(out)
+
+
+def disjoint_groups(plan: dict[str, str], edits: Sequence[tuple[TokenEdit, int]]) -> list[list[tuple[TokenEdit, int]]]:
+    """``edits`` in as few groups as greedily found whose matches do not overlap (each group: one schema)."""
+    groups: list[tuple[list[tuple[TokenEdit, int]], list[tuple[str, int, int]]]] = []
+    for edit, number in edits:
+        spans = [(edit.file, s, e) for s, e in edit_spans(edit, plan, f"mutant {number}")]
+        for members, taken in groups:
+            if not any(f == g and s < e2 and s2 < e for f, s, e in spans for g, s2, e2 in taken):
+                members.append((edit, number))
+                taken.extend(spans)
+                break
+        else:
+            groups.append(([(edit, number)], spans))
+    return [members for members, _ in groups]

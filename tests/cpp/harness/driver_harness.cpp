@@ -2799,6 +2799,12 @@ void test_unfilled_refuses_activation() {
 
 static bool selected(const std::string& only, const char* name) { return only.empty() || in_list(only, name); }
 
+// A mutation schema's switch (tests/support/cpp_mutate.py): a driver built from a schema asks it whether its
+// mutant N is on; --mutant=N turns that one on, none is by default. Set before any driver thread starts.
+static int g_mutant = 0;
+extern "C" bool rhi_mutant_on(int mutant) noexcept;
+extern "C" bool rhi_mutant_on(int mutant) noexcept { return mutant == g_mutant; }
+
 int main(int argc, char** argv) {
   int threads_ms = 300;
   std::string only;
@@ -2810,6 +2816,9 @@ int main(int argc, char** argv) {
       threads_ms = std::atoi(argv[i] + 13);
     } else if (std::strncmp(argv[i], "--only=", 7) == 0) {
       only = argv[i] + 7;
+    } else if (std::strncmp(argv[i], "--mutant=", 9) == 0) {
+      g_mutant = std::atoi(argv[i] + 9);
+      std::printf("mutant %d switched on\n", g_mutant);
 #if defined(RHI_HARNESS_PHYSICS)
     } else if (std::strncmp(argv[i], "--physics-urdf=", 15) == 0) {
       physics.urdf = argv[i] + 15;

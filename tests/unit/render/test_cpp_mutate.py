@@ -5,7 +5,17 @@ import dataclasses
 
 import pytest
 
-from tests.support.cpp_mutate import MutationError, SwapSlots, TokenEdit, code_of, find, replace, tokenize
+from tests.support.cpp_mutate import (
+    MutationError,
+    SwapSlots,
+    TokenEdit,
+    apply_schema,
+    code_of,
+    disjoint_groups,
+    find,
+    replace,
+    tokenize,
+)
 
 
 def texts(source: str) -> list[str]:
@@ -231,3 +241,57 @@ def test_every_generated_cpp_file_tokenizes_with_balanced_brackets(tmp_path):
             elif token.kind == "punct" and token.text in pairs:
                 assert stack and stack.pop() == pairs[token.text], f"{path}: unbalanced at offset {token.start}"
         assert not stack, f"{path}: unclosed {stack}"
+
+
+# ------------------------------------------------------------------------------------ mutation schemata
+ON = "::rhi_mutant_on"
+
+
+def schema_of(text: str, *edits: TokenEdit) -> str:
+    """``text`` as include/a.hpp with ``edits`` switched in, numbered from 1; the declaration line dropped."""
+    plan = {"include/a.hpp": text}
+    apply_schema(plan, [(edit, n) for n, edit in enumerate(edits, 1)])
+    declaration, rest = plan["include/a.hpp"].split("\n", 1)
+    assert declaration.startswith('extern "C" bool rhi_mutant_on(int mutant) noexcept;')
+    return rest
+
+
+def test_statements_are_switched_whole():
+    deleted = TokenEdit("include/a.hpp", "if (!ready()) { return nullptr; }", "", switch="statements")
+    replaced = TokenEdit("include/a.hpp", "count_.add();", "count_.add(); count_.add();", switch="statements")
+    text = "void f() {\n  if (!ready()) { return nullptr; }\n  count_.add();\n}\n"
+    assert schema_of(text, deleted, replaced) == (
+        "void f() {\n  if (!" + ON + "(1)) { if (!ready()) { return nullptr; } }\n"
+        "  if (" + ON + "(2)) { count_.add(); count_.add(); } else { count_.add(); }\n}\n")
+
+
+def test_an_operand_is_what_the_match_and_replacement_do_not_share():
+    def switched(pattern: str, replacement: str, text: str) -> str:
+        return schema_of(text, TokenEdit("include/a.hpp", pattern, replacement, switch="operand"))
+
+    # the shared start and end stay; what differs is switched as an expression
+    assert switched("if (facts.estop) {", "if (false) {", "if (facts.estop) {}") == \
+        f"if (({ON}(1) ? (false) : (facts.estop))) {{}}"
+    assert switched("x % d", "x % (d + 1)", "y = x % d;") == f"y = x % ({ON}(1) ? ((d + 1)) : (d));"
+    # a shared end that would leave one side empty or unbalanced is not shared
+    assert switched("a != g) {", "a != 0 * g) {", "if (a != g) {}") == f"if (a != ({ON}(1) ? (0 * g) : (g))) {{}}"
+    assert switched("s(min(1.0, r))", "s(1.0 + r)", "s(min(1.0, r))") == f"s(({ON}(1) ? (1.0 + r) : (min(1.0, r))))"
+    assert switched("c ? a : 0.0", "0.0", "v = c ? a : 0.0;") == f"v = ({ON}(1) ? (0.0) : (c ? a : 0.0));"
+
+
+def test_overlapping_mutants_are_refused_and_grouped_apart():
+    text = "void f() { if (valid) { fresh(); } }"
+    whole = TokenEdit("include/a.hpp", "if (valid) { fresh(); }", "", switch="statements")
+    condition = TokenEdit("include/a.hpp", "if (valid)", "if (true)", switch="operand")
+    other = TokenEdit("include/a.hpp", "void f()", "void g()", switch="operand")
+    with pytest.raises(MutationError, match="mutants 1 and 2 overlap"):
+        schema_of(text, whole, condition)
+    groups = disjoint_groups({"include/a.hpp": text}, [(whole, 1), (condition, 2), (other, 3)])
+    assert [[n for _, n in group] for group in groups] == [[1, 3], [2]]
+
+
+def test_an_edit_without_a_switch_is_not_put_in_a_schema():
+    with pytest.raises(MutationError, match="not switchable"):
+        schema_of("int a = 1;", TokenEdit("include/a.hpp", "a = 1", "a = 2"))
+    with pytest.raises(MutationError, match="matched 0 times"):
+        schema_of("int a = 1;", TokenEdit("include/a.hpp", "b = 1", "b = 2", switch="operand"))

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import fresh_clone_selection, shared_use, vendor_msgs
+from tests.support import fresh_clone, fresh_clone_selection, shared_use, vendor_msgs
 from tests.support.cli import cli
 from tests.support.repo import copy_project
 
@@ -52,15 +52,18 @@ def project(robots_project: Path, capsys: pytest.CaptureFixture[str]) -> Path:
     return robots_project
 
 
+@pytest.hookimpl(trylast=True)  # after tests/cpp/conftest.py has marked the C++ tier
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list[pytest.Item]) -> None:
-    """tests/cli/test_fresh_clone.py runs last, so the clone it tests reuses every object the session
-    compiled (its RHI_CPP_CACHE) and knows which tests read ../shared. In that clone, the selection the
-    outer session passes on (tests/support/fresh_clone_selection.py) deselects the rest."""
+    """tests/cli/test_fresh_clone.py runs last, so it knows which tests read ../shared, and its clone reuses
+    every object the session compiled (its RHI_CPP_CACHE). A whole-suite session starts that clone now, running
+    the quick tier and the benchmark in the background (tests/support/fresh_clone.py). In the clone, the
+    selection the outer session passes on (tests/support/fresh_clone_selection.py) deselects the rest."""
     last = [item for item in items if item.nodeid.split("::")[0].endswith("test_fresh_clone.py")]
     items[:] = [item for item in items if item not in last] + last
     dropped = fresh_clone_selection.apply(items)
     if dropped:
         config.hook.pytest_deselected(items=dropped)
+    fresh_clone.start_early(session, items)
 
 
 # ------------------------------------------------------------------------ reads of ../shared (shared_use.py)

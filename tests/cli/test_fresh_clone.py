@@ -10,55 +10,51 @@ the README's own commands, parsed from README.md so the test runs them word for 
 * "Benchmarks": the command with `--robot g1 --robot pm01` measures both; with `--robot x2` it says in
   one line that it skipped X2 and why (no raw compiler error).
 
-What the clone runs: when this session ran the whole suite, it knows which tests read ../shared
+What the clone runs: when this session runs the whole suite, it records which tests read ../shared
 (tests/support/shared_use.py records every open, listing, stat and compiler argument under it, through
 fixtures and cached values too), and the clone runs exactly those, the whole quick tier (no compiler: the
 CLI, the install it runs from, the gates) and any test this session did not run
-(tests/support/fresh_clone_selection.py, passed in RHI_FRESH_CLONE_SELECT; the README command is still run
-word for word). The rest of the C++ tier would compile the clone's files, the session's byte for byte, into
-the same objects and run them again. Run alone (or with -k, -m, paths), this file runs the whole suite in
-the clone. The skip count above checks the record: a test that skips in the clone but did not read
-../shared here would be missing from the clone's run, and the count would fall short.
+(tests/support/fresh_clone_selection.py, passed in RHI_FRESH_CLONE_SELECT). The rest of the C++ tier would
+compile the clone's files, the session's byte for byte, into the same objects and run them again. The skip
+count above checks the record: a test that skips in the clone but did not read ../shared here would be
+missing from the clone's run, and the count would fall short. Run alone (or with -k, -m, paths), this file
+runs the whole suite in the clone.
 
-Cost: this runs last in the session (tests/conftest.py) and passes the session's compiled-object cache
-to the clone (RHI_CPP_CACHE: object keys hold contents, never paths, so the clone's compiles are cache
-hits); pip installs from its own cache. The clone tests HEAD: commit first when running this on a
-working tree with changes.
+Cost: in a whole-suite session the clone is made when collection ends, and runs the README's test command
+with the quick tier, then the benchmark, in the background while the session runs (tests/support/
+fresh_clone.py); these tests wait for it, then run the C++ tests that read ../shared in the same clone
+(`.venv/bin/python -m pytest`, the command's last step, again) with the session's compiled-object cache
+(RHI_CPP_CACHE: object keys hold contents, never paths, so they are cache hits). The clone tests HEAD as it
+was when the session started: commit first when running this on a working tree with changes.
 """
 from __future__ import annotations
 
 import json
-import os
 import re
-import shutil
-import subprocess
-import time
+import tempfile
 from pathlib import Path
 
 import pytest
 
 from tests.support import cpp_build, fresh_clone_selection, vendor_msgs
+from tests.support.fresh_clone import (
+    BENCHMARK,
+    BENCHMARK_ARGS,
+    BENCHMARK_X2,
+    EARLY,
+    INNER,
+    OWN_FILE,
+    SHARED_CPP,
+    TESTS,
+    FreshClone,
+    benchmark_command,
+    can_clone,
+    readme_test_command,
+)
 from tests.support.repo import REPO
 
 pytestmark = pytest.mark.cpp  # it runs the whole suite, compiles included, in the clone
 
-INNER = "RHI_FRESH_CLONE_INNER"
-# What a user's machine does not have: the project's shared vendor data and this session's own settings.
-DROPPED_ENV = ("RHI_UPSTREAM", "RHI_UPSTREAM_MSGS", "VIRTUAL_ENV", "PYTEST_ADDOPTS", "PYTEST_CURRENT_TEST",
-               "PYTHONPATH")
-TIMEOUT = 3600
-
-
-def readme_block(heading: str) -> str:
-    """The first ```sh block of README.md's section ``heading``."""
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    section = text.split(f"\n## {heading}\n", 1)[1].split("\n## ", 1)[0]
-    match = re.search(r"```sh\n(.*?)```", section, re.S)
-    assert match, f"README.md, {heading!r}: no ```sh block"
-    return match[1].strip()
-
-
-# In the inner run both tests of this file skip (the clone must not clone itself again).
 INNER_SELF_SKIPS = 2
 
 
@@ -70,29 +66,25 @@ def readme_skip_count() -> int:
 
 
 @pytest.fixture(scope="module")
-def clone(tmp_path_factory, request):
-    if os.environ.get(INNER):
-        pytest.skip(f"inner run of tests/cli/test_fresh_clone.py ({INNER} is set): a fresh clone does not clone "
-                    "itself again")
-    if not (REPO / ".git").exists() or shutil.which("git") is None:
-        pytest.skip("not a git checkout (or no git): nothing to clone")
-    root = tmp_path_factory.mktemp("fresh")
-    dest = root / "clone"                      # root holds nothing else: no ../shared beside the clone
-    subprocess.run(["git", "clone", "--quiet", str(REPO), str(dest)], check=True, capture_output=True)
-    assert not (dest.parent / "shared").exists()
-    env = {k: v for k, v in os.environ.items() if k not in DROPPED_ENV}
-    env[INNER] = "1"
-    env["TMPDIR"] = str(root / "tmp")          # the inner pytest's basetemp, away from this session's
-    (root / "tmp").mkdir()
-    # The session's object cache (the same content gives the same key in any folder).
-    env["RHI_CPP_CACHE"] = str(os.environ.get("RHI_CPP_CACHE") or
-                               cpp_build.session_builder(tmp_path_factory).cache_dir)
-    if fresh_clone_selection.whole_suite(request.config):
-        # this session ran every test and knows which read ../shared: the clone runs those and the quick tier
-        chosen = fresh_clone_selection.selection(request.session.items, request.node.nodeid.split("::")[0])
-        fresh_clone_selection.write(root / "selection.json", chosen)
-        env[fresh_clone_selection.ENV] = str(root / "selection.json")
-    return dest, env
+def clone(request, tmp_path_factory) -> FreshClone:
+    """The clone this session started when collection ended, running the quick tier and the benchmark
+    (tests/support/fresh_clone.py); run without the whole suite, a new one running the whole suite."""
+    reason = can_clone()
+    if reason:
+        pytest.skip(reason)
+    early = request.config.stash.get(EARLY, None)
+    if early is not None:
+        return early
+    made = FreshClone(tmp_path_factory.mktemp("fresh"))
+    made.env["RHI_CPP_CACHE"] = str(session_cache(tmp_path_factory))
+    made.start([(TESTS, readme_test_command(), {}), (BENCHMARK, f"{benchmark_command()} {BENCHMARK_ARGS}", {}),
+                (BENCHMARK_X2, f"{benchmark_command()} --robot x2", {})])
+    return made
+
+
+def session_cache(tmp_path_factory) -> Path:
+    """The session's object cache (the same content gives the same key in any folder)."""
+    return cpp_build.session_builder(tmp_path_factory).cache_dir
 
 
 def slowest(stdout: str, count: int) -> list[str]:
@@ -100,12 +92,6 @@ def slowest(stdout: str, count: int) -> list[str]:
     lines = stdout.splitlines()
     start = next((i for i, line in enumerate(lines) if "slowest" in line and "durations" in line), None)
     return [] if start is None else [line for line in lines[start + 1:start + 1 + count] if line.strip()]
-
-
-def run(cmd: str, cwd: Path, env: dict[str, str]) -> tuple[subprocess.CompletedProcess, float]:
-    start = time.monotonic()
-    proc = subprocess.run(["bash", "-c", cmd], cwd=cwd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
-    return proc, time.monotonic() - start
 
 
 # What the record must have found in a whole-suite session (with ../shared beside it), and what not.
@@ -118,51 +104,67 @@ READS_NOTHING_SHARED = ("tests/cpp/test_cpp_drivers.py::test_driver_against_simu
                         "tests/cpp/test_cpp_gtest_compiles.py::test_gtest_runs_against_the_standin[engineai/pm01-humble]")
 
 
-def test_readme_test_command_passes_in_a_fresh_clone(clone, report):
-    dest, env = clone
-    if fresh_clone_selection.ENV in env and vendor_msgs.UPSTREAM.is_dir():
-        chosen = json.loads(Path(env[fresh_clone_selection.ENV]).read_text(encoding="utf-8"))
-        run_ids = set(chosen["run"])
-        assert set(READS_SHARED) <= run_ids, f"not recorded as reading ../shared: {set(READS_SHARED) - run_ids}"
-        assert not set(READS_NOTHING_SHARED) & run_ids, \
-            f"recorded as reading ../shared: {set(READS_NOTHING_SHARED) & run_ids}"
-    command = readme_block("Run the tests")
-    proc, seconds = run(command, dest, env)
+def check_phase(clone: FreshClone, name: str, report) -> str:
+    """The pytest summary line of ``name``, a run of the README's test command (or its last step) that passed."""
+    result = clone.result(name)
+    assert result is not None, f"the fresh clone did not run {name}"
+    proc, seconds = result
     tail = proc.stdout[-6000:] + proc.stderr[-3000:]
-    report(f"fresh clone: `{command}` took {seconds:.0f} s")
-    assert proc.returncode == 0, f"exit {proc.returncode} after {seconds:.0f} s:\n{tail}"
+    report(f"fresh clone, {name}: `{proc.args[-1]}` took {seconds:.0f} s")
+    assert proc.returncode == 0, f"{name}: exit {proc.returncode} after {seconds:.0f} s:\n{tail}"
     summary = proc.stdout.strip().splitlines()[-1]
-    report(f"fresh clone: {summary}")
+    report(f"fresh clone, {name}: {summary}")
     for line in slowest(proc.stdout, 8):
-        report(f"fresh clone, slowest: {line}")
-    if fresh_clone_selection.ENV in env:
-        chosen = json.loads(Path(env[fresh_clone_selection.ENV]).read_text(encoding="utf-8"))
-        report(f"fresh clone: ran {len(chosen['run'])} of this session's {len(chosen['outer'])} tests (every test "
-               "that read ../shared, and the quick tier) and this file's own two")
-    skipped = int(m[1]) if (m := re.search(r"(\d+) skipped", summary)) else 0
-    assert skipped == readme_skip_count() + INNER_SELF_SKIPS, (
-        f"README says {readme_skip_count()} tests skip without the AimDK message definitions "
-        f"(+{INNER_SELF_SKIPS}: the inner copies of this file's tests); the clone skipped {skipped}:\n"
-        + "\n".join(line for line in proc.stdout.splitlines() if line.startswith("SKIPPED")))
+        report(f"fresh clone, {name}, slowest: {line}")
     reasons = [line for line in proc.stdout.splitlines() if line.startswith("SKIPPED")]
     allowed = ("aimdk_msgs", "upstream URDF", "upstream is missing", INNER)
     assert all(any(a in line for a in allowed) for line in reasons), "\n".join(reasons)
+    return summary
+
+
+def test_readme_test_command_passes_in_a_fresh_clone(clone, request, tmp_path_factory, report):
+    summaries = [check_phase(clone, TESTS, report)]  # the README's command word for word
+    if clone.quick_selection is not None:
+        # The session ran the rest: the C++ tests that read ../shared run in the clone now, by the command's last
+        # step (its install is done), with the session's objects.
+        chosen = fresh_clone_selection.shared_cpp(request.session.items, OWN_FILE)
+        if vendor_msgs.UPSTREAM.is_dir():
+            run_ids = set(chosen["run"])
+            assert set(READS_SHARED) <= run_ids, f"not recorded as reading ../shared: {set(READS_SHARED) - run_ids}"
+            assert not set(READS_NOTHING_SHARED) & run_ids, \
+                f"recorded as reading ../shared: {set(READS_NOTHING_SHARED) & run_ids}"
+        where = Path(tempfile.mkdtemp(dir=clone.root)) / "shared_cpp.json"
+        fresh_clone_selection.write(where, chosen)
+        quick = json.loads(clone.quick_selection.read_text(encoding="utf-8"))
+        report(f"fresh clone: ran {len(quick['run']) + len(chosen['run'])} of this session's {len(chosen['outer'])} "
+               f"tests (the quick tier, {len(quick['run'])}, while the session ran; then every C++ test that read "
+               f"../shared, {len(chosen['run'])}) and, in each run, this file's own two")
+        clone.run(SHARED_CPP, readme_test_command().rsplit("&&", 1)[1].strip(),
+                  {fresh_clone_selection.ENV: str(where), "RHI_CPP_CACHE": str(session_cache(tmp_path_factory))})
+        summaries.append(check_phase(clone, SHARED_CPP, report))
+    skipped = sum(int(m[1]) if (m := re.search(r"(\d+) skipped", summary)) else 0 for summary in summaries)
+    expected = readme_skip_count() + INNER_SELF_SKIPS * len(summaries)
+    assert skipped == expected, (
+        f"README says {readme_skip_count()} tests skip without the AimDK message definitions "
+        f"(+{INNER_SELF_SKIPS} in each of the clone's {len(summaries)} pytest runs: the inner copies of this "
+        f"file's tests); the clone skipped {skipped}")
 
 
 def test_readme_benchmark_runs_in_a_fresh_clone(clone, report):
-    dest, env = clone
-    if not (dest / ".venv" / "bin" / "python").is_file():
+    if not (clone.dest / ".venv" / "bin" / "python").is_file():
         pytest.fail("the README's test command did not create .venv (see the test above)")
-    command = readme_block("Benchmarks").split("#", 1)[0].strip()
-    # One distro keeps this test's cost where it was; jazzy runs every path (framework-owned handles).
-    proc, seconds = run(f"{command} --robot g1 --robot pm01 --distro jazzy", dest, env)
+    result = clone.result(BENCHMARK)
+    assert result is not None
+    proc, seconds = result
     report(f"fresh clone: benchmark (g1, pm01 on jazzy) took {seconds:.0f} s")
     assert proc.returncode == 0, f"exit {proc.returncode}:\n{proc.stdout[-4000:]}\n{proc.stderr[-4000:]}"
     assert "== unitree/g1 on jazzy" in proc.stdout and "== engineai/pm01 on jazzy" in proc.stdout, proc.stdout[-4000:]
     assert "readwrite_pos" in proc.stdout and "locks_pos" in proc.stdout, proc.stdout[-4000:]
     assert "skipped" not in proc.stdout, proc.stdout[-4000:]
     # X2's messages are not in the repository: one line says so, no compiler runs.
-    proc, _ = run(f"{command} --robot x2", dest, env)
+    result = clone.result(BENCHMARK_X2)
+    assert result is not None
+    proc, _ = result
     lines = (proc.stdout + proc.stderr).strip().splitlines()
     assert proc.returncode != 0 and lines[0].startswith("skipped agibot/x2: agibot_topics needs vendor messages"), lines
     assert "RHI_UPSTREAM" in lines[0] and "error:" not in proc.stderr, lines

@@ -657,5 +657,6 @@ def test_every_schema_switches_each_of_its_mutants(tmp_path):
     for schema in sorted(set(schemata.values()), key=lambda s: s.name):
         plan = render_schema_package(tmp_path / schema.name, schema)
         for mutant in schema.mutants:
+            assert isinstance(mutant.change, TokenEdit)
             text = (plan.package_dir / mutant.change.file).read_text(encoding="utf-8")
             assert text.count(f"rhi_mutant_on({mutant_number(mutant)})") == mutant.change.count, (schema, mutant.id)

@@ -3,7 +3,9 @@
 The outer session (the whole suite, ../shared beside it) records which tests read ../shared
 (tests/support/shared_use.py, hooks in tests/conftest.py). The clone runs the README's test command word
 for word; this selection, passed in RHI_FRESH_CLONE_SELECT, deselects there the tests of the C++ tier that
-read nothing of ../shared. It keeps:
+read nothing of ../shared. It comes in two halves (tests/support/fresh_clone.py): the quick tier, known before
+anything ran, which the clone runs while the session's C++ tier does; then the C++ tests that read ../shared,
+known once the session ran them. Together they keep:
 * every test that read ../shared, directly, through a fixture or a cached value (the X2 cases, which skip
   there; the stand-ins' AimDK self-test; the upstream URDF comparisons; the copy check);
 * the whole quick tier (no compiler): the CLI and the install it runs from, the gates, in a couple of minutes;
@@ -52,14 +54,21 @@ def reads_shared(nodeid: str) -> bool:
 def whole_suite(config: pytest.Config) -> bool:
     """The session ran every test (no paths, -k, -m or --deselect): only then is the record complete."""
     return (config.args_source is pytest.Config.ArgsSource.TESTPATHS and not config.option.keyword
-            and not config.option.markexpr and not config.option.deselect and not config.option.lf)
+            and not config.option.markexpr and not config.option.deselect and not getattr(config.option, "lf", False))
 
 
-def selection(items: list[pytest.Item], own_file: str) -> dict[str, list[str]]:
-    """{"run": the node ids the clone runs, "outer": every node id of this session but ``own_file``'s}."""
+def quick_tier(items: list[pytest.Item], own_file: str) -> dict[str, list[str]]:
+    """``selection`` split, first half: the tests without a compiler (known before anything ran)."""
+    outer = [i.nodeid for i in items if not i.nodeid.startswith(own_file)]
+    run = [i.nodeid for i in items if not i.nodeid.startswith(own_file) and i.get_closest_marker("cpp") is None]
+    return {"run": run, "outer": outer}
+
+
+def shared_cpp(items: list[pytest.Item], own_file: str) -> dict[str, list[str]]:
+    """``selection`` split, second half: the C++ tests that read ../shared (known once they ran)."""
     outer = [i.nodeid for i in items if not i.nodeid.startswith(own_file)]
     run = [i.nodeid for i in items if not i.nodeid.startswith(own_file)
-           and (i.get_closest_marker("cpp") is None or reads_shared(i.nodeid))]
+           and i.get_closest_marker("cpp") is not None and reads_shared(i.nodeid)]
     return {"run": run, "outer": outer}
 
 

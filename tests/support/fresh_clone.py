@@ -1,0 +1,157 @@
+"""A fresh clone of the repository's HEAD with nothing beside it, and the README's commands run in it.
+
+tests/cli/test_fresh_clone.py checks what they do. In a whole-suite session the clone starts when collection
+ends (tests/conftest.py: ``start_early``), in a thread of its own, and runs the quick tier (the README's test
+command word for word, its selection the tests without a compiler) and the benchmark while the session's C++
+tier keeps the other core busy; at the end, the test runs the C++ tests that read ../shared in the same
+clone (only the session knows those by then) and checks both phases. The clone's pytest is a process of its
+own: its tests read and write only the clone and its temporary folder.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import subprocess
+import tempfile
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+
+from tests.support import fresh_clone_selection
+from tests.support.repo import REPO
+
+OWN_FILE = "tests/cli/test_fresh_clone.py"
+INNER = "RHI_FRESH_CLONE_INNER"
+# What a user's machine does not have: the project's shared vendor data and this session's own settings.
+DROPPED_ENV = ("RHI_UPSTREAM", "RHI_UPSTREAM_MSGS", "VIRTUAL_ENV", "PYTEST_ADDOPTS", "PYTEST_CURRENT_TEST",
+               "PYTHONPATH")
+TIMEOUT = 3600
+EARLY = pytest.StashKey["FreshClone"]()
+
+
+def readme_block(heading: str) -> str:
+    """The first ```sh block of README.md's section ``heading``."""
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    section = text.split(f"\n## {heading}\n", 1)[1].split("\n## ", 1)[0]
+    match = re.search(r"```sh\n(.*?)```", section, re.S)
+    assert match, f"README.md, {heading!r}: no ```sh block"
+    return match[1].strip()
+
+
+def readme_test_command() -> str:
+    return readme_block("Run the tests")
+
+
+def benchmark_command() -> str:
+    return readme_block("Benchmarks").split("#", 1)[0].strip()
+
+
+def can_clone() -> str:
+    """Why no clone can be made here ("" when one can)."""
+    if os.environ.get(INNER):
+        return (f"inner run of {OWN_FILE} ({INNER} is set): a fresh clone does not clone itself again")
+    if not (REPO / ".git").exists() or shutil.which("git") is None:
+        return "not a git checkout (or no git): nothing to clone"
+    return ""
+
+
+@dataclass
+class FreshClone:
+    """``root``/clone, cloned from HEAD, and the environment its commands run in (none of this session's)."""
+    root: Path
+    dest: Path = field(init=False)
+    env: dict[str, str] = field(init=False)
+    quick_selection: Path | None = None   # started early: the quick tier's selection (else the whole suite)
+    _results: dict[str, tuple[subprocess.CompletedProcess, float]] = field(default_factory=dict)
+    _thread: threading.Thread | None = None
+    _running: subprocess.Popen | None = None
+    _stopped: bool = False
+
+    def __post_init__(self) -> None:
+        self.dest = self.root / "clone"            # root holds nothing else: no ../shared beside the clone
+        subprocess.run(["git", "clone", "--quiet", str(REPO), str(self.dest)], check=True, capture_output=True)
+        self.env = {k: v for k, v in os.environ.items() if k not in DROPPED_ENV}
+        self.env[INNER] = "1"
+        self.env["TMPDIR"] = str(self.root / "tmp")  # the inner pytest's basetemp, away from this session's
+        (self.root / "tmp").mkdir()
+
+    def run(self, name: str, cmd: str, extra_env: dict[str, str] | None = None
+            ) -> tuple[subprocess.CompletedProcess, float]:
+        """``cmd`` in the clone (bash), its own process group: ``stop`` ends it with everything it started."""
+        start = time.monotonic()
+        args = ["bash", "-c", cmd]
+        with subprocess.Popen(args, cwd=self.dest, env={**self.env, **(extra_env or {})}, text=True,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True) as proc:
+            self._running = proc
+            try:
+                out, err = proc.communicate(timeout=TIMEOUT)
+            except subprocess.TimeoutExpired:
+                self.stop()
+                out, err = proc.communicate()
+                err += f"\ntimed out after {TIMEOUT} s"
+            finally:
+                self._running = None
+        self._results[name] = (subprocess.CompletedProcess(args, proc.returncode, out, err), time.monotonic() - start)
+        return self._results[name]
+
+    def stop(self) -> None:
+        """End the command running now, if any (the session ends: nothing keeps running after it)."""
+        self._stopped = True
+        proc = self._running
+        if proc is not None and proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+
+    def start(self, steps: list[tuple[str, str, dict[str, str]]]) -> None:
+        """Run ``steps`` ((name, command, extra environment), in order) in a thread; ``result`` waits."""
+        def work() -> None:
+            for name, cmd, extra in steps:
+                if self._stopped:
+                    return
+                self.run(name, cmd, extra)
+
+        self._thread = threading.Thread(target=work, name="fresh-clone", daemon=True)
+        self._thread.start()
+
+    def result(self, name: str) -> tuple[subprocess.CompletedProcess, float] | None:
+        if self._thread is not None:
+            self._thread.join()
+        return self._results.get(name)
+
+
+TESTS = "the README's test command"
+SHARED_CPP = "C++ tests that read ../shared"
+BENCHMARK = "benchmark"
+BENCHMARK_X2 = "benchmark x2"
+# One distro keeps the benchmark's cost where it was; jazzy runs every path (framework-owned handles).
+BENCHMARK_ARGS = "--robot g1 --robot pm01 --distro jazzy"
+
+
+def start_early(session: pytest.Session, items: list[pytest.Item]) -> None:
+    """In a whole-suite session that runs OWN_FILE: clone now and run the quick tier and the benchmark in the
+    background (the clone's C++ phase waits for the test, which knows by then what read ../shared)."""
+    config = session.config
+    if not fresh_clone_selection.whole_suite(config) or can_clone():
+        return
+    if not any(item.nodeid.startswith(OWN_FILE) for item in items):
+        return
+    root = Path(tempfile.mkdtemp(prefix="rhi_fresh_clone_"))
+    clone = FreshClone(root)
+
+    def cleanup() -> None:
+        clone.stop()
+        shutil.rmtree(root, ignore_errors=True)
+
+    config.add_cleanup(cleanup)
+    selection = root / "quick.json"
+    fresh_clone_selection.write(selection, fresh_clone_selection.quick_tier(items, OWN_FILE))
+    quick_env = {fresh_clone_selection.ENV: str(selection)}
+    clone.start([(TESTS, readme_test_command(), quick_env),
+                 (BENCHMARK, f"{benchmark_command()} {BENCHMARK_ARGS}", {}),
+                 (BENCHMARK_X2, f"{benchmark_command()} --robot x2", {})])
+    clone.quick_selection = selection
+    config.stash[EARLY] = clone

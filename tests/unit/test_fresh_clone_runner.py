@@ -1,0 +1,41 @@
+"""tests/support/fresh_clone.py: the clone is HEAD with nothing beside it, its commands run in the background
+and end with the session (what tests/cli/test_fresh_clone.py relies on, checked here in seconds)."""
+from __future__ import annotations
+
+import shutil
+import subprocess
+import time
+
+import pytest
+
+from tests.support.fresh_clone import INNER, FreshClone
+from tests.support.repo import REPO
+
+
+@pytest.fixture
+def clone(tmp_path):
+    if not (REPO / ".git").exists() or shutil.which("git") is None:  # not INNER: a fresh clone runs this too
+        pytest.skip("not a git checkout (or no git): nothing to clone")
+    made = FreshClone(tmp_path)
+    yield made
+    made.stop()
+
+
+def test_the_clone_is_head_and_runs_steps_in_order_in_the_background(clone, tmp_path):
+    head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True, text=True).stdout.strip()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["clone", "tmp"]  # nothing beside the clone
+    clone.start([("head", "git rev-parse HEAD", {}), ("env", 'echo "$' + INNER + ' $TMPDIR $EXTRA"', {"EXTRA": "x"})])
+    head_run, env_run = clone.result("head"), clone.result("env")
+    assert head_run is not None and head_run[0].stdout.strip() == head
+    assert env_run is not None and env_run[0].stdout.split() == ["1", str(tmp_path / "tmp"), "x"]
+
+
+def test_stop_ends_the_running_command_and_the_steps_after_it(clone):
+    clone.start([("long", "sleep 60 & wait", {}), ("after", "echo never", {})])
+    time.sleep(0.5)
+    start = time.monotonic()
+    clone.stop()
+    long_run = clone.result("long")
+    assert time.monotonic() - start < 10
+    assert long_run is not None and long_run[0].returncode != 0
+    assert clone.result("after") is None

@@ -112,6 +112,9 @@ def build_and_run_cells(reference, builder, labels: set[str] | None = None
     tests/support/shared_use.py)."""
     jobs = [(b, distro, flavour) for b in selected.keep(reference.builds, labels, key=lambda b: b.label)
             for distro, flavour in MATRIX if in_cell(b.label, distro, flavour)]
+    # the sanitizer cells first (the slowest compiles and runs), the driver objects alone last: the cells still
+    # building at the end are small ones, and both cores stay busy to the end
+    jobs.sort(key=lambda job: (job[2] == "plain", (job[1], job[2]) in COMPILE_MATRIX))
 
     def build_and_run(job):
         b, distro, flavour = job

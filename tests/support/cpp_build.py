@@ -12,11 +12,11 @@ import shutil
 import subprocess
 import threading
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 import pytest
 import yaml
@@ -25,6 +25,8 @@ from tests.support import shared_use, vendor_msgs
 from tests.support.repo import REPO
 from tests.support.ros_msgs import wheel_include_dirs, wheels_digest
 from tests.support.xml_tree import attribute
+
+T = TypeVar("T")
 
 if TYPE_CHECKING:
     from rhi_gen.model import RobotModel
@@ -1034,7 +1036,7 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str
     is broken on purpose); ``rb`` by default. ``physics``: the fake robot and the harness with MuJoCo (the
     physics sections; a failed step when MuJoCo is not installed).
 
-    Returns (link result, [object results]); a failed step leaves later ones out."""
+    Returns (link result, [object results]); the objects are compiled at once, the link only when all are."""
     m = rb.model
     flags = FLAVOURS[flavour]
     pkg_include = rb.package_dir / "include"
@@ -1046,28 +1048,32 @@ def build_harness(builder: CppBuilder, rb: RobotBuild, flavour: str, distro: str
         return CompileResult(False, Path("mujoco"), [], "MuJoCo is not installed: pip install -e '.[test]' "
                              "installs mujoco-core (the harness's physics sections need it)"), []
     physics_flags, link_libs, mujoco_key = mujoco if mujoco is not None else ([], [], "")
-    steps = [compile_driver(builder, rb.package_dir, rb.label, m.transport, flavour, distro)]
-    steps.append(compile_harness_object(builder, rb, flavour, distro, robot_side,
-                                        [*physics_flags, "-DRHI_HARNESS_PHYSICS"] if mujoco else [], mujoco_key))
+    tasks: list[Callable[[], CompileResult]] = [
+        lambda: compile_driver(builder, rb.package_dir, rb.label, m.transport, flavour, distro),
+        lambda: compile_harness_object(builder, rb, flavour, distro, robot_side,
+                                       [*physics_flags, "-DRHI_HARNESS_PHYSICS"] if mujoco else [], mujoco_key)]
     robot_package = (robot_side or rb).package_dir
     fake = fake_robot_source(robot_package, m.vendor, m.robot)
     if fake is not None:
-        steps.append(builder.compile(fake, (*flags, *ROBOT_SIDE_FLAGS, *physics_flags),
-                                     [robot_package / "include", *standins], digest_parts=[mujoco_key],
-                                     package=robot_package, name=f"fake_{tag}", distro=distro,
-                                     transport=m.transport, variants=variants))
+        tasks.append(lambda: builder.compile(fake, (*flags, *ROBOT_SIDE_FLAGS, *physics_flags),
+                                             [robot_package / "include", *standins], digest_parts=[mujoco_key],
+                                             package=robot_package, name=f"fake_{tag}", distro=distro,
+                                             transport=m.transport, variants=variants))
     if m.transport == "unitree_dds":
         family = unitree_family(m)
         header = crc_header(rb.package_dir, family)
         if header is None:
-            steps.append(CompileResult(False, Path("crc_probe"), [],
-                                       f"no unitree_{family}*.hpp in the generated package"))
+            missing = CompileResult(False, Path("crc_probe"), [], f"no unitree_{family}*.hpp in the generated package")
+            tasks.append(lambda: missing)
         else:
             rel = header.relative_to(pkg_include).as_posix()
             probe_flags = (*flags, f'-DRHI_CRC_HEADER="{rel}"', f"-DRHI_UNITREE_FAMILY_{family.upper()}=1")
-            steps.append(builder.compile(HARNESS_DIR / "crc_probe.cpp", probe_flags,
-                                         [pkg_include, *standins], package=rb.package_dir,
-                                         name=f"crcprobe_{tag}", distro=distro, transport=m.transport))
+            tasks.append(lambda: builder.compile(HARNESS_DIR / "crc_probe.cpp", probe_flags,
+                                                 [pkg_include, *standins], package=rb.package_dir,
+                                                 name=f"crcprobe_{tag}", distro=distro, transport=m.transport))
+    # at once: the builder runs one compiler per core however many ask, so the last cells of a fixture keep
+    # both cores busy instead of compiling their objects one after another
+    steps = run_concurrently(tasks)
     failed = [s for s in steps if not s.ok]
     if failed:
         return failed[0], steps
@@ -1133,6 +1139,19 @@ def run_parallel(jobs, fn, workers: int | None = None) -> list:
     """fn over jobs on a thread pool (compilers and test binaries are separate processes)."""
     with ThreadPoolExecutor(max_workers=workers or max(1, os.cpu_count() or 1)) as pool:
         return list(pool.map(fn, jobs))
+
+
+def run_concurrently(tasks: Sequence[Callable[[], T]]) -> list[T]:
+    """Each task on a thread of its own, in order; what each read of ../shared counts for this thread, as if it
+    had run here (tests/support/shared_use.py: a worker thread's reads go to its own recording)."""
+    def one(task: Callable[[], T]) -> tuple[T, set[str]]:
+        with shared_use.recording() as used:
+            return task(), set(used)
+
+    results = run_parallel(tasks, one, len(tasks))
+    for _, used in results:
+        shared_use.replay(used)
+    return [result for result, _ in results]
 
 
 def run_binary_retrying(binary: Path, args: Sequence[str] = (), timeout: float = 300) -> HarnessRun:

@@ -25,7 +25,7 @@ import yaml
 
 from rhi_gen import transports
 from rhi_gen.render.fake_robot_views import has_fake_robot
-from tests.support import vendor_msgs
+from tests.support import selected, shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DISTROS,
     FLAVOURS,
@@ -115,13 +115,34 @@ def test_executable_labels_are_the_robots_with_a_fake_robot(reference):
     assert fake_robot_labels(reference) == EXECUTABLE_LABELS
 
 
+@pytest.fixture(scope="module")
+def executables(reference, cpp_builder, request):
+    """{label: its fake robot executable on RUN_DISTRO, or why it did not build} for the robots the session's
+    selected tests name, built at once (one compiler per core); each records what it read of ../shared."""
+    labels = selected.keep(EXECUTABLE_LABELS, selected.values(request, "label"))
+
+    def build(label: str):
+        with shared_use.recording() as used:
+            rb = reference.build(label)
+            if vendor_msgs.skip_reason(rb.model.transport):
+                return None, set(used)
+            try:
+                return build_executable(cpp_builder, rb, RUN_DISTRO), set(used)
+            except AssertionError as err:  # that robot's test fails with it
+                return err, set(used)
+
+    return shared_use.Recorded(dict(zip(labels, run_parallel(labels, build), strict=True)))
+
+
 @pytest.mark.parametrize("label", EXECUTABLE_LABELS)
-def test_fake_robot_executable_guards_the_network(reference, cpp_builder, label):
+def test_fake_robot_executable_guards_the_network(reference, executables, label):
     rb = reference.build(label)
     reason = vendor_msgs.skip_reason(rb.model.transport)
     if reason:
         pytest.skip(reason)
-    binary = build_executable(cpp_builder, rb, RUN_DISTRO)
+    binary = executables[label]
+    if isinstance(binary, AssertionError):
+        raise binary
     name = f"{rb.model.robot}_fake_robot"
 
     helped = run(binary, "--help")

@@ -509,6 +509,9 @@ def _run_schema_mutant(mutation: Mutation | None, schema: Schema, builder, plan:
 
 def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome]:
     if isinstance(job, Schema):
+        reason = vendor_msgs.skip_reason(plan.robot_sides.package((job.robot,)).build(job.robot).model.transport)
+        if reason:
+            return [Outcome(None, job.robot, False, "", None, 0.0, skipped=reason, schema=job.name)]
         return [_run_schema_mutant(None, job, builder, plan)]
     mutation: Mutation | None = job
     name = mutation.id if mutation else "control"
@@ -592,8 +595,15 @@ def test_every_schema_passes_with_its_mutants_off(outcomes):
     """A schema with every switch off is the robot as generated: it builds, and every check passes."""
     schemata = [name for name in outcomes if name.startswith("schema_")]
     assert bool(schemata) == any(switched(m) and m.id in outcomes for m in MUTATIONS), schemata
+    if not schemata:
+        pytest.skip("no switched mutation is selected: run with test_mutation_is_caught to build their schemata")
+    # quietly: what the X2's schemata read of ../shared does not make this test one that reads it; without it
+    # they are skipped here, and their mutants' own tests (which a fresh clone runs) say so
+    attempted = [o for name in schemata for o in outcomes.quietly(name) if o.skipped is None]
+    if not attempted:
+        pytest.skip("; ".join(o.skipped for name in schemata for o in outcomes.quietly(name) if o.skipped is not None))
     for name in schemata:
-        for o in _built(outcomes[name]):
+        for o in (o for o in outcomes.quietly(name) if o.skipped is None):
             assert o.built, f"{name} does not build:\n{o.build_error[:4000]}"
             assert o.run is not None
             assert o.run.returncode == 0 and o.run.failed == 0, f"{name}, every mutant off: {o.run.describe()}"

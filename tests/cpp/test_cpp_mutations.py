@@ -23,9 +23,10 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -400,22 +401,22 @@ def breaks_the_robot(mutation: Mutation) -> bool:
     return isinstance(change, TokenEdit) and Path(change.file).stem.endswith("_fake_robot")
 
 
-class RobotSides:
-    """The unmutated package of each set of robots, rendered once: a mutation of the driver is run against the
-    fake robot as the robot really is (the same objects as the control's, so they are compiled once), as the
-    harness's expectations (robot_data.hpp) already are."""
+class RenderedOnce:
+    """Packages rendered once each, by key, however many jobs ask (their objects are then compiled once too): the
+    unmutated package of a set of robots (a mutation of the driver runs against the fake robot as the robot really
+    is, as the harness's expectations, robot_data.hpp, already are) or a schema's package."""
 
-    def __init__(self, root: Path) -> None:
+    def __init__(self, root: Path, render: Callable[[Any, Path], RenderedPackage]) -> None:
         self._root = root
+        self._render = render
         self._lock = threading.Lock()
-        self._packages: dict[tuple[str, ...], RenderedPackage] = {}
+        self._packages: dict[Any, RenderedPackage] = {}
 
-    def package(self, robots: tuple[str, ...]) -> RenderedPackage:
+    def package(self, key: Any) -> RenderedPackage:
         with self._lock:
-            if robots not in self._packages:
-                self._packages[robots] = render_mutated_package(self._root / f"robots{len(self._packages)}", None,
-                                                                robots)
-            return self._packages[robots]
+            if key not in self._packages:
+                self._packages[key] = self._render(key, self._root / f"package{len(self._packages)}")
+            return self._packages[key]
 
 
 def mutant_number(mutation: Mutation) -> int:
@@ -467,21 +468,6 @@ def plan_schemata(mutations: list[Mutation], root: Path) -> dict[tuple[str, str]
     return where
 
 
-class SchemaPackages:
-    """Each schema's package, rendered once (its mutants' jobs share it, and the builder compiles it once)."""
-
-    def __init__(self, root: Path) -> None:
-        self._root = root
-        self._lock = threading.Lock()
-        self._packages: dict[Schema, RenderedPackage] = {}
-
-    def package(self, schema: Schema) -> RenderedPackage:
-        with self._lock:
-            if schema not in self._packages:
-                self._packages[schema] = render_schema_package(self._root / schema.name, schema)
-            return self._packages[schema]
-
-
 def render_schema_package(root: Path, schema: Schema) -> RenderedPackage:
     """render_mutated_package for a schema: the robot's package with every mutant of ``schema`` switched in."""
     return render_mutated_package(root, None, (schema.robot,),
@@ -491,9 +477,9 @@ def render_schema_package(root: Path, schema: Schema) -> RenderedPackage:
 @dataclass(frozen=True)
 class Plan:
     """Where the fixture's jobs build: the unmutated robots, and the schemata of the switched mutants."""
-    robot_sides: RobotSides
+    robot_sides: RenderedOnce   # by robots: their unmutated package
     schemata: dict[tuple[str, str], Schema]
-    packages: SchemaPackages
+    packages: RenderedOnce      # by Schema: its package
 
 
 def _run_schema_mutant(mutation: Mutation | None, schema: Schema, builder, plan: Plan) -> Outcome:
@@ -561,7 +547,10 @@ def outcomes(tmp_path_factory, request):
         schemata = plan_schemata([m for m in chosen if m is not None and switched(m)], tmp_root / "plan")
     except MutationError as err:
         pytest.fail(f"the mutation schemata cannot be planned: {err}")
-    plan = Plan(RobotSides(tmp_root / "robot_sides"), schemata, SchemaPackages(tmp_root / "schemata"))
+    robot_sides = RenderedOnce(tmp_root / "robot_sides",
+                               lambda robots, where: render_mutated_package(where, None, robots))
+    packages = RenderedOnce(tmp_root / "schemata", lambda schema, where: render_schema_package(where, schema))
+    plan = Plan(robot_sides, schemata, packages)
     # the schemata's controls first: each builds its schema, which its mutants' jobs then wait for
     jobs = [*sorted(set(schemata.values()), key=lambda s: s.name), *chosen]
 

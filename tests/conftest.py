@@ -97,4 +97,5 @@ def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None):
     defs = [d for name in getattr(item, "fixturenames", ()) for d in by_name.get(name, ())]
     if used or any(d in reads for d in defs):
         fresh_clone_selection.note_test(item.nodeid)
+    fresh_clone.after_test(item)
     return result

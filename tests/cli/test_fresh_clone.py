@@ -31,19 +31,17 @@ from __future__ import annotations
 
 import json
 import re
-import tempfile
 from pathlib import Path
 
 import pytest
 
-from tests.support import cpp_build, fresh_clone_selection, vendor_msgs
+from tests.support import cpp_build, vendor_msgs
 from tests.support.fresh_clone import (
     BENCHMARK,
     BENCHMARK_ARGS,
     BENCHMARK_X2,
     EARLY,
     INNER,
-    OWN_FILE,
     SHARED_CPP,
     TESTS,
     FreshClone,
@@ -127,20 +125,19 @@ def test_readme_test_command_passes_in_a_fresh_clone(clone, request, tmp_path_fa
     if clone.quick_selection is not None:
         # The session ran the rest: the C++ tests that read ../shared run in the clone now, by the command's last
         # step (its install is done), with the session's objects.
-        chosen = fresh_clone_selection.shared_cpp(request.session.items, OWN_FILE)
+        if clone.shared_cpp is None:  # not started after the session's last C++ test (tests/conftest.py)
+            clone.start_shared_cpp(request.session.items, session_cache(tmp_path_factory))
+        chosen = clone.shared_cpp
+        assert chosen is not None
         quick = json.loads(clone.quick_selection.read_text(encoding="utf-8"))
         if vendor_msgs.UPSTREAM.is_dir():  # both halves: a test of the quick tier may read ../shared too
             run_ids = set(quick["run"]) | set(chosen["run"])
             assert set(READS_SHARED) <= run_ids, f"not recorded as reading ../shared: {set(READS_SHARED) - run_ids}"
             assert not set(READS_NOTHING_SHARED) & run_ids, \
                 f"recorded as reading ../shared: {set(READS_NOTHING_SHARED) & run_ids}"
-        where = Path(tempfile.mkdtemp(dir=clone.root)) / "shared_cpp.json"
-        fresh_clone_selection.write(where, chosen)
         report(f"fresh clone: ran {len(quick['run']) + len(chosen['run'])} of this session's {len(chosen['outer'])} "
                f"tests (the quick tier, {len(quick['run'])}, while the session ran; then every C++ test that read "
                f"../shared, {len(chosen['run'])}) and, in each run, this file's own two")
-        clone.run(SHARED_CPP, readme_test_command().rsplit("&&", 1)[1].strip(),
-                  {fresh_clone_selection.ENV: str(where), "RHI_CPP_CACHE": str(session_cache(tmp_path_factory))})
         summaries.append(check_phase(clone, SHARED_CPP, report))
     skipped = sum(int(m[1]) if (m := re.search(r"(\d+) skipped", summary)) else 0 for summary in summaries)
     expected = readme_skip_count() + INNER_SELF_SKIPS * len(summaries)

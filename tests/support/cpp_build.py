@@ -1196,6 +1196,13 @@ def session_builder(tmp_path_factory) -> CppBuilder:
         return _SESSION["builder"]  # type: ignore[return-value]
 
 
+def session_cache_dir() -> Path | None:
+    """The session's object cache, once its CppBuilder exists (None before)."""
+    with _SESSION_LOCK:
+        builder = _SESSION.get("builder")
+    return builder.cache_dir if isinstance(builder, CppBuilder) else None
+
+
 @dataclass
 class RenderedPackage:
     project: Path

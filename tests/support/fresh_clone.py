@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import fresh_clone_selection
+from tests.support import cpp_build, fresh_clone_selection
 from tests.support.repo import REPO
 
 OWN_FILE = "tests/cli/test_fresh_clone.py"
@@ -67,8 +67,10 @@ class FreshClone:
     dest: Path = field(init=False)
     env: dict[str, str] = field(init=False)
     quick_selection: Path | None = None   # started early: the quick tier's selection (else the whole suite)
+    cpp_done_after: str = ""              # started early: the session's last C++ test (the record is then whole)
+    shared_cpp: dict[str, list[str]] | None = None  # the C++ tests that read ../shared, once their run started
     _results: dict[str, tuple[subprocess.CompletedProcess, float]] = field(default_factory=dict)
-    _thread: threading.Thread | None = None
+    _threads: list[threading.Thread] = field(default_factory=list)
     _running: subprocess.Popen | None = None
     _stopped: bool = False
 
@@ -107,19 +109,35 @@ class FreshClone:
             os.killpg(proc.pid, signal.SIGKILL)
 
     def start(self, steps: list[tuple[str, str, dict[str, str]]]) -> None:
-        """Run ``steps`` ((name, command, extra environment), in order) in a thread; ``result`` waits."""
+        """Run ``steps`` ((name, command, extra environment), in order) in a thread, after the steps started
+        before (one command at a time); ``result`` waits."""
+        before = list(self._threads)
+
         def work() -> None:
+            for thread in before:
+                thread.join()
             for name, cmd, extra in steps:
                 if self._stopped:
                     return
                 self.run(name, cmd, extra)
 
-        self._thread = threading.Thread(target=work, name="fresh-clone", daemon=True)
-        self._thread.start()
+        thread = threading.Thread(target=work, name="fresh-clone", daemon=True)
+        self._threads.append(thread)
+        thread.start()
+
+    def start_shared_cpp(self, items: list[pytest.Item], cache: Path | None) -> None:
+        """Start the C++ tests that read ../shared (the record's, over ``items``), by the README command's last
+        step (its install is done), with the session's objects (``cache``: object keys hold contents, never
+        paths, so they are cache hits)."""
+        self.shared_cpp = fresh_clone_selection.shared_cpp(items, OWN_FILE)
+        where = Path(tempfile.mkdtemp(dir=self.root)) / "shared_cpp.json"
+        fresh_clone_selection.write(where, self.shared_cpp)
+        env = {fresh_clone_selection.ENV: str(where), **({"RHI_CPP_CACHE": str(cache)} if cache else {})}
+        self.start([(SHARED_CPP, readme_test_command().rsplit("&&", 1)[1].strip(), env)])
 
     def result(self, name: str) -> tuple[subprocess.CompletedProcess, float] | None:
-        if self._thread is not None:
-            self._thread.join()
+        for thread in self._threads:
+            thread.join()
         return self._results.get(name)
 
 
@@ -154,4 +172,14 @@ def start_early(session: pytest.Session, items: list[pytest.Item]) -> None:
                  (BENCHMARK, f"{benchmark_command()} {BENCHMARK_ARGS}", {}),
                  (BENCHMARK_X2, f"{benchmark_command()} --robot x2", {})])
     clone.quick_selection = selection
+    cpp = [item.nodeid for item in items if item.get_closest_marker("cpp") and not item.nodeid.startswith(OWN_FILE)]
+    clone.cpp_done_after = cpp[-1] if cpp else ""
     config.stash[EARLY] = clone
+
+
+def after_test(item: pytest.Item) -> None:
+    """After the session's last C++ test (its reads of ../shared recorded), the early clone starts the C++ tests
+    that read ../shared, while the session runs the rest of its quick tier; the test waits for them."""
+    clone = item.config.stash.get(EARLY, None)
+    if clone is not None and clone.cpp_done_after and item.nodeid == clone.cpp_done_after:
+        clone.start_shared_cpp(item.session.items, cpp_build.session_cache_dir())

@@ -39,3 +39,11 @@ def test_stop_ends_the_running_command_and_the_steps_after_it(clone):
     assert time.monotonic() - start < 10
     assert long_run is not None and long_run[0].returncode != 0
     assert clone.result("after") is None
+
+
+def test_steps_started_later_run_after_the_earlier_ones(clone):
+    """The C++ phase, started after the session's last C++ test, waits for the quick tier and the benchmark."""
+    clone.start([("first", "sleep 0.5 && echo first > ../tmp/order", {})])
+    clone.start([("second", "cat ../tmp/order", {})])
+    second = clone.result("second")
+    assert second is not None and second[0].stdout.strip() == "first"

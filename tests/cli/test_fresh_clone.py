@@ -22,9 +22,10 @@ runs the whole suite in the clone.
 
 Cost: in a whole-suite session the clone is made when collection ends, and runs the README's test command
 with the quick tier, then the benchmark, in the background while the session runs (tests/support/
-fresh_clone.py); these tests wait for it, then run the C++ tests that read ../shared in the same clone
+fresh_clone.py); after the session's last C++ test, the C++ tests that read ../shared run in the same clone
 (`.venv/bin/python -m pytest`, the command's last step, again) with the session's compiled-object cache
-(RHI_CPP_CACHE: object keys hold contents, never paths, so they are cache hits). The clone tests HEAD as it
+(RHI_CPP_CACHE: object keys hold contents, never paths, so they are cache hits), while the session runs the
+rest of its quick tier; these tests wait for both. The clone tests HEAD as it
 was when the session started: commit first when running this on a working tree with changes.
 """
 from __future__ import annotations

@@ -3,8 +3,9 @@
 tests/cli/test_fresh_clone.py checks what they do. In a whole-suite session the clone starts when collection
 ends (tests/conftest.py: ``start_early``), in a thread of its own, and runs the quick tier (the README's test
 command word for word, its selection the tests without a compiler) and the benchmark while the session's C++
-tier keeps the other core busy; at the end, the test runs the C++ tests that read ../shared in the same
-clone (only the session knows those by then) and checks both phases. The clone's pytest is a process of its
+tier keeps the other core busy; after the session's last C++ test (``after_test``: only the session knows by
+then which read ../shared), the C++ tests that read ../shared run in the same clone while the session runs the
+rest of its quick tier, and the test checks both phases. The clone's pytest is a process of its
 own: its tests read and write only the clone and its temporary folder.
 """
 from __future__ import annotations

@@ -28,7 +28,6 @@ import pytest
 
 from tests.support import selected, vendor_msgs
 from tests.support.cpp_build import (
-    COMPILER_MEMORY,
     DISTROS,
     STANDINS,
     STANDINS_INCLUDE,
@@ -62,7 +61,7 @@ SHORT_WORKERS = WORKERS + 1
 def _cxxflags(distro: str, vendor_messages: bool = False) -> list[str]:
     """``vendor_messages``: the generated vendor packages on the include path too (the self-test's vendor
     part); without, the ROS 2 wheels' messages only, which is all the stand-ins' own headers include."""
-    return [*COMPILER_MEMORY, *WARNING_FLAGS, "-pthread", *standin_flags(distro),
+    return [*WARNING_FLAGS, "-pthread", *standin_flags(distro),
             *message_include_flags(None if vendor_messages else "")]
 
 

@@ -37,11 +37,6 @@ STANDINS = REPO / "tests" / "cpp" / "standins"
 STANDINS_INCLUDE = STANDINS / "include"
 # What every distro's code is compiled with (the issue's flags; deprecations are errors).
 WARNING_FLAGS = ("-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror")
-# How g++ manages its own memory, not what it compiles (same objects, same diagnostics): it collects garbage only
-# past a 1 GiB heap, where by default it starts at a few tens of MiB. About a tenth less compiler time for a
-# driver, harness or self-test translation unit (measured: 8.4 to 7.4 s, 14.5 to 12.9 s, 27.3 to 24.4 s), for
-# at most 1.9 GB per compiler.
-COMPILER_MEMORY = ("--param=ggc-min-expand=100", "--param=ggc-min-heapsize=1048576")
 
 
 @dataclass(frozen=True)
@@ -88,7 +83,7 @@ def require_compiler() -> str:
 
 def run_compiler(args: Sequence[str], *, what: str) -> subprocess.CompletedProcess:
     """Run g++ with ``args``; on failure the assertion message carries the compiler's first errors."""
-    cmd = [require_compiler(), *COMPILER_MEMORY, *args]
+    cmd = [require_compiler(), *args]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
         errors = "\n".join(proc.stderr.splitlines()[:40])
@@ -841,7 +836,7 @@ class CppBuilder:
         message_flags, messages = self._message_parts(transport, variants)
         key = self._key("compile", source.name, source.read_text(encoding="utf-8"), *flags,
                         self._standins, messages, f"distro={distro}", *digest_parts)
-        cmd = [self.cxx, *COMPILER_MEMORY, *WARNING_FLAGS, "-pthread", *flags, *(f"-I{p}" for p in includes),
+        cmd = [self.cxx, *WARNING_FLAGS, "-pthread", *flags, *(f"-I{p}" for p in includes),
                *message_flags, "-c", str(source)]
         if package is None:
             return self._run(key, self.cache_dir / f"{name}-{key}.o", cmd)

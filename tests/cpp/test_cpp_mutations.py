@@ -24,6 +24,7 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable, Sequence
+from concurrent.futures import Executor, Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -33,6 +34,7 @@ import pytest
 from tests.support import selected, shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DEFAULT_DISTRO,
+    OVERLAP_WORKERS,
     PACKAGE,
     WAITING_WORKERS,
     HarnessRun,
@@ -476,24 +478,35 @@ def render_schema_package(root: Path, schema: Schema) -> RenderedPackage:
 
 @dataclass(frozen=True)
 class Plan:
-    """Where the fixture's jobs build: the unmutated robots, and the schemata of the switched mutants."""
+    """Where the fixture's jobs build (the unmutated robots, and the schemata of the switched mutants), and where
+    their binaries run."""
     robot_sides: RenderedOnce   # by robots: their unmutated package
     schemata: dict[tuple[str, str], Schema]
     packages: RenderedOnce      # by Schema: its package
+    runs: Executor              # the runs' own threads: a job's thread goes on to the next build meanwhile
 
 
-def _run_schema_mutant(mutation: Mutation | None, schema: Schema, builder, plan: Plan) -> Outcome:
+def _run_later(plan: Plan, mutation: Mutation | None, robot: str, link, args: list[str], start: float,
+               schema: str = "") -> Future[Outcome]:
+    """The Outcome of running ``link``'s binary with ``args`` (no run when it did not link), on the runs' threads."""
+    def run() -> Outcome:
+        ran = run_binary(link.path, args, timeout=120) if link.ok else None
+        return Outcome(mutation, robot, link.ok, link.stderr, ran, time.monotonic() - start, schema=schema)
+    return plan.runs.submit(run)
+
+
+def _run_schema_mutant(mutation: Mutation | None, schema: Schema, builder, plan: Plan) -> Future[Outcome]:
     """``mutation`` switched on in ``schema``'s harness binary (None: every switch off, the schema's control)."""
     start = time.monotonic()
     package = plan.packages.package(schema)
     link, _ = build_harness(builder, package.build(schema.robot), "plain", schema.distro,
                             plan.robot_sides.package((schema.robot,)).build(schema.robot))
     mutant = [f"--mutant={mutant_number(mutation)}"] if mutation else []
-    run = run_binary(link.path, [f"--threads-ms={THREADS_MS}", *mutant], timeout=120) if link.ok else None
-    return Outcome(mutation, schema.robot, link.ok, link.stderr, run, time.monotonic() - start, schema=schema.name)
+    return _run_later(plan, mutation, schema.robot, link, [f"--threads-ms={THREADS_MS}", *mutant], start, schema.name)
 
 
-def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome]:
+def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome | Future[Outcome]]:
+    """Builds ``job`` (a Schema's control, a mutation or the control) and starts its runs (the futures)."""
     if isinstance(job, Schema):
         reason = vendor_msgs.skip_reason(plan.robot_sides.package((job.robot,)).build(job.robot).model.transport)
         if reason:
@@ -504,8 +517,8 @@ def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome]:
     root = tmp_root / name
     start = time.monotonic()
     robots = mutation.robots if mutation else CONTROL_ROBOTS
+    outcomes: list[Outcome | Future[Outcome]] = []
     if mutation is not None and switched(mutation):
-        outcomes = []
         for label in robots:
             reason = vendor_msgs.skip_reason(plan.robot_sides.package((label,)).build(label).model.transport)
             if reason:
@@ -519,11 +532,9 @@ def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome]:
         return [Outcome(mutation, "-", False, "", None, time.monotonic() - start, not_applied=str(err))]
     robot_side = package if mutation is None or breaks_the_robot(mutation) or not robots else \
         plan.robot_sides.package(robots)
-    outcomes = []
     if mutation is None or mutation.data_buffer:
-        link = compile_data_buffer_stress(builder, package.package_dir, "plain")
-        run = run_binary(link.path, timeout=120) if link.ok else None
-        outcomes.append(Outcome(mutation, "data_buffer", link.ok, link.stderr, run, time.monotonic() - start))
+        buffer = compile_data_buffer_stress(builder, package.package_dir, "plain")
+        outcomes.append(_run_later(plan, mutation, "data_buffer", buffer, [], start))
     for label in robots:
         reason = vendor_msgs.skip_reason(package.build(label).model.transport)
         if reason:
@@ -531,8 +542,7 @@ def _run_one(job, tmp_root: Path, builder, plan: Plan) -> list[Outcome]:
             continue
         distro = mutation.distro if mutation else DEFAULT_DISTRO
         link, _ = build_harness(builder, package.build(label), "plain", distro, robot_side.build(label))
-        run = run_binary(link.path, [f"--threads-ms={THREADS_MS}"], timeout=120) if link.ok else None
-        outcomes.append(Outcome(mutation, label, link.ok, link.stderr, run, time.monotonic() - start))
+        outcomes.append(_run_later(plan, mutation, label, link, [f"--threads-ms={THREADS_MS}"], start))
     return outcomes
 
 
@@ -550,7 +560,10 @@ def outcomes(tmp_path_factory, request):
     robot_sides = RenderedOnce(tmp_root / "robot_sides",
                                lambda robots, where: render_mutated_package(where, None, robots))
     packages = RenderedOnce(tmp_root / "schemata", lambda schema, where: render_schema_package(where, schema))
-    plan = Plan(robot_sides, schemata, packages)
+    # A job's thread builds, then hands its binary to the runs' threads: a run takes 7 to 67 s, mostly waiting on
+    # timers, and many run at once while the builds go on (the builder keeps one compiler per core).
+    runs = ThreadPoolExecutor(max_workers=WAITING_WORKERS)
+    plan = Plan(robot_sides, schemata, packages, runs)
     # The mutants built alone first: theirs are the longest runs (a CRC table that drops every frame waits out every
     # check's deadline: a minute). Then the schemata's controls, each building its schema, which its mutants' jobs
     # then wait for.
@@ -561,7 +574,9 @@ def outcomes(tmp_path_factory, request):
         with shared_use.recording() as used:
             return _run_one(job, tmp_root, builder, plan), set(used)
 
-    results = run_parallel(jobs, run_one, WAITING_WORKERS)  # many runs at once, overlapping the compiles
+    with runs:
+        started = run_parallel(jobs, run_one, OVERLAP_WORKERS)
+        results = [([o.result() if isinstance(o, Future) else o for o in pending], used) for pending, used in started]
     return shared_use.Recorded({(job.name if isinstance(job, Schema) else job.id if job else "control"): result
                                 for job, result in zip(jobs, results, strict=True)})
 

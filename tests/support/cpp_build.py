@@ -1133,9 +1133,9 @@ def run_binary(binary: Path, args: Sequence[str] = (), timeout: float = 300,
 # Threads for a pool whose jobs build (the builder allows one compiler per core) and then run a binary that
 # mostly sleeps: the runs overlap the compiles.
 OVERLAP_WORKERS = (os.cpu_count() or 1) + 3
-# Threads for a pool of jobs that, once built, mostly wait on a binary's timers: the mutants' harness runs take
-# 7 to 67 s each and at most 6 % of one core (measured), most of them sleeping until a check's deadline. Many
-# run at once; the builder still keeps one compiler per core.
+# Threads for runs of binaries that mostly wait on their timers: the mutants' harness runs take 7 to 67 s each and
+# at most 6 % of one core (measured), most of them sleeping until a check's deadline. Many run at once, next to
+# the builds (the builder keeps one compiler per core).
 WAITING_WORKERS = 6 * (os.cpu_count() or 1)
 
 

@@ -14,16 +14,33 @@ from __future__ import annotations
 
 import pytest
 
-from tests.support.cpp_build import compile_transmission_checks, run_binary_retrying
+from tests.support import selected
+from tests.support.cpp_build import (
+    OVERLAP_WORKERS,
+    CompileResult,
+    compile_transmission_checks,
+    run_binary_retrying,
+    run_parallel,
+)
 
 CELLS = [("humble", "plain"), ("jazzy", "plain"), ("kilted", "plain"), ("rolling", "plain"),
          ("humble", "asan_ubsan"), ("rolling", "asan_ubsan"), ("humble", "tsan"), ("rolling", "tsan")]
 SECTIONS = ("transmission_state", "transmission_commands", "calibration", "transmission_spec")
 
 
+@pytest.fixture(scope="module")
+def programs(reference, cpp_builder, request) -> dict[tuple[str, str], CompileResult]:
+    """The program of every cell the session's selected tests name, built at once (the builder runs one compiler
+    per core), not one cell after the other."""
+    cells = selected.keep(CELLS, selected.values(request, ("distro", "flavour")))
+    links = run_parallel(cells, lambda cell: compile_transmission_checks(cpp_builder, reference.package_dir,
+                                                                          cell[1], cell[0]), OVERLAP_WORKERS)
+    return dict(zip(cells, links, strict=True))
+
+
 @pytest.mark.parametrize(("distro", "flavour"), CELLS)
-def test_transmissions_in_the_core(reference, cpp_builder, distro, flavour):
-    link = compile_transmission_checks(cpp_builder, reference.package_dir, flavour, distro)
+def test_transmissions_in_the_core(programs, distro, flavour):
+    link = programs[(distro, flavour)]
     assert link.ok, f"transmission_checks does not compile ({distro}, {flavour}):\n{link.stderr[:6000]}"
     run = run_binary_retrying(link.path)
     reports = run.sanitizer_reports()

@@ -56,10 +56,15 @@ def project(robots_project: Path, capsys: pytest.CaptureFixture[str]) -> Path:
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list[pytest.Item]) -> None:
     """tests/cli/test_fresh_clone.py runs last, so it knows which tests read ../shared, and its clone reuses
     every object the session compiled (its RHI_CPP_CACHE). A whole-suite session starts that clone now, running
-    the quick tier and the benchmark in the background (tests/support/fresh_clone.py). In the clone, the
-    selection the outer session passes on (tests/support/fresh_clone_selection.py) deselects the rest."""
+    the quick tier and the benchmark in the background (tests/support/fresh_clone.py). The modules with C++ tests
+    run first: after the last of them the clone runs the C++ tests that read ../shared, while the session runs
+    the modules without a compiler. In the clone, the selection the outer session passes on
+    (tests/support/fresh_clone_selection.py) deselects the rest."""
     last = [item for item in items if item.nodeid.split("::")[0].endswith("test_fresh_clone.py")]
-    items[:] = [item for item in items if item not in last] + last
+    rest = [item for item in items if item not in last]
+    with_cpp = {item.nodeid.split("::")[0] for item in rest if item.get_closest_marker("cpp") is not None}
+    rest.sort(key=lambda item: item.nodeid.split("::")[0] not in with_cpp)  # stable: each group in its order
+    items[:] = rest + last
     dropped = fresh_clone_selection.apply(items)
     if dropped:
         config.hook.pytest_deselected(items=dropped)

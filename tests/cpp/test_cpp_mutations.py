@@ -566,8 +566,8 @@ def outcomes(tmp_path_factory, request):
     plan = Plan(robot_sides, schemata, packages, runs)
     # The mutants built alone first: theirs are the longest runs (a CRC table that drops every frame waits out every
     # check's deadline: a minute). Then the schemata's controls, each building its schema, which its mutants' jobs
-    # then wait for: the schemata with the most mutants first, so that the runs left when the last build is done
-    # are few (G1's 23 runs, its schema built among the last, made the module's last minute one of runs alone).
+    # then wait for: the schemata with the most mutants (G1's and PM01's, 23 each) first, so that the runs left
+    # when the last build is done are few.
     alone = [m for m in chosen if m is None or not switched(m)]
     by_size = sorted(set(schemata.values()), key=lambda s: (-len(s.mutants), s.name))
     first_schema = {mid: min(by_size.index(s) for (m, _), s in schemata.items() if m == mid) for mid, _ in schemata}

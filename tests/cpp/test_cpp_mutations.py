@@ -609,11 +609,11 @@ def test_every_schema_passes_with_its_mutants_off(outcomes):
         pytest.skip("no switched mutation is selected: run with test_mutation_is_caught to build their schemata")
     # quietly: what the X2's schemata read of ../shared does not make this test one that reads it; without it
     # they are skipped here, and their mutants' own tests (which a fresh clone runs) say so
-    attempted = [o for name in schemata for o in outcomes.quietly(name) if o.skipped is None]
-    if not attempted:
-        pytest.skip("; ".join(o.skipped for name in schemata for o in outcomes.quietly(name) if o.skipped is not None))
-    for name in schemata:
-        for o in (o for o in outcomes.quietly(name) if o.skipped is None):
+    ran = {name: outcomes.quietly(name) for name in schemata}
+    if all(o.skipped is not None for runs in ran.values() for o in runs):
+        pytest.skip("; ".join(o.skipped for runs in ran.values() for o in runs if o.skipped is not None))
+    for name, runs in ran.items():
+        for o in (o for o in runs if o.skipped is None):
             assert o.built, f"{name} does not build:\n{o.build_error[:4000]}"
             assert o.run is not None
             assert o.run.returncode == 0 and o.run.failed == 0, f"{name}, every mutant off: {o.run.describe()}"

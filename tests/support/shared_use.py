@@ -142,6 +142,10 @@ class Recorded(Mapping[Any, V]):
         replay(used)
         return value
 
+    def __contains__(self, key: object) -> bool:
+        """Whether there is a result for ``key``: not a use of it (Mapping's own would look the value up)."""
+        return key in self._items
+
     def __iter__(self) -> Iterator[Any]:
         return iter(self._items)
 

@@ -89,6 +89,8 @@ def test_recorded_results_count_only_for_the_item_looked_up(watched):
     results = shared_use.Recorded(items)
     assert reads(lambda: results["x2"]) and not reads(lambda: results["g1"])
     assert not reads(lambda: results.quietly("x2"))
+    assert not reads(lambda: "x2" in results), "asking whether a result is there is not a use of it"
+    assert "x2" in results and "go2" not in results
 
 
 def test_a_worker_thread_without_its_own_record_counts_for_the_running_test(watched):

@@ -1135,8 +1135,9 @@ def run_binary(binary: Path, args: Sequence[str] = (), timeout: float = 300,
 OVERLAP_WORKERS = (os.cpu_count() or 1) + 3
 # Threads for runs of binaries that mostly wait on their timers: the mutants' harness runs take 7 to 67 s each and
 # at most 6 % of one core (measured), most of them sleeping until a check's deadline. Many run at once, next to
-# the builds (the builder keeps one compiler per core).
-WAITING_WORKERS = 6 * (os.cpu_count() or 1)
+# the builds (the builder keeps one compiler per core): with twelve per core the mutations module on cached objects
+# took 88 s instead of 119 s with six, its runs' total time unchanged (1198 s against 1193 s).
+WAITING_WORKERS = 12 * (os.cpu_count() or 1)
 
 
 def run_parallel(jobs, fn, workers: int | None = None) -> list:

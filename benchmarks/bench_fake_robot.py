@@ -41,10 +41,12 @@ def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild) -> Path:
     assert source is not None, f"{m.vendor}/{m.robot} has no fake robot"
     includes = [rb.package_dir / "include", *cpp_build.DISTROS[DISTRO].include_dirs]
     tag = f"{m.vendor}_{m.robot}"
-    objects = [builder.compile(source, FLAGS, includes, package=rb.package_dir, name=f"benchfake_robot_{tag}",
-                               distro=DISTRO, transport=m.transport),
-               builder.compile(BENCH_SOURCE, FLAGS, includes, package=rb.package_dir, name=f"benchfake_{tag}",
-                               distro=DISTRO, transport=m.transport)]
+    # at once: the builder runs one compiler per core
+    objects = cpp_build.run_concurrently([
+        lambda: builder.compile(source, FLAGS, includes, package=rb.package_dir, name=f"benchfake_robot_{tag}",
+                                distro=DISTRO, transport=m.transport),
+        lambda: builder.compile(BENCH_SOURCE, FLAGS, includes, package=rb.package_dir, name=f"benchfake_{tag}",
+                                distro=DISTRO, transport=m.transport)])
     for o in objects:
         if not o.ok:
             sys.exit(f"bench_fake_robot: {o.path.name} did not compile:\n{o.stderr[-4000:]}")

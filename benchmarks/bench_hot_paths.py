@@ -100,12 +100,14 @@ def build(builder: cpp_build.CppBuilder, rb: cpp_build.RobotBuild, distro: str) 
     standins = cpp_build.DISTROS[distro].include_dirs
     pkg_include = rb.package_dir / "include"
     tag = f"{m.vendor}_{m.robot}_{distro}"
-    driver = builder.compile(cpp_build.driver_source(rb.package_dir, m.vendor, m.robot), FLAGS,
-                             [pkg_include, *standins], package=rb.package_dir,
-                             name=f"bench_driver_{tag}", distro=distro, transport=m.transport)
-    bench = builder.compile(BENCH_SOURCE, FLAGS, [rb.data_dir, cpp_build.HARNESS_DIR, *standins],
-                            digest_parts=[rb.data_header, builder._harness], name=f"bench_{tag}", distro=distro,
-                            transport=m.transport)
+    # at once: the builder runs one compiler per core, so one robot's benchmark compiles on both cores
+    driver, bench = cpp_build.run_concurrently([
+        lambda: builder.compile(cpp_build.driver_source(rb.package_dir, m.vendor, m.robot), FLAGS,
+                                [pkg_include, *standins], package=rb.package_dir,
+                                name=f"bench_driver_{tag}", distro=distro, transport=m.transport),
+        lambda: builder.compile(BENCH_SOURCE, FLAGS, [rb.data_dir, cpp_build.HARNESS_DIR, *standins],
+                                digest_parts=[rb.data_header, builder._harness], name=f"bench_{tag}",
+                                distro=distro, transport=m.transport)])
     for step in (driver, bench):
         if not step.ok:
             sys.exit(f"compiling {step.command[-3:]} failed:\n{step.stderr[:4000]}")

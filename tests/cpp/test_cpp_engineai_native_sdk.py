@@ -17,8 +17,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import vendor_msgs
-from tests.support.cpp_build import DISTROS, FLAVOURS, RobotBuild, run_parallel
+from tests.support import selected, vendor_msgs
+from tests.support.cpp_build import DISTROS, FLAVOURS, OVERLAP_WORKERS, CompileResult, RobotBuild, run_parallel
 
 LABEL = "engineai/pm01"
 VARIANT = vendor_msgs.ENGINEAI_NATIVE_SDK
@@ -70,22 +70,32 @@ def test_the_native_sdk_motor_debug_has_no_tau_cmd():
     assert " tau_cmd;" in default.read_text() and "error_code" not in default.read_text()
 
 
-@pytest.mark.parametrize("distro", sorted(DISTROS))
-def test_pm01_compiles_against_the_native_sdk_messages(reference, cpp_builder, distro):
+@pytest.fixture(scope="module")
+def native_objects(reference, cpp_builder, request) -> dict[tuple[str, Path], CompileResult]:
+    """{(distro, source): its object} for the distros the session's selected tests name, compiled at once: the
+    builder runs one compiler per core, so the last objects do not compile one after the other."""
     rb = reference.build(LABEL)
-    m = rb.model
-    # <root>/include/interface_protocol/interface_protocol/msg -> the -isystem folder <root>/include/interface_protocol
-    native_include = str(vendor_msgs.header_dir("interface_protocol", variant=VARIANT).parents[1])
-    default_include = str(vendor_msgs.header_dir("interface_protocol").parents[1])
+    jobs = [(distro, source) for distro in selected.keep(sorted(DISTROS), selected.values(request, "distro"))
+            for source in _pm01_sources(rb)]
 
-    def compile_one(source: Path):
+    def compile_one(job: tuple[str, Path]) -> CompileResult:
+        distro, source = job
         return cpp_builder.compile(source, FLAVOURS["plain"], [rb.package_dir / "include",
                                                                *DISTROS[distro].include_dirs],
                                    package=rb.package_dir,
                                    name=f"native_sdk_{source.stem}_{distro}", distro=distro,
-                                   transport=m.transport, variants=(VARIANT,))
+                                   transport=rb.model.transport, variants=(VARIANT,))
 
-    results = run_parallel(_pm01_sources(rb), compile_one)
+    return dict(zip(jobs, run_parallel(jobs, compile_one, OVERLAP_WORKERS), strict=True))
+
+
+@pytest.mark.parametrize("distro", sorted(DISTROS))
+def test_pm01_compiles_against_the_native_sdk_messages(reference, native_objects, distro):
+    rb = reference.build(LABEL)
+    # <root>/include/interface_protocol/interface_protocol/msg -> the -isystem folder <root>/include/interface_protocol
+    native_include = str(vendor_msgs.header_dir("interface_protocol", variant=VARIANT).parents[1])
+    default_include = str(vendor_msgs.header_dir("interface_protocol").parents[1])
+    results = [native_objects[(distro, source)] for source in _pm01_sources(rb)]
     assert len(results) == 2
     for o in results:
         assert native_include in o.command and default_include not in o.command, ' '.join(o.command)

@@ -19,6 +19,8 @@ import re
 import subprocess
 import sys
 import time
+from collections.abc import Callable
+from pathlib import Path
 
 import pytest
 import yaml
@@ -29,12 +31,15 @@ from tests.support import selected, shared_use, vendor_msgs
 from tests.support.cpp_build import (
     DISTROS,
     FLAVOURS,
+    OVERLAP_WORKERS,
+    CompileResult,
     fake_robot_source,
     label_transport,
     message_variants,
     mujoco_dir,
     mujoco_include_flags,
     project_robot_labels,
+    run_concurrently,
     run_parallel,
     yaml_joint_map,
     yaml_modes_and_gains,
@@ -60,11 +65,15 @@ def build_objects(builder, rb, distro: str):
     m = rb.model
     pkg = rb.package_dir
     includes = [pkg / "include", *DISTROS[distro].include_dirs]
-    objects = [builder.compile(source, FLAVOURS["plain"], includes, package=pkg,
-                               name=f"fakeexe_{source.stem}_{m.vendor}_{m.robot}_{distro}", distro=distro,
-                               transport=m.transport)
-               for source in (pkg / "src" / "fake_robot_main.cpp", fake_robot_source(pkg, m.vendor, m.robot))
-               if source is not None]
+    sources = [s for s in (pkg / "src" / "fake_robot_main.cpp", fake_robot_source(pkg, m.vendor, m.robot)) if s]
+
+    def compile_one(source: Path) -> Callable[[], CompileResult]:
+        return lambda: builder.compile(source, FLAVOURS["plain"], includes, package=pkg,
+                                       name=f"fakeexe_{source.stem}_{m.vendor}_{m.robot}_{distro}", distro=distro,
+                                       transport=m.transport)
+
+    # at once: the builder runs one compiler per core however many ask
+    objects = run_concurrently([compile_one(source) for source in sources])
     for o in objects:
         assert o.ok, f"{o.path.name}: {' '.join(o.command)}\n{o.stderr[-6000:]}"
     return objects
@@ -98,11 +107,28 @@ def _buildable(reference):
     return [rb for rb in builds if not vendor_msgs.skip_reason(rb.model.transport)]
 
 
+@pytest.fixture(scope="module")
+def werror_builds(reference, cpp_builder, request) -> dict[str, list[str]]:
+    """{distro: why each robot's objects did not build} for the COMPILE_DISTROS the session's selected tests
+    name, every robot and distro compiled at once (one compiler per core, busy to the last object)."""
+    distros = selected.keep(list(COMPILE_DISTROS), selected.values(request, "distro"))
+    jobs = [(rb, distro) for distro in distros for rb in _buildable(reference)]
+
+    def build(job) -> str:
+        try:
+            build_objects(cpp_builder, *job)
+            return ""
+        except AssertionError as err:  # that distro's test fails with it
+            return str(err)
+
+    problems = run_parallel(jobs, build, OVERLAP_WORKERS)
+    return {distro: [p for (_, d), p in zip(jobs, problems, strict=True) if d == distro and p] for distro in distros}
+
+
 @pytest.mark.parametrize("distro", COMPILE_DISTROS)
-def test_fake_robot_sources_compile_with_werror(reference, cpp_builder, distro):
-    builds = _buildable(reference)
-    assert builds
-    run_parallel(builds, lambda rb: build_objects(cpp_builder, rb, distro))
+def test_fake_robot_sources_compile_with_werror(reference, werror_builds, distro):
+    assert _buildable(reference)
+    assert not werror_builds[distro], "\n".join(werror_builds[distro])
 
 
 # Known before anything is rendered (the YAML's transport), so each robot is a test of its own: only the X2's
@@ -131,7 +157,7 @@ def executables(reference, cpp_builder, request):
             except AssertionError as err:  # that robot's test fails with it
                 return err, set(used)
 
-    return shared_use.Recorded(dict(zip(labels, run_parallel(labels, build), strict=True)))
+    return shared_use.Recorded(dict(zip(labels, run_parallel(labels, build, OVERLAP_WORKERS), strict=True)))
 
 
 @pytest.mark.parametrize("label", EXECUTABLE_LABELS)
@@ -232,9 +258,13 @@ def physics_check(reference, cpp_builder):
     mujoco_version = libs[-1].name
     fake_robot = fake_robot_source(pkg, rb.model.vendor, rb.model.robot)
     assert fake_robot is not None
-    objects = [cpp_builder.compile(source, flags, includes, package=pkg, digest_parts=[mujoco_version],
-                                   name=f"fakephys_{source.stem}", distro=RUN_DISTRO, transport=rb.model.transport)
-               for source in (PHYSICS_CHECK, fake_robot)]
+
+    def compile_one(source: Path) -> Callable[[], CompileResult]:
+        return lambda: cpp_builder.compile(source, flags, includes, package=pkg, digest_parts=[mujoco_version],
+                                           name=f"fakephys_{source.stem}", distro=RUN_DISTRO,
+                                           transport=rb.model.transport)
+
+    objects = run_concurrently([compile_one(source) for source in (PHYSICS_CHECK, fake_robot)])  # at once
     for o in objects:
         assert o.ok, f"{o.path.name}: {' '.join(o.command)}\n{o.stderr[-6000:]}"
     link = cpp_builder.link(objects, ["-Wl,--no-as-needed", str(libs[-1]), f"-Wl,-rpath,{mj}"], "fakephys_g1")
@@ -313,10 +343,13 @@ def test_a_fake_robot_with_a_transmission_gives_the_physics_its_gain_and_offset(
     text = source.read_text(encoding="utf-8")
     assert "kFakeTransmissions.data()}" in text
     assert '  {-2.0, 0.1},  // "elbow"\n' in text and text.count("  {1.0, 0.0},  // ") == 4, text
-    for extra in ([], ["-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()]):
-        run_compiler([*WARNING_FLAGS, *extra, "-fsyntax-only", f"-I{package / 'include'}", *standin_flags(RUN_DISTRO),
-                      *message_include_flags("generic_topics"), str(source)],
-                     what=f"scara_fake_robot.cpp {' '.join(extra[:1])}")
+
+    def check(extra: list[str]) -> Callable[[], object]:
+        return lambda: run_compiler([*WARNING_FLAGS, *extra, "-fsyntax-only", f"-I{package / 'include'}",
+                                     *standin_flags(RUN_DISTRO), *message_include_flags("generic_topics"), str(source)],
+                                    what=f"scara_fake_robot.cpp {' '.join(extra[:1])}")
+
+    run_concurrently([check([]), check(["-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()])])  # both cores
 
 
 def test_benchmark_reports_rate_and_jitter(tmp_path):

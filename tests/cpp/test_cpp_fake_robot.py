@@ -19,8 +19,7 @@ import re
 import subprocess
 import sys
 import time
-from collections.abc import Callable
-from pathlib import Path
+from functools import partial
 
 import pytest
 import yaml
@@ -32,7 +31,6 @@ from tests.support.cpp_build import (
     DISTROS,
     FLAVOURS,
     OVERLAP_WORKERS,
-    CompileResult,
     fake_robot_source,
     label_transport,
     message_variants,
@@ -66,14 +64,10 @@ def build_objects(builder, rb, distro: str):
     pkg = rb.package_dir
     includes = [pkg / "include", *DISTROS[distro].include_dirs]
     sources = [s for s in (pkg / "src" / "fake_robot_main.cpp", fake_robot_source(pkg, m.vendor, m.robot)) if s]
-
-    def compile_one(source: Path) -> Callable[[], CompileResult]:
-        return lambda: builder.compile(source, FLAVOURS["plain"], includes, package=pkg,
-                                       name=f"fakeexe_{source.stem}_{m.vendor}_{m.robot}_{distro}", distro=distro,
-                                       transport=m.transport)
-
     # at once: the builder runs one compiler per core however many ask
-    objects = run_concurrently([compile_one(source) for source in sources])
+    objects = run_concurrently([partial(builder.compile, source, FLAVOURS["plain"], includes, package=pkg,
+                                        name=f"fakeexe_{source.stem}_{m.vendor}_{m.robot}_{distro}", distro=distro,
+                                        transport=m.transport) for source in sources])
     for o in objects:
         assert o.ok, f"{o.path.name}: {' '.join(o.command)}\n{o.stderr[-6000:]}"
     return objects
@@ -258,13 +252,10 @@ def physics_check(reference, cpp_builder):
     mujoco_version = libs[-1].name
     fake_robot = fake_robot_source(pkg, rb.model.vendor, rb.model.robot)
     assert fake_robot is not None
-
-    def compile_one(source: Path) -> Callable[[], CompileResult]:
-        return lambda: cpp_builder.compile(source, flags, includes, package=pkg, digest_parts=[mujoco_version],
-                                           name=f"fakephys_{source.stem}", distro=RUN_DISTRO,
-                                           transport=rb.model.transport)
-
-    objects = run_concurrently([compile_one(source) for source in (PHYSICS_CHECK, fake_robot)])  # at once
+    objects = run_concurrently([partial(cpp_builder.compile, source, flags, includes, package=pkg,  # at once
+                                        digest_parts=[mujoco_version], name=f"fakephys_{source.stem}",
+                                        distro=RUN_DISTRO, transport=rb.model.transport)
+                                for source in (PHYSICS_CHECK, fake_robot)])
     for o in objects:
         assert o.ok, f"{o.path.name}: {' '.join(o.command)}\n{o.stderr[-6000:]}"
     link = cpp_builder.link(objects, ["-Wl,--no-as-needed", str(libs[-1]), f"-Wl,-rpath,{mj}"], "fakephys_g1")
@@ -343,13 +334,10 @@ def test_a_fake_robot_with_a_transmission_gives_the_physics_its_gain_and_offset(
     text = source.read_text(encoding="utf-8")
     assert "kFakeTransmissions.data()}" in text
     assert '  {-2.0, 0.1},  // "elbow"\n' in text and text.count("  {1.0, 0.0},  // ") == 4, text
-
-    def check(extra: list[str]) -> Callable[[], object]:
-        return lambda: run_compiler([*WARNING_FLAGS, *extra, "-fsyntax-only", f"-I{package / 'include'}",
-                                     *standin_flags(RUN_DISTRO), *message_include_flags("generic_topics"), str(source)],
-                                    what=f"scara_fake_robot.cpp {' '.join(extra[:1])}")
-
-    run_concurrently([check([]), check(["-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()])])  # both cores
+    run_concurrently([partial(run_compiler, [*WARNING_FLAGS, *extra, "-fsyntax-only", f"-I{package / 'include'}",
+                                             *standin_flags(RUN_DISTRO), *message_include_flags("generic_topics"),
+                                             str(source)], what=f"scara_fake_robot.cpp {' '.join(extra[:1])}")
+                      for extra in ([], ["-DRHI_FAKE_PHYSICS_MUJOCO", *mujoco_include_flags()])])  # both cores
 
 
 def test_benchmark_reports_rate_and_jitter(tmp_path):

@@ -1,7 +1,7 @@
 """What a transport is: the interface every folder in transports/ implements.
 
 A transport is how a generated driver talks to its robot (a vendor SDK over DDS, or ROS 2 topics).
-Everything rhi-gen knows about one transport lives in its own folder's ``__init__.py``: the YAML
+Everything rhi-gen knows about one transport lives in its own folder, whose ``__init__.py`` exports it: the YAML
 options it accepts (its ``TransportOptions`` subclass, with validation and defaults), its default
 float type, the packages its driver needs (``Dependency``: how CMakeLists.txt and package.xml
 declare each, render/views.py), the files it adds to the package once, the ``transport_options``

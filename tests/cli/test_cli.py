@@ -10,7 +10,7 @@ import pytest
 import yaml
 
 from rhi_gen.cli import main
-from rhi_gen.transports.unitree_dds import G1_ORDER
+from rhi_gen.transports.unitree_dds.known_robots import G1_ORDER
 from tests.support import upstream_urdf
 from tests.support.cpp_build import syntax_check_driver
 from tests.support.repo import REPO

@@ -445,7 +445,8 @@ def yaml_unitree_family(yaml_path: Path, vendor: str, robot: str) -> tuple[str, 
     omits them gets the known robot's (SDK_FACTS.md: the family follows the robot), else hg / 0x01."""
     import yaml
 
-    from rhi_gen.transports.unitree_dds import FAMILIES, KNOWN_ROBOTS
+    from rhi_gen.transports.unitree_dds.known_robots import KNOWN_ROBOTS
+    from rhi_gen.transports.unitree_dds.protocol import FAMILIES
 
     data = yaml.safe_load(yaml_path.read_text(encoding="utf-8"))
     opts = data.get("transport_options") or {}

@@ -29,7 +29,7 @@ def motor_health(model: RobotModel) -> list[str]:
     from rhi_gen): hg MotorState_ temperature / vol / motorstate, go MotorState_ temperature, AimDK hal
     JointState v1.0.0 error_code, EngineAI MotorDebug motor_temperature; the other transports none."""
     if model.transport == "unitree_dds":
-        from rhi_gen.transports.unitree_dds import UnitreeDdsOptions
+        from rhi_gen.transports.unitree_dds.options import UnitreeDdsOptions
 
         assert isinstance(model.transport_options, UnitreeDdsOptions)
         family = model.transport_options.family

@@ -16,7 +16,8 @@ from rhi_gen.inputs.vendor_config import load_config
 from rhi_gen.render.cpp_layout import fold_cpp
 from rhi_gen.render.fake_robot_views import has_fake_robot
 from rhi_gen.render.views import controllers_view
-from rhi_gen.transports.unitree_dds import ARM_SDK_TOPIC, ARM_SDK_WEIGHT_SLOT, UnitreeDdsOptions
+from rhi_gen.transports.unitree_dds.options import UnitreeDdsOptions
+from rhi_gen.transports.unitree_dds.protocol import ARM_SDK_TOPIC, ARM_SDK_WEIGHT_SLOT
 from tests.support.models import model_of_yaml
 from tests.support.repo import REPO
 

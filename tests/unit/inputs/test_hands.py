@@ -19,7 +19,7 @@ from rhi_gen.model import TransportOptions
 from rhi_gen.render.bringup_views import start_controllers
 from rhi_gen.render.views import controllers_view
 from rhi_gen.transports import HandSuggestion, get
-from rhi_gen.transports.unitree_dds import UnitreeDdsOptions
+from rhi_gen.transports.unitree_dds.options import UnitreeDdsOptions
 from rhi_gen.typed_yaml.validator import Validator
 from tests.support import dex3_facts
 from tests.support.models import model_of_yaml

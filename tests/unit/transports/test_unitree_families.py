@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from rhi_gen.transports.unitree_dds import H1_ORDER, QUADRUPED_ORDER, WHEELED_ORDER
+from rhi_gen.transports.unitree_dds.known_robots import H1_ORDER, QUADRUPED_ORDER, WHEELED_ORDER
 from tests.support.cli import new_rejected, run_cli
 
 PKG = "generated/robot_hardware_interface"

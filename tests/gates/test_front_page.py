@@ -40,3 +40,27 @@ def test_the_testing_page_states_the_fresh_clone_skip_count():
     assert documented_skip_count() > 0
     assert re.search(r"without the AimDK message definitions \d+ tests skip", (REPO / README).read_text()) is None, \
         "README.md repeats the skip count: keep it in docs/testing.md only, where the fresh-clone test reads it"
+
+
+DOC_PAGE = re.compile(r"\bdocs/([\w-]+\.md)\b")
+README_SECTION = re.compile(r"\bREADME(?:'s)?[:,]?\s+[\"']?[A-Z]")  # README: Hands, README "See ...", ...
+TOOL_SOURCES = (".py", ".j2", ".hpp", ".cpp")
+
+
+def test_the_tool_points_users_at_pages_that_exist():
+    """rhi-gen's messages, the YAML comments it writes and the generated files name docs/ pages, never a README
+    section (README.md stays a front page, its detail moves); every page they name exists."""
+    named: dict[str, list[str]] = {}
+    sections = []
+    for path in sorted((REPO / "rhi_gen").rglob("*")):
+        if path.suffix not in TOOL_SOURCES or not path.is_file():
+            continue
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            where = f"{path.relative_to(REPO)}:{number}"
+            for page in DOC_PAGE.findall(line):
+                named.setdefault(page, []).append(where)
+            if README_SECTION.search(line):
+                sections.append(f"{where}: {line.strip()}")
+    assert {"transmissions.md", "hands.md", "health-and-faults.md"} <= set(named), sorted(named)
+    assert not {page: where for page, where in named.items() if not (REPO / "docs" / page).is_file()}
+    assert not sections, "name the docs/ page instead of a README section:\n" + "\n".join(sections)

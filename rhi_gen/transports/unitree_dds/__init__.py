@@ -202,13 +202,13 @@ class UnitreeDds(Transport):
         if hands.hands == "dex3":
             return ["# hands: dex3 drives the Dex3-1 hands too: motor_count 49, the hand joints in slots 35..41",
                     "# (left) and 42..48 (right) in the order " + ", ".join(DEX3_ORDER) + ",",
-                    "# on HandCmd_ / HandState_ (see the README, Hands).",
+                    "# on HandCmd_ / HandState_ (see docs/hands.md).",
                     "hands: dex3"]
         if known is None or known.robot != "g1":
             return []
         return ["# hands: none drives the body only; dex3 drives the Dex3-1 hands too (motor_count 49, the",
                 "# hand joints in slots 35..41 left and 42..48 right, in the order " + ", ".join(DEX3_ORDER) + ";",
-                "# use the URDF with hands): see the README, Hands.",
+                "# use the URDF with hands): see docs/hands.md.",
                 "hands: none"]
 
     def suggest_authority(self, known: KnownRobot | None) -> list[str]:
@@ -217,8 +217,7 @@ class UnitreeDds(Transport):
             return []
         return ["# authority: full commands every joint (release the robot's motion controller first);",
                 "# upper_body leaves the legs to the robot's balance controller and commands the waist and",
-                f"# arms through the arm SDK ({ARM_SDK_TOPIC}): see the README, Sharing the robot with its own",
-                "# controller.",
+                f"# arms through the arm SDK ({ARM_SDK_TOPIC}): see docs/sharing-control.md.",
                 "authority: full"]
 
     def motor_health(self, options: TransportOptions) -> tuple[str, ...]:

@@ -48,7 +48,7 @@ AimDK messages are not carried in the repository, tests/support/vendor_msgs.py) 
 why and how to provide them; the others are measured.
 
 --distro (repeatable; default humble, jazzy and rolling) picks the ros2_control stand-ins the driver is
-compiled against (tests/cpp/standins; README "Benchmarks"). It changes only read() + write(): with humble
+compiled against (tests/cpp/standins; docs/benchmarks.md). It changes only read() + write(): with humble
 (hardware_interface 2.x) the exported interfaces point at the driver's own doubles, so read() + write()
 touch nothing else; with jazzy (4.x, 4.34+), kilted (5.x) and rolling (6.x, also Lyrical) the framework
 owns the handles, so read() ends by copying every state value into its handle and write() starts by

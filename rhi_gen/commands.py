@@ -94,7 +94,7 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
     if plan.robot.urdf.transmissions:
         _out(_transmissions_line(plan.robot.config, plan.robot.urdf, plan.yaml_relpath))
     _out(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
-    _out("then build the package in a ROS 2 workspace (README: Try it without the robot) and bring it up:")
+    _out("then build the package in a ROS 2 workspace (docs/try-without-the-robot.md) and bring it up:")
     for label, command in bringup_commands(m.robot, fake_robot=has_fake_robot(m)):
         _out(f"  {label + ':':<19}{command}")
     _warn(plan.warnings)
@@ -108,7 +108,7 @@ def _transmissions_line(config: VendorConfig, urdf: UrdfRobot, yaml_relpath: str
     decided = decide_transmissions(config, urdf)
     total = len(urdf.transmissions)
     return (f"transmissions: {total} in the URDF, {decided.urdf_applied} applied, {decided.urdf_skipped} not "
-            f"(listed in {yaml_relpath}; README: Motors that are not joints)")
+            f"(listed in {yaml_relpath}; docs/transmissions.md)")
 
 
 def _use_colour() -> bool:

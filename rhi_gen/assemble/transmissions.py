@@ -22,7 +22,7 @@ __all__ = ["Decided", "decide_transmissions", "urdf_source"]
 YAML_SOURCE = "vendor YAML"
 SHOWN = 3  # transmission names a warning lists before "and N more"
 FIX_KIND = ("if a motor is not its joint, write it in the vendor YAML: transmissions: {joint: {direction, "
-            "reduction, offset}} or coupled_joints: {group: {joints, matrix}} (README: Motors that are not joints)")
+            "reduction, offset}} or coupled_joints: {group: {joints, matrix}} (docs/transmissions.md)")
 FIX_JOINT = "nothing to do if no motor of joint_map drives that joint; else map it in joint_map"
 FIX_MALFORMED = ("fix the <transmission> in the URDF, or write the joint's transmission in the vendor YAML "
                  "(transmissions: or coupled_joints:) and set urdf_transmissions: false")

@@ -36,12 +36,12 @@ def inspect_text(urdf: UrdfRobot, *, vendor: str | None = None, robot: str | Non
                    f"{len(block.joints)} joints{listed}")
     if urdf.ros2_control:
         out.append("note: `rhi-gen new` writes its own ros2_control macro for the mapped joints: replace the "
-                   "existing tag with it, or keep the tag and do not include the macro (README: \"A description "
-                   "that already has <ros2_control>\")")
+                   "existing tag with it, or keep the tag and do not include the macro (docs/adding-a-robot.md: "
+                   "\"A description that already has <ros2_control>\")")
     if urdf.transmissions:
         applicable = sum(1 for t in urdf.transmissions if not t.problem)
         out.append(f"transmissions: {len(urdf.transmissions)} <transmission> (joint = direction * motor / reduction "
-                   f"+ offset; {applicable} applicable to mapped joints, README: \"Motors that are not joints\")")
+                   f"+ offset; {applicable} applicable to mapped joints, docs/transmissions.md)")
         out += [f"  {describe(t)}" + (f" (line {t.line})" if t.line else "") for t in urdf.transmissions]
     known = transports.known_robot(vendor, robot) if vendor and robot else None
     order = transports.suggest_order([j.name for j in actuated], known)

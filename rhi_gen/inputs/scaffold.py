@@ -145,7 +145,7 @@ def _transmission_lines(urdf: UrdfRobot) -> list[str]:
     shown = urdf.transmissions[:MAX_LISTED]
     more = len(urdf.transmissions) - len(shown)
     return [
-        f"# The URDF has {len(urdf.transmissions)} <transmission>(s) (README: Motors that are not joints). rhi-gen",
+        f"# The URDF has {len(urdf.transmissions)} <transmission>(s) (docs/transmissions.md). rhi-gen",
         "# applies SimpleTransmission and DifferentialTransmission to mapped joints; a joint under",
         "# transmissions: {joint: {direction, reduction, offset}} or coupled_joints: {group: {joints, matrix}}",
         "# replaces the URDF's; urdf_transmissions: false ignores them all.",

@@ -4,7 +4,7 @@ Franka's description with ``ros2_control:=true``, UR's mocked one, xArm's and TI
 example-robot-data: each carries a <ros2_control> tag with another plugin for the very joints the
 generated driver drives. That is a legitimate starting point (migrating a robot to rhi-gen), so it
 is a warning, not an error: `new` and `generate` still write everything and exit 0, and say once per
-robot what the tag is and what to do, so the README's include step never silently adds a second tag
+robot what the tag is and what to do, so the include step of docs/adding-a-robot.md never silently adds a second tag
 on the same joints. `check` (a CI gate) and `diff` say nothing about it.
 
 Silent when there is nothing to choose: a tag whose plugin is the generated one (the description

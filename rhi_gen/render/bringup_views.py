@@ -26,7 +26,7 @@ ARGUMENT_HELP = {
                       "robot's own topics, with ROS 2 discovery kept on this host (no robot needed)",
     "physics": "with use_fake_robot:=true, how its joints move: vacuum (alone, no gravity) or mujoco (the robot "
                "compiled by MuJoCo from description_file: gravity, a floor, its links' coupling, hung in an elastic "
-               "band; the package must be built with MuJoCo, README 'Try it without the robot')",
+               "band; the package must be built with MuJoCo, docs/try-without-the-robot.md)",
     "physics_base": "with physics:=mujoco, how the robot's base is held: band (an elastic band above it; `ros2 param "
                     "set /<robot>_fake_robot release_band true` lets go), free (it stands or falls), fixed (welded to "
                     "the world: an arm)",

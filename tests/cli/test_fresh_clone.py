@@ -1,14 +1,15 @@
 """Issue 24: a fresh clone passes its own tests and runs its own benchmark.
 
 `git clone` of the repository's HEAD into an empty temporary folder (nothing beside it: no ../shared), then
-the README's own commands, parsed from README.md so the test runs them word for word:
+the commands the user documentation gives, parsed from it so the test runs them word for word:
 
-* "Run the tests": the whole command (install-test-deps, venv, pip, pytest) must pass, and the number of
-  skipped tests must be the one README states ("without the AimDK message definitions N tests skip"),
+* README.md's "Run the tests": the whole command (install-test-deps, venv, pip, pytest) must pass, and the
+  number of skipped tests must be the one docs/testing.md states ("without the AimDK message definitions N
+  tests skip"),
   plus this file's own two tests, whose inner copies skip (RHI_FRESH_CLONE_INNER is set) so the clone
   does not clone itself again;
-* "Benchmarks": the command with `--robot g1 --robot pm01` measures both; with `--robot x2` it says in
-  one line that it skipped X2 and why (no raw compiler error).
+* docs/benchmarks.md's "Hot paths": the command with `--robot g1 --robot pm01` measures both; with
+  `--robot x2` it says in one line that it skipped X2 and why (no raw compiler error).
 
 What the clone runs: when this session runs the whole suite, it records which tests read ../shared
 (tests/support/shared_use.py records every open, listing, stat and compiler argument under it, through
@@ -48,20 +49,13 @@ from tests.support.fresh_clone import (
     FreshClone,
     benchmark_command,
     can_clone,
+    documented_skip_count,
     readme_test_command,
 )
-from tests.support.repo import REPO
 
 pytestmark = pytest.mark.cpp  # it runs the whole suite, compiles included, in the clone
 
 INNER_SELF_SKIPS = 2
-
-
-def readme_skip_count() -> int:
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    match = re.search(r"without the AimDK message definitions (\d+) tests skip", text)
-    assert match, "README.md does not say how many tests skip without the AimDK message definitions"
-    return int(match[1])
 
 
 @pytest.fixture(scope="module")
@@ -141,9 +135,9 @@ def test_readme_test_command_passes_in_a_fresh_clone(clone, request, tmp_path_fa
                f"../shared, {len(chosen['run'])}) and, in each run, this file's own two")
         summaries.append(check_phase(clone, SHARED_CPP, report))
     skipped = sum(int(m[1]) if (m := re.search(r"(\d+) skipped", summary)) else 0 for summary in summaries)
-    expected = readme_skip_count() + INNER_SELF_SKIPS * len(summaries)
+    expected = documented_skip_count() + INNER_SELF_SKIPS * len(summaries)
     assert skipped == expected, (
-        f"README says {readme_skip_count()} tests skip without the AimDK message definitions "
+        f"docs/testing.md says {documented_skip_count()} tests skip without the AimDK message definitions "
         f"(+{INNER_SELF_SKIPS} in each of the clone's {len(summaries)} pytest runs: the inner copies of this "
         f"file's tests); the clone skipped {skipped}")
 

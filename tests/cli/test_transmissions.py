@@ -27,8 +27,8 @@ def new_arm(root: Path):
 def test_new_lists_the_transmissions_and_warns_once_per_kind(tmp_path):
     root = tmp_path / "proj"
     result = new_arm(root)
-    assert ("transmissions: 5 in the URDF, 3 applied, 2 not (listed in robots/acme/arm.yaml; README: Motors "
-            "that are not joints)") in result.out.splitlines()
+    assert ("transmissions: 5 in the URDF, 3 applied, 2 not (listed in robots/acme/arm.yaml; docs/"
+            "transmissions.md)") in result.out.splitlines()
     warnings = [line for line in result.err.splitlines() if line.startswith("warning: ")]
     urdf = root / "robots/acme/arm.urdf"
     assert [w.split(": <transmission>")[0] for w in warnings] == [f"warning: {urdf}:33", f"warning: {urdf}:38"]

@@ -341,7 +341,7 @@ def test_a_fake_robot_with_a_transmission_gives_the_physics_its_gain_and_offset(
 
 
 def test_benchmark_reports_rate_and_jitter(tmp_path):
-    """benchmarks/bench_fake_robot.py runs (a short loop, the PM01) and reports what README says it does."""
+    """benchmarks/bench_fake_robot.py runs (a short loop, the PM01) and reports what docs/benchmarks.md says it does."""
     run = subprocess.run([sys.executable, str(REPO / "benchmarks" / "bench_fake_robot.py"), "--robot", "pm01",
                           "--seconds", "0.3", "--steps", "200"], capture_output=True, text=True, timeout=600,
                          env={**os.environ, "RHI_CPP_CACHE": os.environ.get("RHI_CPP_CACHE") or str(tmp_path)})

@@ -4,8 +4,9 @@ zero ament_cpplint and zero ament_uncrustify findings (ROS 2 default configurati
 The package holds the reference robots of robots/ plus the harness's test robots (generic_topics
 tests/cpp/harness/robots/acme/scara, unitree go family robots/unitree/go2w, custom odri/solo12 with
 its regions as generated), so every transport's templates, both unitree message families included,
-are linted; the custom robot is linted again with the README's toy-bus regions filled in. To see and fix the
-findings by hand: tests/support/ament_lint.py COMMAND_LINE, or `.venv/bin/python -m tests.support.ament_lint DIR`.
+are linted; the custom robot is linted again with the toy-bus regions of docs/transports.md's worked example
+filled in. To see and fix the findings by hand: tests/support/ament_lint.py COMMAND_LINE, or
+`.venv/bin/python -m tests.support.ament_lint DIR`.
 """
 from __future__ import annotations
 
@@ -57,7 +58,7 @@ def test_uncrustify_finds_nothing(package):
 
 @pytest.fixture(scope="module")
 def filled_custom_package(tmp_path_factory) -> Path:
-    """The custom robot with the toy bus filled into its regions (the README's worked example)."""
+    """The custom robot with the toy bus filled into its regions (docs/transports.md's worked example)."""
     project = make_test_project(tmp_path_factory.mktemp("lint_custom") / "project", only=["odri/solo12"])
     assert main(["generate", "--project", str(project)]) == 0
     package = project / "generated" / PACKAGE

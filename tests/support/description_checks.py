@@ -19,7 +19,8 @@ IMU_INTERFACES = ["orientation.x", "orientation.y", "orientation.z", "orientatio
                   "angular_velocity.y", "angular_velocity.z", "linear_acceleration.x", "linear_acceleration.y",
                   "linear_acceleration.z"]
 MOCK_PLUGIN = "mock_components/GenericSystem"
-# The driver's health GPIO (README "See the driver's health"), written out here independently of rhi_gen.
+# The driver's health GPIO (docs/health-and-faults.md, "See the driver's health"), written out here independently
+# of rhi_gen.
 HEALTH_STATES = ["state_age_ms", "invalid_states", "stale_holds", "rejected_commands", "writer_overruns", "fault",
                  "estop"]
 

@@ -35,21 +35,38 @@ TIMEOUT = 3600
 EARLY = pytest.StashKey["FreshClone"]()
 
 
-def readme_block(heading: str) -> str:
-    """The first ```sh block of README.md's section ``heading``."""
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    section = text.split(f"\n## {heading}\n", 1)[1].split("\n## ", 1)[0]
-    match = re.search(r"```sh\n(.*?)```", section, re.S)
-    assert match, f"README.md, {heading!r}: no ```sh block"
+# Where the commands the clone runs, and the skip count it checks, are written for users.
+README = "README.md"
+BENCHMARKS_PAGE = "docs/benchmarks.md"
+TESTING_PAGE = "docs/testing.md"
+
+
+def sh_block(page: str, heading: str = "") -> str:
+    """The first ```sh block of ``page`` (relative to the repository), within its ``## heading`` if given."""
+    text = (REPO / page).read_text(encoding="utf-8")
+    if heading:
+        assert f"\n## {heading}\n" in text, f"{page}: no section {heading!r}"
+        text = text.split(f"\n## {heading}\n", 1)[1].split("\n## ", 1)[0]
+    match = re.search(r"```sh\n(.*?)```", text, re.S)
+    assert match, f"{page}, {heading or 'the page'}: no ```sh block"
     return match[1].strip()
 
 
 def readme_test_command() -> str:
-    return readme_block("Run the tests")
+    return sh_block(README, "Run the tests")
 
 
 def benchmark_command() -> str:
-    return readme_block("Benchmarks").split("#", 1)[0].strip()
+    """The hot-path benchmark's command line (docs/benchmarks.md), its comment dropped."""
+    return sh_block(BENCHMARKS_PAGE, "Hot paths").split("#", 1)[0].strip()
+
+
+def documented_skip_count() -> int:
+    """How many tests docs/testing.md says skip without the AimDK message definitions."""
+    text = (REPO / TESTING_PAGE).read_text(encoding="utf-8")
+    match = re.search(r"without the AimDK message definitions (\d+) tests skip", text)
+    assert match, f"{TESTING_PAGE} does not say how many tests skip without the AimDK message definitions"
+    return int(match[1])
 
 
 def can_clone() -> str:

@@ -73,7 +73,7 @@ public:
       std::string_view value;
       if (!split_key(trimmed(text), key, value)) {
         return fail(number, "expected '<joint>: {offset: <rad>, direction: <1|-1>}'",
-                 "see the README's calibration file example");
+                 "see docs/transmissions.md, Calibration without regeneration");
       }
       if (indent > 0) {
         if (block == nullptr) {

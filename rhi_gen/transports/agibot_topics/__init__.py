@@ -217,7 +217,7 @@ class AgibotTopics(Transport):
             return ["# hands: omnihand drives the OmniHands too (position targets only, one HandCommandArray):",
                     *(f"# {line}" for line in textwrap.wrap(text + ".", 96)), "hands: omnihand"]
         return ["# hands: none drives the body only; omnihand drives the OmniHands too (use the URDF with hands):",
-                *(f"# {line}" for line in textwrap.wrap(text + "; see the README, Hands.", 96)), "hands: none"]
+                *(f"# {line}" for line in textwrap.wrap(text + "; see docs/hands.md.", 96)), "hands: none"]
 
     def resolve_authority(self, v: Validator, authority: str, options: TransportOptions, *, vendor: str,
                           robot: str, mapped_slots: frozenset[int]) -> TransportOptions:

@@ -22,8 +22,7 @@ def authority_yaml_lines(known: KnownRobot | None) -> list[str]:
         return []
     return ["# authority: full commands every joint (release the robot's motion controller first);",
             "# upper_body leaves the legs to the robot's balance controller and commands the waist and",
-            f"# arms through the arm SDK ({ARM_SDK_TOPIC}): see the README, Sharing the robot with its own",
-            "# controller.",
+            f"# arms through the arm SDK ({ARM_SDK_TOPIC}): see docs/sharing-control.md.",
             "authority: full"]
 
 

@@ -37,13 +37,13 @@ def dex3_yaml_lines(known: KnownRobot | None, hands: HandSuggestion) -> list[str
     if hands.hands == "dex3":
         return ["# hands: dex3 drives the Dex3-1 hands too: motor_count 49, the hand joints in slots 35..41",
                 "# (left) and 42..48 (right) in the order " + ", ".join(DEX3_ORDER) + ",",
-                "# on HandCmd_ / HandState_ (see the README, Hands).",
+                "# on HandCmd_ / HandState_ (see docs/hands.md).",
                 "hands: dex3"]
     if known is None or known.robot != "g1":
         return []
     return ["# hands: none drives the body only; dex3 drives the Dex3-1 hands too (motor_count 49, the",
             "# hand joints in slots 35..41 left and 42..48 right, in the order " + ", ".join(DEX3_ORDER) + ";",
-            "# use the URDF with hands): see the README, Hands.",
+            "# use the URDF with hands): see docs/hands.md.",
             "hands: none"]
 
 

@@ -66,7 +66,7 @@ def test_what_is_not_applied_is_one_warning_per_kind_of_reason(tmp_path):
         ("arm.urdf:33: <transmission> 'finger_trans' of kind acme_transmissions/FingerReducer not applied: rhi-gen "
          "applies only SimpleTransmission and DifferentialTransmission -> if a motor is not its joint, write it in "
          "the vendor YAML: transmissions: {joint: {direction, reduction, offset}} or coupled_joints: {group: "
-         "{joints, matrix}} (README: Motors that are not joints)"),
+         "{joints, matrix}} (docs/transmissions.md)"),
         ("arm.urdf:38: <transmission> 'broken_trans' (SimpleTransmission) not applied: <mechanicalReduction> of "
          "actuator 'x' is 'zero', not a number -> fix the <transmission> in the URDF, or write the joint's "
          "transmission in the vendor YAML (transmissions: or coupled_joints:) and set urdf_transmissions: false"),

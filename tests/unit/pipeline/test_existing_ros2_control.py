@@ -159,7 +159,7 @@ def _with_tag(plugin: str, joints: list[str]) -> str:
 
 
 def test_a_tag_with_the_generated_plugin_is_the_generated_macro(tmp_path):
-    """The description already includes the generated macro (README step 4): nothing to warn about."""
+    """The description already includes the generated macro (docs/adding-a-robot.md, step 4): nothing to warn about."""
     urdf = tmp_path / "arm.urdf"
     urdf.write_text(_with_tag("robot_hardware_interface/acme/ArmHardwareInterface", ["shoulder_pan", "elbow"]))
     assert new(tmp_path / "proj", "acme", "arm", urdf).err == ""

@@ -5,6 +5,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -14,7 +15,7 @@ from rhi_gen.cli import main
 from rhi_gen.transports.unitree_dds import G1_ORDER
 from tests.support import upstream_urdf
 from tests.support.cpp_build import syntax_check_driver
-from tests.support.repo import REPO
+from tests.support.repo import REPO, copy_project
 from tests.support.repo import URDF_FIXTURES as FIXTURES
 
 UPSTREAM_G1 = upstream_urdf.find("unitree_g1.urdf")  # the repository's copy (tests/data/upstream_urdf)
@@ -197,16 +198,27 @@ def test_completion_for_a_named_shell_needs_no_shell_parent(tmp_path):
     assert script.read_text().splitlines() == shown[:-1]
 
 
-def test_check_imports_no_rich():
-    """`rhi-gen check` runs as a pre-commit hook: rich would double its start-up (help is plain text).
+def test_check_with_nothing_changed_loads_and_renders_nothing(tmp_path):
+    """`rhi-gen check` runs as a pre-commit hook: with nothing changed since the last check that passed, it
+    answers from that check's memo (rhi_gen/pipeline/verified.py), importing neither the loaders (PyYAML,
+    lxml, xacro), the model nor the renderer (Jinja), and never rich (help is plain text).
 
     pydantic is imported: typer 0.29 converts every option value through a pydantic TypeAdapter, and its
     public API has no way to declare an option without one (its parser= runs inside that adapter too).
     """
-    probe = ("import sys; from rhi_gen.cli import main; main(['check', '--project', sys.argv[1]]); "
-             "print(sorted({m.split('.')[0] for m in sys.modules} & {'rich'}))")
-    probed = subprocess.run([sys.executable, "-c", probe, str(REPO)], capture_output=True, text=True)
-    assert probed.returncode == 0 and probed.stdout.splitlines()[-1] == "[]", probed.stdout + probed.stderr
+    project = copy_project(tmp_path / "proj", generated=True)
+    past = time.time() - 3600  # settled files: the memo skips those written while a check may read them
+    for path in project.rglob("*"):
+        os.utime(path, (past, past))
+    env = {**os.environ, "RHI_GEN_CACHE": str(tmp_path / "cache")}
+    probe = ("import sys; from rhi_gen.cli import main; code = main(['check', '--project', sys.argv[1]]); "
+             "print(code, sorted({m for m in sys.modules if m.split('.')[0] in "
+             "('yaml', 'lxml', 'xacro', 'jinja2', 'rich') or m.startswith(('rhi_gen.model', 'rhi_gen.render', "
+             "'rhi_gen.inputs', 'rhi_gen.assemble'))}))")
+    first = subprocess.run([sys.executable, "-c", probe, str(project)], capture_output=True, text=True, env=env)
+    assert first.returncode == 0 and "'yaml'" in first.stdout.splitlines()[-1], first.stdout + first.stderr
+    again = subprocess.run([sys.executable, "-c", probe, str(project)], capture_output=True, text=True, env=env)
+    assert again.returncode == 0 and again.stdout.splitlines()[-1] == "0 []", again.stdout + again.stderr
 
 
 def test_generate_with_no_robots_is_a_clear_error(tmp_path, capsys):

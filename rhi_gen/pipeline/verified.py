@@ -123,7 +123,11 @@ def record(project: Project, loaded: Sequence[LoadedRobot], outputs: Iterable[st
         except OSError:
             return False
         hashes[str(path)] = _sha256(path)
-    memo = {"format": FORMAT, "root": str(project.root), "robots": len(yamls), "stamp": code_stamp(),
+    try:
+        stamp = code_stamp()
+    except OSError:  # a file of rhi-gen that cannot be read: no memo could ever match
+        return False
+    memo = {"format": FORMAT, "root": str(project.root), "robots": len(yamls), "stamp": stamp,
             "yamls": [str(p) for p in yamls], "files": hashes}
     return _write(memo_path(project), json.dumps(memo, sort_keys=True))
 

@@ -3,17 +3,22 @@
 Exit codes: 0 ok, 1 differences found (check/diff), 2 bad input (one line on stderr, nothing written),
 3 internal error (a bug in rhi-gen; set RHI_GEN_DEBUG=1 for the traceback).
 
-The parser is typer: its help layout, `rhi-gen COMMAND --help`, and shell completion
-(`--install-completion`, `--show-completion`). Each command here only parses: it hands back the
-commands.py function with its values, and main() runs it outside click, so every error reaches the
-one mapping below. Click's usage errors become one line in the shape of every other error.
-`rhi-gen check` runs as a pre-commit hook, so start-up stays short: help is plain text (rich is
-never imported) and options are converted here rather than by typer's pydantic validators.
+The parser is typer, used through its public names only (typer.Typer, typer.Option, typer.Context,
+typer.main.get_command, typer.core's command classes, typer.TyperException; no private module of typer, no
+private attribute): its help layout, `rhi-gen COMMAND --help`, and shell completion
+(`--install-completion`, `--show-completion`, which also take the shell's name: `--show-completion bash`).
+Each command here only parses: it hands back the commands.py function with its values, and main() runs
+it outside click, so every error reaches the one mapping below. Click's usage errors (typer.TyperException
+and its kin) become one line in the shape of every other error. `rhi-gen check` runs as a pre-commit
+hook, so start-up stays short: help is plain text (rich is never imported) and the transport registry
+is imported only to show `rhi-gen new --help`. typer converts every option value through pydantic
+(about 0.09 s of start-up) and offers no public way around it.
 """
 # No `from __future__ import annotations` here, unlike every other module: typer reads these signatures,
 # and annotations evaluated once at definition spare it evaluating their strings on every call (~5 ms).
 
 import functools
+import itertools
 import os
 import sys
 from collections.abc import Callable, Sequence
@@ -21,13 +26,11 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from typer._click.exceptions import NoArgsIsHelpError, UsageError
-from typer.core import TyperGroup
+import typer.completion
+from typer.core import TyperCommand, TyperGroup
 
 from . import __version__, commands
 from .errors import RhiGenError
-from .transports import DEFAULT as DEFAULT_TRANSPORT
-from .transports import NAMES as TRANSPORT_NAMES
 
 PROG = "rhi-gen"
 DESCRIPTION = "Generate complete ros2_control hardware interfaces from a URDF and a vendor YAML."
@@ -36,7 +39,7 @@ FORCE_HELP = ("Overwrite generated files edited outside their user regions (or h
 
 Run = Callable[[], int]  # a command with its parsed values: main() runs it and returns its exit code
 
-app = typer.Typer(name=PROG, help=DESCRIPTION, no_args_is_help=True, rich_markup_mode=None,
+app = typer.Typer(name=PROG, help=DESCRIPTION, rich_markup_mode=None,
                   pretty_exceptions_enable=False, context_settings={"help_option_names": ["-h", "--help"]})
 
 ProjectOpt = Annotated[Path | None, typer.Option(
@@ -62,13 +65,25 @@ def _root(version: Annotated[bool, typer.Option("--version", callback=_version, 
     """Only for --version: the commands below do the work."""
 
 
-@app.command()
+class _NewCommand(TyperCommand):
+    """`rhi-gen new`, whose --transport help lists the transports: the registry (rhi_gen.transports, which
+    imports every transport, the model and the validator, 60 ms) is read only when that help is shown."""
+
+    def format_help(self, ctx: Any, formatter: Any) -> None:  # click's Context and HelpFormatter
+        from .transports import DEFAULT, NAMES
+
+        for param in self.params:
+            if param.name == "transport":
+                param.help = f"{' | '.join(NAMES)} (default: the vendor's, else {DEFAULT})."  # type: ignore[attr-defined]
+        super().format_help(ctx, formatter)
+
+
+@app.command(cls=_NewCommand)
 def new(vendor: Annotated[str, typer.Option(help="Vendor name: C++ namespace and folder (e.g. unitree).")],
         robot: Annotated[str, typer.Option(help="Robot name: file stem (e.g. g1).")],
         urdf: Annotated[Path, typer.Option(help="The robot's URDF or .xacro file.")],
         transport: Annotated[str | None, typer.Option(
-            help=f"{' | '.join(TRANSPORT_NAMES)} (default: the vendor's, else {DEFAULT_TRANSPORT}).",
-            show_default=False)] = None,
+            help="The transport (docs/transports.md; default: the vendor's).", show_default=False)] = None,
         xacro_arg: XacroArgOpt = None,
         package_path: PackagePathOpt = None,
         force: Annotated[bool, typer.Option("--force", help="Overwrite an existing robot YAML.")] = False,
@@ -140,59 +155,49 @@ def list_robots(project: ProjectOpt = None) -> Run:
     return functools.partial(commands.list_robots, project=project)
 
 
-class _PlainValue:
-    """Converts an option's text to str or Path as typer would, without the pydantic validator typer
-    builds for every option it converts (pydantic's import alone is about 0.1 s on each call)."""
-
-    def __init__(self, convert: Callable[[str], Any]) -> None:
-        self.convert = convert
-
-    def coerce(self, value: Any, param: Any, ctx: Any) -> Any:
-        if param.multiple or param.nargs == -1:
-            return tuple(self.convert(v) for v in value or ())
-        return None if value is None else self.convert(value)
+SHELLS = ("bash", "zsh", "fish", "powershell", "pwsh")  # what typer's completion scripts are written for
 
 
-_PLAIN = {str: _PlainValue(str), Path: _PlainValue(Path), bool: _PlainValue(bool)}
+def _completion_with_named_shell(typer_callback: Callable[..., Any], ctx: typer.Context, param: Any,
+                                 value: Any) -> Any:
+    """typer's --install-completion / --show-completion, given the shell named right after the flag.
 
-
-def _plain_values(command: typer.core.TyperCommand | TyperGroup, ctx: typer.Context) -> None:
-    """Give every option of ``command`` and its subcommands, --help included, the plain conversion of its type.
-
-    Sets typer's lazily built `_runtime_param`; should a typer release drop it, typer's own conversion runs.
+    typer's flags take no value: they ask shellingham which shell is the parent process, and ignore
+    the `bash` of `rhi-gen --show-completion bash`. Without a shell above rhi-gen (nohup, setsid, cron,
+    an IDE, `bash -c` exec'ing its one command) that fails ("Shell  not supported."). typer's callbacks take
+    a shell name as their value (they do for the flag's non-detecting form), so the named one is handed
+    on; a flag alone still asks shellingham. Should a typer release rename these options, the flags
+    work as typer's own again (tests/cli/test_cli.py's detached completion test then fails).
     """
-    for param in command.get_params(ctx):
-        item = _one_value_type(getattr(getattr(param, "type_descriptor", None), "annotation", None))
-        if item in _PLAIN and getattr(param, "_runtime_param", ...) is None:
-            param._runtime_param = _PLAIN[item]  # type: ignore[attr-defined]
-    for name, sub in getattr(command, "commands", {}).items():
-        _plain_values(sub, typer.Context(sub, parent=ctx, info_name=name))
-
-
-def _one_value_type(annotation: Any) -> Any:
-    """str for str, list[str] and str | None: the type of one value."""
-    args = [a for a in getattr(annotation, "__args__", ()) if a is not type(None)]
-    return args[0] if len(args) == 1 else annotation
+    if value and not ctx.resilient_parsing:
+        words = list(ctx.find_root().obj or ())
+        named = [after for flag, after in itertools.pairwise(words) if flag in param.opts and after in SHELLS]
+        value = named[0] if named else value
+    return typer_callback(ctx, param, value)
 
 
 @functools.cache
 def _click_command() -> TyperGroup:
-    """The click command typer builds from `app` (with the completion options), its options made plain."""
+    """The click command typer builds from `app` (public typer.main.get_command), with the completion
+    options honouring a named shell."""
     command = typer.main.get_command(app)
     assert isinstance(command, TyperGroup)
-    _plain_values(command, typer.Context(command, info_name=PROG, **command.context_settings))
+    for param in command.params:
+        if param.name in ("install_completion", "show_completion") and param.callback is not None:
+            param.callback = functools.partial(_completion_with_named_shell, param.callback)
     return command
 
 
-def _usage_line(exc: UsageError, argv: Sequence[str]) -> str:
+def _usage_line(exc: typer.TyperException, argv: Sequence[str]) -> str:
     """A click usage error (missing or unknown option, no such command) as one line, like every other error.
 
     Click leaves out the command of an option that lacks its value (or has one it takes none): that is
     the command named first on the line.
     """
     message = " ".join(exc.format_message().split()).rstrip(".")
-    if exc.ctx is not None:
-        command = exc.ctx.command_path
+    ctx = getattr(exc, "ctx", None)  # click's UsageError carries the context of the command it was parsing
+    if ctx is not None:
+        command = ctx.command_path
     else:
         first = next((a for a in argv if not a.startswith("-")), "")
         command = f"{PROG} {first}" if first in _click_command().commands else PROG
@@ -200,24 +205,27 @@ def _usage_line(exc: UsageError, argv: Sequence[str]) -> str:
 
 
 def _parse(argv: Sequence[str]) -> Run | int:
-    """The command to run with its values, or the exit code of what click already did (help, version)."""
-    try:
-        parsed: Run | int | None = _click_command().main(args=argv, prog_name=PROG, standalone_mode=False)
-    except NoArgsIsHelpError as exc:  # `rhi-gen` alone: the help on stdout, and the exit code of a usage error
-        typer.echo(exc.format_message())
-        return 2
+    """The command to run with its values, or the exit code of what click already did (help, version).
+
+    The words are handed to the root context (ctx.obj) for the completion flags' shell name.
+    """
+    parsed: Run | int | None = _click_command().main(args=list(argv), prog_name=PROG, standalone_mode=False,
+                                                      obj=tuple(argv))
     return 0 if parsed is None else parsed
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point: every RhiGenError is one line and exit 2; anything else is a bug (exit 3)."""
     args = sys.argv[1:] if argv is None else list(argv)
+    if not args:  # `rhi-gen` alone: the help on stdout, and the exit code of a usage error
+        _parse(["--help"])
+        return 2
     try:
         run = _parse(args)
         return run if isinstance(run, int) else run()
     except SystemExit as exc:  # --install-completion and --show-completion print and exit 0
         return exc.code if isinstance(exc.code, int) else 0
-    except UsageError as exc:
+    except typer.TyperException as exc:  # only click raises these: a usage error (run() is outside click)
         sys.stderr.write(_usage_line(exc, args) + "\n")
         return 2
     except RhiGenError as exc:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import sys
+import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -211,11 +212,23 @@ def diff(*, robots: Sequence[str] | None, project: Path | None) -> int:
 
 
 def check(*, project: Path | None) -> int:
-    """CI gate: 1 when generated/ is not what `generate` would write now (stale inputs, a file, a version)."""
+    """CI gate: 1 when generated/ is not what `generate` would write now (stale inputs, a file, a version).
+
+    When the last check that passed read exactly these bytes with this rhi-gen, it answers from that memo
+    (pipeline/verified.py): a pre-commit hook with nothing changed loads no robot and renders nothing.
+    """
+    from .pipeline import verified
+
+    began = time.time()
+    proj = _project(project)
+    robots = verified.still_verified(proj)
+    if robots is not None:  # exactly the bytes the last passing check read, with this rhi-gen
+        _out(f"generated/ is up to date ({robots} robots)")
+        return 0
+
     from .pipeline.generate import plan_generation
     from .pipeline.load import load_robots
 
-    proj = _project(project)
     loaded = load_robots(proj)
     if not loaded:
         raise ProjectError("no robots found", file=proj.relative(proj.robots_dir), fix="add one with `rhi-gen new`")
@@ -237,6 +250,7 @@ def check(*, project: Path | None) -> int:
     for b in plan.blocked:
         _out(f"hand edit: {b.note()}")
     if not plan.differs and not stale:
+        verified.record(proj, loaded, [c.path for c in plan.files], began)
         _out(f"generated/ is up to date ({len(loaded)} robots)")
         return 0
     _err(f"generated/ is stale: {len(stale)} robot(s) with changed inputs, {len(files)} file(s) differ; "

@@ -5,7 +5,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import ProjectError
-from .model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, vendor_problem
 
 PACKAGE_NAME = "robot_hardware_interface"
 
@@ -92,6 +91,9 @@ def select_yamls(project: Project, names: list[str] | None) -> list[Path]:
 
 def validate_names(vendor: str, robot: str, class_prefix: str | None = None) -> None:
     """For `new`: refuse names that would escape robots/ or break C++ before touching disk."""
+    # imported here: rhi_gen.model (40 ms) is not needed to find a project (`rhi-gen check`'s first step)
+    from .model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, vendor_problem
+
     for problem, key in ((vendor_problem(vendor), "--vendor"), (identifier_problem(robot, "robot"), "--robot")):
         if problem:
             raise ProjectError(problem, key=key, fix="choose another name: lowercase letters, digits and "

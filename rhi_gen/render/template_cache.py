@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
-import os
 import sys
 from pathlib import Path
 
 import jinja2
 from jinja2.bccache import Bucket
+
+from ..cache import cache_root
 
 ENVIRONMENT_SOURCE = Path(__file__).with_name("environment.py")
 
@@ -36,11 +37,9 @@ class _ForgivingCache(jinja2.FileSystemBytecodeCache):
 
 def cache_folder() -> Path:
     """``$RHI_GEN_CACHE`` or ``$XDG_CACHE_HOME/rhi-gen`` (``~/.cache/rhi-gen``), then the key folder."""
-    home_cache = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
-    root = os.environ.get("RHI_GEN_CACHE") or home_cache / "rhi-gen"
     key = hashlib.sha256(ENVIRONMENT_SOURCE.read_bytes())
     key.update(f"{jinja2.__version__} {sys.implementation.cache_tag}".encode())
-    return Path(root) / "templates" / key.hexdigest()[:16]
+    return cache_root() / "templates" / key.hexdigest()[:16]
 
 
 def compiled_template_cache() -> jinja2.BytecodeCache | None:

@@ -2,8 +2,10 @@
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -13,7 +15,7 @@ from rhi_gen.cli import main
 from rhi_gen.transports.unitree_dds.known_robots import G1_ORDER
 from tests.support import upstream_urdf
 from tests.support.cpp_build import syntax_check_driver
-from tests.support.repo import REPO
+from tests.support.repo import REPO, copy_project
 from tests.support.repo import URDF_FIXTURES as FIXTURES
 
 UPSTREAM_G1 = upstream_urdf.find("unitree_g1.urdf")  # the repository's copy (tests/data/upstream_urdf)
@@ -159,12 +161,64 @@ def test_install_completion_writes_the_script_and_sources_it(tmp_path):
     assert script.read_text() == in_bash("rhi-gen --show-completion bash").stdout.rstrip("\n")
 
 
-def test_check_imports_neither_pydantic_nor_rich():
-    """`rhi-gen check` runs as a pre-commit hook: typer's pydantic validators and rich would double its start-up."""
-    probe = ("import sys; from rhi_gen.cli import main; main(['check', '--project', sys.argv[1]]); "
-             "print(sorted({m.split('.')[0] for m in sys.modules} & {'pydantic', 'rich'}))")
-    probed = subprocess.run([sys.executable, "-c", probe, str(REPO)], capture_output=True, text=True)
-    assert probed.returncode == 0 and probed.stdout.splitlines()[-1] == "[]", probed.stdout + probed.stderr
+# Runs the command given after it with no terminal and no shell among its ancestors, as nohup, setsid or a job
+# runner can: forks, and the child waits until it is orphaned (reparented away from this process), starts
+# a session of its own, then runs the command through nohup with stdin from /dev/null and prints its exit code.
+DETACHED = """
+import os, subprocess, sys, time
+me = os.getpid()
+if os.fork():
+    os._exit(0)
+while os.getppid() == me:
+    time.sleep(0.01)
+os.setsid()
+code = subprocess.call(["nohup", *sys.argv[1:]], stdin=subprocess.DEVNULL, stderr=subprocess.STDOUT)
+print(f"exit {code}", flush=True)
+"""
+
+
+def detached(*args: str, home: Path) -> list[str]:
+    """``rhi-gen ARGS`` with no shell above it (see DETACHED), SHELL unset: the lines it printed, then its exit code."""
+    env = {k: v for k, v in os.environ.items() if k != "SHELL"}
+    done = subprocess.run([sys.executable, "-c", DETACHED, str(BIN / "rhi-gen"), *args], stdin=subprocess.DEVNULL,
+                          capture_output=True, text=True, env={**env, "HOME": str(home)}, timeout=120)
+    return done.stdout.splitlines()  # read to the end of the pipe: the orphan holds it until it exits
+
+
+@pytest.mark.skipif(shutil.which("nohup") is None, reason="needs nohup")
+def test_completion_for_a_named_shell_needs_no_shell_parent(tmp_path):
+    """`--show-completion bash` and `--install-completion bash` name the shell: no detection, whatever the parent."""
+    shown = detached("--show-completion", "bash", home=tmp_path)
+    assert shown[-1] == "exit 0" and "_RHI_GEN_COMPLETE=complete_bash $1" in "\n".join(shown), shown
+    assert shown[-2] == "complete -o default -F _rhi_gen_completion rhi-gen"
+    installed = detached("--install-completion", "bash", home=tmp_path)
+    assert installed[-1] == "exit 0", installed
+    script = tmp_path / ".bash_completions/rhi-gen.sh"
+    assert f"source '{script}'" in (tmp_path / ".bashrc").read_text()
+    assert script.read_text().splitlines() == shown[:-1]
+
+
+def test_check_with_nothing_changed_loads_and_renders_nothing(tmp_path):
+    """`rhi-gen check` runs as a pre-commit hook: with nothing changed since the last check that passed, it
+    answers from that check's memo (rhi_gen/pipeline/verified.py), importing neither the loaders (PyYAML,
+    lxml, xacro), the model nor the renderer (Jinja), and never rich (help is plain text).
+
+    pydantic is imported: typer 0.29 converts every option value through a pydantic TypeAdapter, and its
+    public API has no way to declare an option without one (its parser= runs inside that adapter too).
+    """
+    project = copy_project(tmp_path / "proj", generated=True)
+    past = time.time() - 3600  # settled files: the memo skips those written while a check may read them
+    for path in project.rglob("*"):
+        os.utime(path, (past, past))
+    env = {**os.environ, "RHI_GEN_CACHE": str(tmp_path / "cache")}
+    probe = ("import sys; from rhi_gen.cli import main; code = main(['check', '--project', sys.argv[1]]); "
+             "print(code, sorted({m for m in sys.modules if m.split('.')[0] in "
+             "('yaml', 'lxml', 'xacro', 'jinja2', 'rich') or m.startswith(('rhi_gen.model', 'rhi_gen.render', "
+             "'rhi_gen.inputs', 'rhi_gen.assemble'))}))")
+    first = subprocess.run([sys.executable, "-c", probe, str(project)], capture_output=True, text=True, env=env)
+    assert first.returncode == 0 and "'yaml'" in first.stdout.splitlines()[-1], first.stdout + first.stderr
+    again = subprocess.run([sys.executable, "-c", probe, str(project)], capture_output=True, text=True, env=env)
+    assert again.returncode == 0 and again.stdout.splitlines()[-1] == "0 []", again.stdout + again.stderr
 
 
 def test_generate_with_no_robots_is_a_clear_error(tmp_path, capsys):

@@ -17,6 +17,7 @@ is imported only to show `rhi-gen new --help`. typer converts every option value
 # No `from __future__ import annotations` here, unlike every other module: typer reads these signatures,
 # and annotations evaluated once at definition spare it evaluating their strings on every call (~5 ms).
 
+import contextlib
 import functools
 import itertools
 import os
@@ -234,12 +235,22 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         sys.stderr.write("interrupted; nothing half-written was left behind\n")
         return 130
+    except BrokenPipeError:  # the reader went away (`rhi-gen diff | head`): stop quietly, as on SIGPIPE
+        _silence_stdout()
+        return 141
     except Exception as exc:  # a bug: one line, the traceback only on request
         if os.environ.get("RHI_GEN_DEBUG"):
             raise
         sys.stderr.write(f"internal error: {type(exc).__name__}: {exc} (a bug in rhi-gen; rerun with "
                          "RHI_GEN_DEBUG=1 and report it)\n")
         return 3
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so the interpreter's last flush into the closed pipe raises nothing."""
+    with contextlib.suppress(OSError, ValueError, AttributeError):
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
 
 
 def entry() -> None:

@@ -224,3 +224,17 @@ def test_check_with_nothing_changed_loads_and_renders_nothing(tmp_path):
 def test_generate_with_no_robots_is_a_clear_error(tmp_path, capsys):
     code, _, err = run(["generate", "--project", str(tmp_path)], capsys)
     assert code == 2 and "no robots found" in err and "rhi-gen new" in err
+
+
+def test_diff_into_a_reader_that_stops_early_ends_quietly(robots_project):
+    """`rhi-gen diff | head`: the reader closes the pipe after a line; rhi-gen stops as a command killed by
+    SIGPIPE does (141), with no traceback or 'internal error' on stderr."""
+    exe = BIN / "rhi-gen"
+    proc = subprocess.Popen([str(exe), "diff", "-C", str(robots_project)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    assert proc.stdout is not None and proc.stderr is not None
+    assert proc.stdout.readline()  # nothing generated yet: the diff has many lines, the reader takes one
+    proc.stdout.close()
+    err = proc.stderr.read().decode()
+    assert proc.wait(timeout=600) == 141, err
+    assert err == ""

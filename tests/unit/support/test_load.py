@@ -76,14 +76,36 @@ def test_a_spinner_ends_with_its_parent() -> None:
     assert wait_gone(pids) == []
 
 
+# A conftest that registers the load mode as tests/conftest.py does (once, also where a parent conftest did).
+CONFTEST = ("from tests.support import load\n\n"
+            "def pytest_configure(config):\n"
+            "    if not config.pluginmanager.has_plugin('rhi-load'):\n"
+            "        config.pluginmanager.register(load, 'rhi-load')\n")
+
+
+def run_session(folder: Path, test: str, per_core: int) -> tuple[subprocess.CompletedProcess, list[int]]:
+    """pytest on ``folder``/test_session.py (``test``, which writes its spinners' pids to ``folder``/pids) with
+    RHI_TEST_LOAD=``per_core``: the run, and the pids."""
+    (folder / "conftest.py").write_text(CONFTEST)
+    (folder / "test_session.py").write_text(textwrap.dedent(test))
+    env = {**os.environ, load.ENV: str(per_core), "PYTHONPATH": str(REPO)}
+    env.pop(load.OWNER, None)
+    run = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "--rootdir", str(folder),
+                          str(folder / "test_session.py")], cwd=folder, env=env, capture_output=True, text=True,
+                         timeout=300)
+    return run, [int(pid) for pid in (folder / "pids").read_text().split()]
+
+
 def test_a_session_loads_the_machine_and_a_nested_one_does_not(tmp_path: Path) -> None:
     """A pytest session with RHI_TEST_LOAD=1 runs one spinner per core while its tests run, a pytest started
     inside it (the fresh clone's inner run) starts none, and none is left once the session ended."""
-    (tmp_path / "conftest.py").write_text("from tests.support import load\n\n"
-                                          "def pytest_configure(config):\n"
-                                          "    if not config.pluginmanager.has_plugin('rhi-load'):\n"
-                                          "        config.pluginmanager.register(load, 'rhi-load')\n")
-    (tmp_path / "test_seen.py").write_text(textwrap.dedent(f"""
+    inner = tmp_path / "inner"
+    inner.mkdir()
+    (inner / "conftest.py").write_text(CONFTEST)
+    (inner / "test_inner.py").write_text("from tests.support import load\n\n"
+                                         "def test_inner(request):\n"
+                                         "    assert load.STATE not in request.config.stash\n")
+    run, pids = run_session(tmp_path, f"""
         import os, subprocess, sys
         from tests.support import load
 
@@ -94,47 +116,27 @@ def test_a_session_loads_the_machine_and_a_nested_one_does_not(tmp_path: Path) -
             assert spinners.running() == spinners.count == load.cores()
             assert os.environ[load.OWNER] == str(os.getpid())
             inner = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider",
-                                    {str(tmp_path / "inner")!r}], capture_output=True, text=True)
+                                    {str(inner)!r}], capture_output=True, text=True)
             assert "none started here" in inner.stdout, inner.stdout
             assert "1 passed" in inner.stdout, inner.stdout
-    """))
-    inner = tmp_path / "inner"
-    inner.mkdir()
-    (inner / "conftest.py").write_text((tmp_path / "conftest.py").read_text())
-    (inner / "test_inner.py").write_text("from tests.support import load\n\n"
-                                         "def test_inner(request):\n"
-                                         "    assert load.STATE not in request.config.stash\n")
-    env = {**os.environ, load.ENV: "1", "PYTHONPATH": str(REPO)}
-    env.pop(load.OWNER, None)
-    run = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "--rootdir", str(tmp_path),
-                          str(tmp_path / "test_seen.py")], cwd=tmp_path, env=env, capture_output=True, text=True,
-                         timeout=300)
+    """, 1)
     assert run.returncode == 0, run.stdout + run.stderr
     assert f"load mode ({load.ENV}): {load.cores()} busy processes" in run.stdout
-    pids = [int(pid) for pid in (tmp_path / "pids").read_text().split()]
     assert len(pids) == load.cores()
     assert spinning(pids) == [], "the session stopped its spinners when it ended"
 
 
-def test_a_failing_session_stops_its_spinners(tmp_path: Path) -> None:
-    (tmp_path / "conftest.py").write_text("from tests.support import load\n\n"
-                                          "def pytest_configure(config):\n"
-                                          "    if not config.pluginmanager.has_plugin('rhi-load'):\n"
-                                          "        config.pluginmanager.register(load, 'rhi-load')\n")
-    (tmp_path / "test_fails.py").write_text(textwrap.dedent(f"""
+@pytest.mark.parametrize(("ending", "exit_code"), [("raise KeyboardInterrupt", 2), ("assert False", 1)],
+                         ids=["ctrl-c", "failure"])
+def test_an_interrupted_or_failed_session_stops_its_spinners(tmp_path: Path, ending: str, exit_code: int) -> None:
+    run, pids = run_session(tmp_path, f"""
         from tests.support import load
 
-        def test_fails(request):
+        def test_ends(request):
             with open({str(tmp_path / "pids")!r}, "w") as f:
                 f.write(" ".join(str(p.pid) for p in request.config.stash[load.STATE].processes))
-            raise KeyboardInterrupt  # what a Ctrl-C does to the test running
-    """))
-    env = {**os.environ, load.ENV: "2", "PYTHONPATH": str(REPO)}
-    env.pop(load.OWNER, None)
-    run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--rootdir", str(tmp_path),
-                          str(tmp_path / "test_fails.py")], cwd=tmp_path, env=env, capture_output=True, text=True,
-                         timeout=300)
-    assert run.returncode == 2, run.stdout + run.stderr  # interrupted
-    pids = [int(pid) for pid in (tmp_path / "pids").read_text().split()]
+            {ending}  # a Ctrl-C while the test runs, or a failure
+    """, 2)
+    assert run.returncode == exit_code, run.stdout + run.stderr
     assert len(pids) == 2 * load.cores()
     assert spinning(pids) == []

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import fresh_clone, fresh_clone_selection, shared_use, vendor_msgs
+from tests.support import fresh_clone, fresh_clone_selection, load, shared_use, vendor_msgs
 from tests.support.cli import cli
 from tests.support.repo import copy_project
 
@@ -16,6 +16,11 @@ FIXTURE_READS = pytest.StashKey[dict[object, set[str]]]()
 shared_use.install()
 shared_use.watch(vendor_msgs.UPSTREAM)
 shared_use.watch(vendor_msgs.UPSTREAM_MSGS)
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """The load mode (RHI_TEST_LOAD=N: N busy processes per core beside the session, tests/support/load.py)."""
+    config.pluginmanager.register(load, "rhi-load")
 
 
 @pytest.fixture

@@ -17,7 +17,6 @@ import re
 import shutil
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -468,15 +467,14 @@ def chain_urdf(joints: int, *, name: str = "big", broken_at: int | None = None) 
 
 @pytest.mark.cpp  # g++ -fsyntax-only on the generated drivers
 def test_large_urdf_generates_and_compiles(tmp_path):
+    """1200 joints: ``new`` generates every joint and the driver compiles. How long it takes is the
+    benchmark's figure (benchmarks/bench_generate.py, `new` on a 1200-joint chain), never a verdict here."""
     urdf = tmp_path / "big.urdf"
     urdf.write_text(chain_urdf(1200))
     root = tmp_path / "proj"
     root.mkdir()
-    start = time.perf_counter()
     result = run_cli("new", "--vendor", "acme", "--robot", "big", "--urdf", urdf, "--project", root)
-    elapsed = time.perf_counter() - start
     assert result.code == 0, result.err
-    assert elapsed < 30, f"`new` on 1200 joints took {elapsed:.1f} s"
     written = yaml.safe_load((root / "robots/acme/big.yaml").read_text())
     assert written["motor_count"] == 1200 and len(written["joint_map"]) == 1200
     syntax_check_driver(root / "generated" / PACKAGE, "acme", "big")

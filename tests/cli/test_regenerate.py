@@ -532,7 +532,7 @@ def _run_on_tty(args: list[str], env: dict[str, str]) -> str:
         if not data:
             break
         chunks.append(data)
-    proc.wait(timeout=60)
+    proc.wait(timeout=600)
     os.close(leader)
     return b"".join(chunks).decode()
 

@@ -402,13 +402,15 @@ def test_a_released_band_lets_the_humanoid_fall(checker, tmp_path):
 
 
 @pytest.mark.parametrize("robot", sorted(FLOATING))
-def test_a_humanoid_on_the_band_steps_faster_than_real_time(checker, tmp_path, robot, report):
+def test_a_humanoid_on_the_band_steps_its_physics_without_allocating(checker, tmp_path, robot, report):
+    """10 s of 1 kHz physics on the band: every step taken, none allocates. How much faster than real time it runs
+    is a figure (the report here, benchmarks/bench_physics.py), never a verdict: a busy machine runs it slower."""
     yaml_path, urdf, imu, _ = FLOATING[robot]
     table = joint_table(yaml_path, urdf, tmp_path / f"{robot}.tab", held=(), inset=False)
     proc = run_check(checker, "rate", table, urdf, base="band", imu=imu, seconds=10.0)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     v = values(proc.stdout)
-    assert float(v["physics_steps"]) == 10000 and float(v["rtf"]) > 2.0, proc.stdout
+    assert float(v["physics_steps"]) == 10000, proc.stdout
     assert int(v["step_allocations"]) == 0, proc.stdout
     report(f"fake physics (MuJoCo): {robot} on the band, 1 kHz physics at 500 Hz commands: "
            f"{float(v['physics_hz']):.0f} steps/s, real-time factor {float(v['rtf']):.1f}")

@@ -80,7 +80,7 @@ def build_executable(builder, rb, distro: str):
     return link.path
 
 
-def run(binary, *args: str, env: dict[str, str] | None = None, timeout: float = 60) -> subprocess.CompletedProcess:
+def run(binary, *args: str, env: dict[str, str] | None = None, timeout: float = 600) -> subprocess.CompletedProcess:
     return subprocess.run([str(binary), *args], capture_output=True, text=True, timeout=timeout,
                           env={**CLEAN_ENV, **(env or {})})
 

@@ -169,7 +169,7 @@ def results(package_dir, tmp_path_factory, request) -> shared_use.Recorded:
         # What pluginlib reads through the ament index: the package's plugin description (4.x+
         # stand-in ResourceManagers resolve the <plugin> lookup name through it, as upstream does).
         env = {**ENV_C, "RHI_FAKE_PLUGIN_XML": str(package_dir / f"{PACKAGE}.xml"), "RHI_FAKE_LOG_ECHO": "1"}
-        result.run = subprocess.run([str(binary)], capture_output=True, text=True, env=env, timeout=120)
+        result.run = subprocess.run([str(binary)], capture_output=True, text=True, env=env, timeout=600)
         return result
 
     with ThreadPoolExecutor(max_workers=OVERLAP_WORKERS) as pool:  # the builder runs one compiler per core

@@ -72,6 +72,9 @@ NATIVE_SDK_ROBOTS = ("engineai/pm01_native_sdk",)
 # every robot a mutation runs on passes unmodified
 CONTROL_ROBOTS = (*ROBOTS, *GO_ROBOTS, *TRANSMISSION_ROBOTS, *ARM_SDK_ROBOTS, *NATIVE_SDK_ROBOTS)
 THREADS_MS = 100
+# A harness run of a mutant takes 7 to 67 s on an idle machine (its sections mostly wait on their timers): the
+# time-out bounds a hang, with room for a machine busy with other work (issue 48).
+RUN_TIMEOUT_S = 600
 
 # Generated files, by their path in the package (what the edits change, wherever the source lives).
 COMMON = "include/robot_hardware_interface/common/"
@@ -490,7 +493,7 @@ def _run_later(plan: Plan, mutation: Mutation | None, robot: str, link, args: li
                schema: str = "") -> Future[Outcome]:
     """The Outcome of running ``link``'s binary with ``args`` (no run when it did not link), on the runs' threads."""
     def run() -> Outcome:
-        ran = run_binary(link.path, args, timeout=120) if link.ok else None
+        ran = run_binary(link.path, args, timeout=RUN_TIMEOUT_S) if link.ok else None
         return Outcome(mutation, robot, link.ok, link.stderr, ran, time.monotonic() - start, schema=schema)
     return plan.runs.submit(run)
 

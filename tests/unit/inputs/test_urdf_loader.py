@@ -256,7 +256,7 @@ def test_xacro_reads_utf8_whatever_the_locale(tmp_path):
     code = ("import sys; from rhi_gen.inputs.urdf_loader import load_urdf; "
             f"sys.stdout.write(ascii(load_urdf({str(path)!r}).joints[0].name))")
     done = subprocess.run([sys.executable, "-c", code], env=env, cwd=REPO, capture_output=True,
-                          text=True, timeout=60)
+                          text=True, timeout=600)
     assert done.returncode == 0, done.stderr
     assert done.stdout == ascii("gel\u00e9nk\u2713")
 

@@ -45,7 +45,7 @@ def configure(tmp_path: Path, *defines: str) -> list[str]:
         f"cmake_minimum_required(VERSION 3.16)\nproject(probe LANGUAGES NONE)\n{block}{PROBE}", encoding="utf-8")
     build = tmp_path / f"build{len(list(tmp_path.glob('build*')))}"
     proc = subprocess.run([cmake, "--no-warn-unused-cli", "-S", str(source), "-B", str(build), *defines],
-                          capture_output=True, text=True, timeout=120)
+                          capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0 and "CMake Warning" not in proc.stderr, proc.stdout + proc.stderr
     return [line.removeprefix("-- ") for line in proc.stdout.splitlines()
             if line.startswith(("-- robot_hardware_interface:", "-- probe:"))]

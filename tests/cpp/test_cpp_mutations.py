@@ -220,6 +220,10 @@ MUTATIONS = (
              TokenEdit(COMPAT, "{&claimed_links_, &gpio_command_links_}", "{&command_links_, &gpio_command_links_}",
                        switch=OPERAND),
              ("command_modes",), robots=("unitree/g1",), distro="jazzy"),
+    Mutation("fetch_torn", "write() keeps what it fetched when a handle a controller is writing refused its lock: "
+             "the refused joint keeps the previous command (a frame mixing two commands, the async section's tear)",
+             TokenEdit(COMPAT, "if (refused != 0U) { return false; }", "", switch=STATEMENTS),
+             ("async",), robots=("unitree/g1",), distro="jazzy"),
     Mutation("parameter_range", "an out-of-range parameter (0) is accepted",
              TokenEdit(PARAMETERS, "|| parsed < min ||", "|| false ||", switch=OPERAND), ("parameters",)),
     Mutation("hot_path_allocation", "write() allocates",

@@ -217,8 +217,7 @@ MUTATIONS = (
              TokenEdit(COMMAND_GUARD, "&& cmd.kp[i] >= 0 && cmd.kd[i] >= 0", "&& true",
                        switch=OPERAND), ("command_safety",)),
     Mutation("fetch_unclaimed", "write() fetches every command handle, claimed or not (framework-owned handles)",
-             TokenEdit(COMPAT, "{&claimed_links_, &gpio_command_links_}", "{&command_links_, &gpio_command_links_}",
-                       switch=OPERAND),
+             TokenEdit(COMPAT, "fetched_links = claimed_links_;", "fetched_links = command_links_;", switch=OPERAND),
              ("command_modes",), robots=("unitree/g1",), distro="jazzy"),
     Mutation("fetch_torn", "write() keeps what it fetched when a handle a controller is writing refused its lock: "
              "the refused joint keeps the previous command (a frame mixing two commands, the async section's tear)",

@@ -278,10 +278,11 @@ protected:
   bool fetch_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
+    const std::vector<CommandLink> & fetched_links = claimed_links_;
     const size_t refused = retry_refused(
-      claimed_links_.size(), link_done_, [this](size_t i) {
-        const std::optional<double> value = claimed_links_[i].handle->get_optional();
-        fetched_[i] = value.value_or(*claimed_links_[i].value);
+      fetched_links.size(), link_done_, [this, &fetched_links](size_t i) {
+        const std::optional<double> value = fetched_links[i].handle->get_optional();
+        fetched_[i] = value.value_or(*fetched_links[i].value);
         return value.has_value();
       });
     for (const CommandLink & link : gpio_command_links_) {  // the e-stop: a value of its own
@@ -293,8 +294,8 @@ protected:
     if (refused != 0U) {
       return false;  // the previous command stays, whole
     }
-    for (size_t i = 0; i < claimed_links_.size(); ++i) {
-      *claimed_links_[i].value = fetched_[i];
+    for (size_t i = 0; i < fetched_links.size(); ++i) {
+      *fetched_links[i].value = fetched_[i];
     }
 #endif
     return true;

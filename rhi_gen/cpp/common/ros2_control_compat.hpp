@@ -21,11 +21,17 @@
 // Drivers derive from SystemInterfaceAdapter, keep their values in plain doubles, and call
 // publish_state_values() / fetch_command_values() / publish_command_values() where the values
 // change hands: no-ops with raw pointers, a try-lock copy per interface with framework handles
-// (never blocking, never allocating).
+// (never blocking, never allocating). A handle another thread holds refuses the try-lock; the
+// refused ones are tried again, a bounded number of passes with a yield between them (what
+// ros2_control's LoanedCommandInterface does for controllers), and a command is fetched whole or
+// not at all (fetch_command_values()).
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <hardware_interface/handle.hpp>
@@ -120,6 +126,7 @@ public:
         }
       }
     }
+    state_done_.assign(state_links_.size() + slow_state_links_.size(), 0U);
     return exported;
   }
 
@@ -136,6 +143,8 @@ public:
     }
     claimed_links_.clear();
     claimed_links_.reserve(command_links_.size());  // select_command_values() never allocates
+    fetched_.assign(command_links_.size(), 0.0);
+    link_done_.assign(command_links_.size(), 0U);
     // GPIO commands (the e-stop) are fetched every cycle: a controller claiming one switches no
     // joint, so the joint claims never select it.
     gpio_command_links_.clear();
@@ -223,14 +232,13 @@ protected:
   // publish_slow_state_values() when it changed, not by every read().
   virtual bool slow_state_value(const double * /*value*/) {return false;}
 
-  // Controller thread, end of read(): state values out to the exported interfaces.
+  // Controller thread, end of read(): state values out to the exported interfaces. A handle a
+  // controller is reading refuses the write: it is written again once that read is over (a few
+  // passes at most), so that the handles do not keep one joint of the previous frame.
   void publish_state_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
-    for (const StateLink & link : state_links_) {
-      // A handle a reader holds right now keeps its previous value for one cycle.
-      static_cast<void>(link.handle->set_value(*link.value));
-    }
+    publish_states(state_links_);
 #endif
   }
 
@@ -238,9 +246,7 @@ protected:
   void publish_slow_state_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
-    for (const StateLink & link : slow_state_links_) {
-      static_cast<void>(link.handle->set_value(*link.value));
-    }
+    publish_states(slow_state_links_);
 #endif
   }
 
@@ -264,19 +270,35 @@ protected:
   }
 
   // Controller thread, start of write(): what the controllers commanded, into the driver's doubles
-  // (the claimed interfaces only, see select_command_values()).
-  void fetch_command_values()
+  // (the claimed interfaces only, see select_command_values()). Whole or not at all: a handle a
+  // controller is writing right now refuses the try-lock, and keeping the driver's previous value
+  // for that joint alone would send a frame mixing two commands even when every handle holds the
+  // same one. The refused handles are tried again; if one still refuses, the doubles keep the
+  // previous command, whole, for this cycle, and false is returned.
+  bool fetch_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
-    for (const auto * links : {&claimed_links_, &gpio_command_links_}) {
-      for (const CommandLink & link : *links) {
-        const std::optional<double> value = link.handle->get_optional();
-        if (value.has_value()) {
-          *link.value = *value;
-        }
+    const std::vector<CommandLink> & fetched_links = claimed_links_;
+    const size_t refused = retry_refused(
+      fetched_links.size(), link_done_, [this, &fetched_links](size_t i) {
+        const std::optional<double> value = fetched_links[i].handle->get_optional();
+        fetched_[i] = value.value_or(*fetched_links[i].value);
+        return value.has_value();
+      });
+    for (const CommandLink & link : gpio_command_links_) {  // the e-stop: a value of its own
+      const std::optional<double> value = link.handle->get_optional();
+      if (value.has_value()) {
+        *link.value = *value;
       }
     }
+    if (refused != 0U) {
+      return false;  // the previous command stays, whole
+    }
+    for (size_t i = 0; i < fetched_links.size(); ++i) {
+      *fetched_links[i].value = fetched_[i];
+    }
 #endif
+    return true;
   }
 
   // Controller thread: the driver rewrote its command doubles itself (safe start), so the
@@ -284,9 +306,10 @@ protected:
   void publish_command_values()
   {
 #if ROBOT_HARDWARE_INTERFACE_FRAMEWORK_HANDLES
-    for (const CommandLink & link : command_links_) {
-      static_cast<void>(link.handle->set_value(*link.value));
-    }
+    static_cast<void>(retry_refused(
+      command_links_.size(), link_done_, [this](size_t i) {
+        return command_links_[i].handle->set_value(*command_links_[i].value);
+      }));
 #endif
   }
 
@@ -308,6 +331,42 @@ private:
   std::vector<CommandLink> command_links_;
   std::vector<CommandLink> claimed_links_;  // the command_links_ controllers claim
   std::vector<CommandLink> gpio_command_links_;  // fetched every cycle (the e-stop)
+  std::vector<double> fetched_;     // fetch_command_values(): the claimed values, before they count
+  std::vector<uint8_t> link_done_;  // retry_refused() over the command links
+  std::vector<uint8_t> state_done_;  // retry_refused() over the state links
+
+  // Passes over the handles that refused their try-lock (the first pass included).
+  static constexpr unsigned kHandlePasses = 10U;
+
+  // `attempt(i)` for every i < count, then again for those it returned false for, up to
+  // kHandlePasses passes with a yield between them (`done`, sized at export, is the scratch).
+  // Returns how many never succeeded.
+  template<typename Attempt>
+  static size_t retry_refused(size_t count, std::vector<uint8_t> & done, Attempt attempt)
+  {
+    size_t refused = count;
+    for (unsigned pass = 0; pass < kHandlePasses && refused > 0U; ++pass) {
+      if (pass > 0U) {
+        std::this_thread::yield();
+      }
+      refused = 0U;
+      for (size_t i = 0; i < count; ++i) {
+        if (pass == 0U || done[i] == 0U) {
+          done[i] = attempt(i) ? 1U : 0U;
+        }
+        refused += done[i] == 0U ? 1U : 0U;
+      }
+    }
+    return refused;
+  }
+
+  void publish_states(const std::vector<StateLink> & links)
+  {
+    static_cast<void>(retry_refused(
+      links.size(), state_done_, [&links](size_t i) {
+        return links[i].handle->set_value(*links[i].value);
+      }));
+  }
 #endif
 };
 

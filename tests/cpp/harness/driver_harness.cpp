@@ -2531,9 +2531,9 @@ void test_threads(int duration_ms) {
 // commands, and the handler is paused (the current cycle finished) before on_deactivate.
 //
 // ros2_control's handles lock one at a time, and write() only TRIES each lock (get_optional()): a
-// handle a controller is writing at that moment refuses it. The driver then fetches nothing of
-// that cycle rather than one joint less (fetch_command_values()), so a frame never mixes the
-// command every handle holds with an older one. What per-handle locks do allow, and the driver
+// handle a controller is writing at that moment refuses it. The driver tries the refused ones
+// again and, if one still refuses, fetches nothing of that cycle rather than one joint less
+// (fetch_command_values()), so a frame never mixes the command every handle holds with an older one. What per-handle locks do allow, and the driver
 // cannot prevent, is a frame mixing two sets of handle values when the handles change while
 // write() reads them: two controller cycles, or right after a claim switch the hold write()
 // publishes into the handles (the measured position) and the controller's next command.

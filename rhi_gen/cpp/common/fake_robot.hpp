@@ -151,14 +151,14 @@ struct FakeLoopStats
   }
 };
 
-// Whether the loop keeps its rate, said in one line when it stops and when it is back (issue 48). On a
-// busy machine the wall timer fires late: each step still advances the robot by one nominal period, so
-// the robot moves in slow motion, and its driver, which counts wall time, sees stale state and, past
-// fault_timeout_ms without one, a dead link. The line tells a starving fake robot from a dead one.
-// Windows of kWindowNs: short below kShortFraction of the nominal rate or with a gap between two
-// steps above kGapNs (a driver's default state_timeout_ms); while short, said again every
-// kRepeatWindows windows or when a gap is longer than any said. Allocation-free (the message is
-// formatted into a fixed buffer, only when there is something to say).
+// Whether the loop keeps its rate, said in one line when it stops and when it is back (issue 48).
+// On a busy machine the wall timer fires late: each step still advances the robot by one nominal
+// period, so the robot moves in slow motion, and its driver, which counts wall time, sees stale
+// state and, past fault_timeout_ms without one, a dead link. The line tells a starving fake robot
+// from a dead one. Windows of kWindowNs: short below kShortFraction of the nominal rate or with a
+// gap between two steps above kGapNs (a driver's default state_timeout_ms); while short, said
+// again every kRepeatWindows windows or for a gap longer than any said. Allocation-free (the line
+// is formatted into a fixed buffer, only when there is something to say).
 class FakeRateWatch
 {
 public:
@@ -167,8 +167,8 @@ public:
   static constexpr int64_t kGapNs = 100000000;  // 100 ms
   static constexpr uint32_t kRepeatWindows = 15;  // 30 s
 
-  // One loop step at steady time `now_ns`, the loop meant to run at `nominal_hz`. Returns the line to
-  // log (short: a warning; back: information), nullptr when there is nothing to say.
+  // One loop step at steady time `now_ns`, the loop meant to run at `nominal_hz`. Returns the line
+  // to log (*warning: it says the loop falls behind), nullptr when there is nothing to say.
   const char * record(int64_t now_ns, double nominal_hz, bool * warning)
   {
     if (steps_ == 0) {
@@ -187,8 +187,9 @@ public:
     steps_ = 1;  // this step opens the next window
     window_start_ns_ = now_ns;
     longest_gap_ns_ = 0;
-    const bool short_now = rate < kShortFraction * nominal_hz || gap > kGapNs;
-    if (short_now) {
+    const bool slow = rate < kShortFraction * nominal_hz;
+    const bool stalled = gap > kGapNs;
+    if (slow || stalled) {
       const bool say = !short_ || ++windows_short_ >= kRepeatWindows || gap > said_gap_ns_;
       short_ = true;
       if (!say) {
@@ -198,10 +199,11 @@ public:
       said_gap_ns_ = std::max(said_gap_ns_, gap);
       *warning = true;
       std::snprintf(
-        line_.data(), line_.size(), "the loop falls behind: %.0f steps/s of its %.0f Hz over the last "
-        "%.1f s, longest gap %.0f ms (the machine is too busy: the robot moves at %.2fx real time and "
-        "its driver may see stale state or a dead link; a lighter load or --rate helps)", rate,
-        nominal_hz, static_cast<double>(elapsed) / 1e9, static_cast<double>(gap) / 1e6,
+        line_.data(), line_.size(),
+        "the loop falls behind: %.0f steps/s of its %.0f Hz over the last %.1f s, longest gap "
+        "%.0f ms (the machine is too busy: the robot moves at %.2fx real time and its driver may "
+        "see stale state or a dead link; a lighter load or --rate helps)",
+        rate, nominal_hz, static_cast<double>(elapsed) / 1e9, static_cast<double>(gap) / 1e6,
         rate / nominal_hz);
       return line_.data();
     }
@@ -213,8 +215,8 @@ public:
     said_gap_ns_ = 0;
     *warning = false;
     std::snprintf(
-      line_.data(), line_.size(), "the loop keeps its rate again: %.0f steps/s of its %.0f Hz", rate,
-      nominal_hz);
+      line_.data(), line_.size(), "the loop keeps its rate again: %.0f steps/s of its %.0f Hz",
+      rate, nominal_hz);
     return line_.data();
   }
 

@@ -155,13 +155,15 @@ public:
   // controllers and leaves the component unconfigured. The transport keeps running so that the
   // command writer keeps sending the damping-only hold (kp = 0, the last safe position target),
   // even if the state comes back, until on_activate restarts it through the full safe start.
-  // ros2_control also deactivates every controller that used the component, without telling it
-  // (its stop switch is refused, the interfaces being unavailable by then): the claims go with
-  // them at the next on_configure (CommandClaims::release_all()), which recovery passes through.
+  // ros2_control 3.1+ also deactivates every controller that used the component, without telling it
+  // (ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS): the claims go with them at the next
+  // on_configure (CommandClaims::release_all()), which the recovery passes through. On Humble the
+  // controllers keep running, and their claims stay.
   CallbackReturn on_error(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
     active_.store(false, std::memory_order_relaxed);
-    claims_lost_.store(true, std::memory_order_release);
+    claims_lost_.store(
+      ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS != 0, std::memory_order_release);
     core_.hold_until_activation();
     RCLCPP_ERROR(
       core_.logger(), "in error: the %s transport keeps sending damping only (kp = 0) to every "

@@ -67,6 +67,21 @@ public:
     claims_prepared_.store(true, std::memory_order_release);
   }
 
+  // on_configure after on_error: ros2_control deactivated every controller that used the component
+  // when read() returned ERROR, without a mode switch (the one it attempts is refused: the
+  // component's interfaces are already unavailable), so no claim survives the fault. Handed to
+  // write() like a committed switch, so that the controllers activated after the recovery start
+  // from nothing claimed: a position controller alone gets the default gains again, not the
+  // stiffness a gain controller claimed before the fault. Not while a switch is prepared (the
+  // controller manager serialises component state changes and switches).
+  void release_all()
+  {
+    claims_prepared_.store(false, std::memory_order_relaxed);
+    committed_.bits.fill(0U);
+    ++committed_.generation;
+    claim_buffer_.set_data(committed_);
+  }
+
   // perform_command_mode_switch: hand the prepared claims to write().
   void commit_claims()
   {

@@ -1265,7 +1265,10 @@ int64_t cycle_until_error(Rig& rig, std::chrono::steady_clock::time_point t0, st
   return -1;
 }
 
-// on_error after read() said ERROR: SUCCESS (the component can be configured again).
+// on_error after read() said ERROR: SUCCESS (the component can be configured again). As ros2_control
+// (jazzy resource_manager.cpp / controller_manager.cpp) does, no mode switch: it deactivates the
+// controllers that used the component, and the stop switch it attempts is refused before it reaches the
+// component, whose interfaces are unavailable by then.
 void enter_error(Rig& rig) {
   const CallbackReturn r = rig.hw->on_error(kActive);
   CHECK(r == CallbackReturn::SUCCESS, "on_error returned %d", static_cast<int>(r));
@@ -1273,10 +1276,20 @@ void enter_error(Rig& rig) {
 }
 
 // Configure and activate again (ros2 control set_hardware_component_state <name> active).
-bool recover(Rig& rig) {
+bool configure_and_activate(Rig& rig) {
   const CallbackReturn r = rig.hw->on_configure(kUnconfigured);
   CHECK(r == CallbackReturn::SUCCESS, "on_configure after on_error returned %d", static_cast<int>(r));
   return r == CallbackReturn::SUCCESS && activate(rig);
+}
+
+// The recovery the README gives: configure and activate, then the controllers again (ros2 control
+// switch_controllers --activate ...), here the one that commands everything.
+bool recover(Rig& rig) {
+  if (!configure_and_activate(rig)) {
+    return false;
+  }
+  claim_everything(rig);
+  return true;
 }
 
 void test_faults() {

@@ -152,6 +152,86 @@ struct FakeLoopStats
   }
 };
 
+// Whether the loop keeps its rate, said in one line when it stops and when it is back (issue 48).
+// On a busy machine the wall timer fires late: each step still advances the robot by one nominal
+// period, so the robot moves in slow motion, and its driver, which counts wall time, sees stale
+// state and, past fault_timeout_ms without one, a dead link. The line tells a starving fake robot
+// from a dead one. Windows of kWindowNs: short below kShortFraction of the nominal rate or with a
+// gap between two steps above kGapNs (a driver's default state_timeout_ms); while short, said
+// again every kRepeatWindows windows or for a gap longer than any said. Allocation-free (the line
+// is formatted into a fixed buffer, only when there is something to say).
+class FakeRateWatch
+{
+public:
+  static constexpr int64_t kWindowNs = 2000000000;  // 2 s
+  static constexpr double kShortFraction = 0.9;
+  static constexpr int64_t kGapNs = 100000000;  // 100 ms
+  static constexpr uint32_t kRepeatWindows = 15;  // 30 s
+
+  // One loop step at steady time `now_ns`, the loop meant to run at `nominal_hz`. Returns the line
+  // to log (*warning: it says the loop falls behind), nullptr when there is nothing to say.
+  const char * record(int64_t now_ns, double nominal_hz, bool * warning)
+  {
+    if (steps_ == 0) {
+      window_start_ns_ = now_ns;
+    } else {
+      longest_gap_ns_ = std::max(longest_gap_ns_, now_ns - last_ns_);
+    }
+    last_ns_ = now_ns;
+    ++steps_;
+    const int64_t elapsed = now_ns - window_start_ns_;
+    if (elapsed < kWindowNs) {
+      return nullptr;
+    }
+    const double rate = static_cast<double>(steps_ - 1) * 1e9 / static_cast<double>(elapsed);
+    const int64_t gap = longest_gap_ns_;
+    steps_ = 1;  // this step opens the next window
+    window_start_ns_ = now_ns;
+    longest_gap_ns_ = 0;
+    const bool slow = rate < kShortFraction * nominal_hz;
+    const bool stalled = gap > kGapNs;
+    if (slow || stalled) {
+      const bool say = !short_ || ++windows_short_ >= kRepeatWindows || gap > said_gap_ns_;
+      short_ = true;
+      if (!say) {
+        return nullptr;
+      }
+      windows_short_ = 0;
+      said_gap_ns_ = std::max(said_gap_ns_, gap);
+      *warning = true;
+      std::snprintf(
+        line_.data(), line_.size(),
+        "the loop falls behind: %.0f steps/s of its %.0f Hz over the last %.1f s, longest gap "
+        "%.0f ms (the machine is too busy: the robot moves at %.2fx real time and its driver may "
+        "see stale state or a dead link; a lighter load or --rate helps)",
+        rate, nominal_hz, static_cast<double>(elapsed) / 1e9, static_cast<double>(gap) / 1e6,
+        rate / nominal_hz);
+      return line_.data();
+    }
+    if (!short_) {
+      return nullptr;
+    }
+    short_ = false;
+    windows_short_ = 0;
+    said_gap_ns_ = 0;
+    *warning = false;
+    std::snprintf(
+      line_.data(), line_.size(), "the loop keeps its rate again: %.0f steps/s of its %.0f Hz",
+      rate, nominal_hz);
+    return line_.data();
+  }
+
+private:
+  uint64_t steps_{0};
+  int64_t window_start_ns_{0};
+  int64_t last_ns_{0};
+  int64_t longest_gap_ns_{0};
+  bool short_{false};
+  uint32_t windows_short_{0};
+  int64_t said_gap_ns_{0};
+  std::array<char, 320> line_{};
+};
+
 // What every fake robot offers its executable and the tests, whatever its motor count.
 class FakeRobot
 {
@@ -238,7 +318,11 @@ public:
   {
     rate_hz_ = rate_hz;
     period_ns_ = static_cast<int64_t>(1e9 / rate_hz);
-    timer_ = node_->create_wall_timer(std::chrono::nanoseconds(period_ns_), [this]() {step();});
+    timer_ = node_->create_wall_timer(
+      std::chrono::nanoseconds(period_ns_), [this]() {
+        step();
+        watch_rate();
+      });
   }
 
   void stop() override
@@ -332,6 +416,22 @@ public:
 
 private:
   static constexpr const char * kFaultParameter = "fault";
+
+  // After each step of the wall timer's loop (not in step(), which tests call at their own pace).
+  void watch_rate()
+  {
+    bool warning = false;
+    const char * line = rate_watch_.record(stats_.last_ns, rate_hz_, &warning);
+    if (line == nullptr) {
+      return;
+    }
+    if (warning) {
+      RCLCPP_WARN(node_->get_logger(), "%s", line);
+    } else {
+      RCLCPP_INFO(node_->get_logger(), "%s", line);
+    }
+  }
+
   static constexpr const char * kReleaseBandParameter = "release_band";
 
   // `ros2 param set <node> fault <request>`: carried out, or refused with the reason.
@@ -482,6 +582,7 @@ private:
   rclcpp::node_interfaces::OnSetParametersCallbackHandle::SharedPtr fault_callback_;
   rclcpp::TimerBase::SharedPtr timer_;
   FakeLoopStats stats_;
+  FakeRateWatch rate_watch_;
   FakePhysicsSpec physics_spec_;
 #if defined(RHI_FAKE_PHYSICS_MUJOCO)
   std::unique_ptr<FakeMujocoPhysics<N>> physics_;

@@ -69,6 +69,19 @@
 #define ROBOT_HARDWARE_INTERFACE_HARDWARE_STATUS 0
 #endif
 
+// From 3.1 on, a read() that returns ERROR makes the controller manager deactivate every
+// controller of the component, without a mode switch the component sees (the stop switch it
+// attempts from 4.x on is refused: the component's interfaces are unavailable by then). Up to 2.x
+// (Humble) its controllers keep running through the error and the recovery, claims and all.
+#if defined(HARDWARE_INTERFACE_VERSION_GTE)
+#if HARDWARE_INTERFACE_VERSION_GTE(3, 1, 0)
+#define ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS 1
+#endif
+#endif
+#ifndef ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS
+#define ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS 0
+#endif
+
 // From 3.x on the ResourceManager takes the controller manager's clock and logger.
 #if defined(HARDWARE_INTERFACE_VERSION_MAJOR) && HARDWARE_INTERFACE_VERSION_MAJOR >= 3
 #define ROBOT_HARDWARE_INTERFACE_RESOURCE_MANAGER_CLOCK 1

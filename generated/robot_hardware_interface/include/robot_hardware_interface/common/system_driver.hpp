@@ -90,6 +90,9 @@ public:
   // the component stays unconfigured, fix the file and configure again) with one error line.
   CallbackReturn on_configure(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
+    if (claims_lost_.exchange(false, std::memory_order_acq_rel)) {
+      core_.claims().release_all();
+    }
     const std::string problem = core_.calibrate(calibration_file_);
     if (!problem.empty()) {
       RCLCPP_ERROR(core_.logger(), "%s", problem.c_str());
@@ -153,9 +156,15 @@ public:
   // controllers and leaves the component unconfigured. The transport keeps running so that the
   // command writer keeps sending the damping-only hold (kp = 0, the last safe position target),
   // even if the state comes back, until on_activate restarts it through the full safe start.
+  // ros2_control 3.1+ also deactivates every controller that used the component, without telling it
+  // (ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS): the claims go with them at the next
+  // on_configure (CommandClaims::release_all()), which the recovery passes through. On Humble the
+  // controllers keep running, and their claims stay.
   CallbackReturn on_error(const rclcpp_lifecycle::State & /*previous_state*/) override
   {
     active_.store(false, std::memory_order_relaxed);
+    claims_lost_.store(
+      ROBOT_HARDWARE_INTERFACE_ERROR_STOPS_CONTROLLERS != 0, std::memory_order_release);
     core_.hold_until_activation();
     RCLCPP_ERROR(
       core_.logger(), "in error: the %s transport keeps sending damping only (kp = 0) to every "
@@ -778,6 +787,7 @@ private:
   bool motor_fault_reported_{false};  // controller thread: read() said a motor is faulty
   int faulty_slot_{-1};  // controller thread: a motor too hot or in error, faulty_motor_slot()
   std::atomic<bool> active_{false};  // between on_activate and on_deactivate / on_error
+  std::atomic<bool> claims_lost_{false};  // on_error -> on_configure: the controllers are gone
 };
 
 }  // namespace robot_hardware_interface

@@ -1,6 +1,9 @@
 """Fixtures shared by every tier (tests/README.md); the helpers they use live in tests/support/."""
 from __future__ import annotations
 
+import os
+import shutil
+import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
@@ -19,8 +22,13 @@ shared_use.watch(vendor_msgs.UPSTREAM_MSGS)
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    """The load mode (RHI_TEST_LOAD=N: N busy processes per core beside the session, tests/support/load.py)."""
+    """The load mode (RHI_TEST_LOAD=N: N busy processes per core beside the session, tests/support/load.py),
+    and a cache of the session's own for `rhi-gen check`'s memos (rhi_gen/pipeline/verified.py): the tests'
+    checks leave nothing in the user's ~/.cache, and a memo of theirs can never answer a user's check."""
     config.pluginmanager.register(load, "rhi-load")
+    cache = Path(tempfile.mkdtemp(prefix="rhi-gen-test-cache-"))
+    config.add_cleanup(lambda: shutil.rmtree(cache, ignore_errors=True))
+    os.environ["RHI_GEN_CACHE"] = str(cache)
 
 
 @pytest.fixture

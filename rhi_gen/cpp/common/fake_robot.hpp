@@ -156,9 +156,11 @@ struct FakeLoopStats
 // period, so the robot moves in slow motion, and its driver, which counts wall time, sees stale
 // state and, past fault_timeout_ms without one, a dead link. The line tells a starving fake robot
 // from a dead one. Windows of kWindowNs: short below kShortFraction of the nominal rate or with a
-// gap between two steps above kGapNs (a driver's default state_timeout_ms); while short, said
-// again every kRepeatWindows windows or for a gap longer than any said. Allocation-free (the line
-// is formatted into a fixed buffer, only when there is something to say).
+// gap between two steps above kGapNs (a driver's default state_timeout_ms). Said when the loop
+// first falls short, then again only after kRepeatWindows windows or for a gap longer than any
+// said; back once kBackWindows windows in a row kept the rate (a loop that hovers around the
+// bound says little). Allocation-free (the line is formatted into a fixed buffer, only when there
+// is something to say).
 class FakeRateWatch
 {
 public:
@@ -166,6 +168,7 @@ public:
   static constexpr double kShortFraction = 0.9;
   static constexpr int64_t kGapNs = 100000000;  // 100 ms
   static constexpr uint32_t kRepeatWindows = 15;  // 30 s
+  static constexpr uint32_t kBackWindows = 5;  // 10 s
 
   // One loop step at steady time `now_ns`, the loop meant to run at `nominal_hz`. Returns the line
   // to log (*warning: it says the loop falls behind), nullptr when there is nothing to say.
@@ -187,15 +190,17 @@ public:
     steps_ = 1;  // this step opens the next window
     window_start_ns_ = now_ns;
     longest_gap_ns_ = 0;
+    ++windows_since_said_;
     const bool slow = rate < kShortFraction * nominal_hz;
     const bool stalled = gap > kGapNs;
     if (slow || stalled) {
-      const bool say = !short_ || ++windows_short_ >= kRepeatWindows || gap > said_gap_ns_;
+      good_windows_ = 0;
+      const bool say = !short_ || windows_since_said_ >= kRepeatWindows || gap > said_gap_ns_;
       short_ = true;
       if (!say) {
         return nullptr;
       }
-      windows_short_ = 0;
+      windows_since_said_ = 0;
       said_gap_ns_ = std::max(said_gap_ns_, gap);
       *warning = true;
       std::snprintf(
@@ -207,11 +212,11 @@ public:
         rate / nominal_hz);
       return line_.data();
     }
-    if (!short_) {
+    if (!short_ || ++good_windows_ < kBackWindows) {
       return nullptr;
     }
     short_ = false;
-    windows_short_ = 0;
+    good_windows_ = 0;
     said_gap_ns_ = 0;
     *warning = false;
     std::snprintf(
@@ -226,7 +231,8 @@ private:
   int64_t last_ns_{0};
   int64_t longest_gap_ns_{0};
   bool short_{false};
-  uint32_t windows_short_{0};
+  uint32_t windows_since_said_{0};
+  uint32_t good_windows_{0};
   int64_t said_gap_ns_{0};
   std::array<char, 320> line_{};
 };

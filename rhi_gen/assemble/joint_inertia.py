@@ -31,7 +31,10 @@ _ZERO_MAT: Mat = (_ZERO, _ZERO, _ZERO)
 @dataclass(frozen=True)
 class JointDynamics:
     inertia: float   # kg m^2 (revolute/continuous) or kg (prismatic), >= MIN_INERTIA
-    damping: float   # N m s/rad or N s/m, >= 0
+    damping: float   # N m s/rad or N s/m, >= 0 (DEFAULT_DAMPING where the URDF gives none: the vacuum's)
+    # What MuJoCo's URDF reader takes from <dynamics damping friction>: 0 where the URDF gives none
+    urdf_damping: float = 0.0
+    urdf_friction: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -52,6 +55,8 @@ class _Joint:
     axis: Vec       # unit, in the joint frame
     mimic: bool
     damping: float
+    urdf_damping: float = 0.0
+    urdf_friction: float = 0.0
 
 
 # ---------------------------------------------------------------- 3x3 / vector math
@@ -158,8 +163,12 @@ def _joint(joint: etree._Element) -> _Joint | None:
     rotation, origin = _origin(joint)
     dynamics = joint.find("dynamics")
     damping = _number(dynamics.get("damping")) if dynamics is not None else None
+    friction = _number(dynamics.get("friction")) if dynamics is not None else None
+    usable = damping is not None and damping >= 0.0
     return _Joint(name, kind, parent, child, rotation, origin, _unit_axis(joint), joint.find("mimic") is not None,
-                  damping if damping is not None and damping >= 0.0 else DEFAULT_DAMPING)
+                  damping if usable and damping is not None else DEFAULT_DAMPING,
+                  damping if usable and damping is not None else 0.0,
+                  friction if friction is not None and friction >= 0.0 else 0.0)
 
 
 # ---------------------------------------------------------------- the estimate
@@ -220,5 +229,5 @@ def joint_dynamics(urdf_xml: str) -> dict[str, JointDynamics]:
             continue
         estimate = _estimate(j, links, below)
         inertia = max(estimate, MIN_INERTIA) if math.isfinite(estimate) else MIN_INERTIA
-        result[j.name] = JointDynamics(_rounded(inertia), _rounded(j.damping))
+        result[j.name] = JointDynamics(_rounded(inertia), _rounded(j.damping), j.urdf_damping, j.urdf_friction)
     return result

@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import hashlib
 import os
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
 from .. import transports
 from ..errors import ConfigError, UrdfError
-from ..model.config import ARMATURE_DEFAULT, VendorConfig
+from ..model.config import ARMATURE_DEFAULT, ContactGeom, VendorConfig
 from ..model.motor_groups import is_leg
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
 from ..model.robot import InputProvenance, JointTransmission, KdlRoot, MotorJoint, RobotModel
@@ -133,7 +134,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),
                                  transmission=decided.joints.get(joint.name, JointTransmission()),
                                  armature=armatures.get(joint.name, ARMATURE_DEFAULT),
-                                 **_simulated(dynamics.get(joint.name))))
+                                 **_simulated(dynamics.get(joint.name), dict(config.joint_damping).get(joint.name),
+                                              dict(config.joint_frictionloss).get(joint.name))))
 
     if config.authority == "upper_body" and all(j.command_mode == "state" for j in joints):
         raise err("authority", "upper_body leaves the legs (hip, knee, ankle joints) to the robot's own controller, "
@@ -168,7 +170,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
         provenance=provenance, coupled_groups=decided.groups, urdf_name=urdf.name,
         urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"), authority=config.authority,
-        hands=config.hands, kdl_root=kdl_root(urdf),
+        hands=config.hands, kdl_root=kdl_root(urdf), contacts=_contacts(config, urdf, err),
     )
 
 
@@ -217,6 +219,25 @@ def default_imu_frame(urdf: UrdfRobot) -> str:
     return roots[0] if roots else (urdf.links[0] if urdf.links else "base_link")
 
 
-def _simulated(dynamics: JointDynamics | None) -> dict[str, float]:
-    """The fake robot's inertia and damping of a joint (the defaults when the URDF parse found none)."""
-    return {} if dynamics is None else {"inertia": dynamics.inertia, "damping": dynamics.damping}
+def _simulated(dynamics: JointDynamics | None, damping: float | None, frictionloss: float | None) -> dict[str, float]:
+    """The fake robot's inertia and damping of a joint (the defaults when the URDF parse found none), and the
+    physics' damping and dry friction: the vendor YAML's, else the URDF's <dynamics>."""
+    out = {} if dynamics is None else {"inertia": dynamics.inertia, "damping": dynamics.damping,
+                                       "physics_damping": dynamics.urdf_damping,
+                                       "frictionloss": dynamics.urdf_friction}
+    if damping is not None:
+        out["physics_damping"] = damping
+    if frictionloss is not None:
+        out["frictionloss"] = frictionloss
+    return out
+
+
+def _contacts(config: VendorConfig, urdf: UrdfRobot, err: Callable[..., ConfigError]) -> tuple[ContactGeom, ...]:
+    """The YAML's contacts, each on a link of the URDF."""
+    links = list(urdf.links)
+    for c in config.contacts:
+        if c.link not in links:
+            hint = suggest(c.link, links)
+            raise err(f"contacts.{c.link}", f"{c.link!r} is not a link of {config.urdf_relative}",
+                      (f"did you mean {hint!r}? " if hint else "") + "name the URDF link the shapes belong to")
+    return config.contacts

@@ -14,7 +14,7 @@ from typing import Any
 from .. import transports
 from ..errors import ConfigError
 from ..model import AUTHORITIES, FLOAT_TYPES, HANDS, MAX_MOTORS, ImuConfig, Parameters, VendorConfig
-from ..model.config import MAX_ARMATURE
+from ..model.config import CONTACT_SHAPES, MAX_ARMATURE, MAX_CONTACTS, MAX_JOINT_FRICTION, ContactGeom
 from ..model.naming import CLASS_PREFIX_RE, CPP_KEYWORDS, identifier_problem, suggest, vendor_problem
 from ..typed_yaml.validator import Validator
 from ..typed_yaml.yaml_source import Scalar, content_sha256, parse_yaml_text, read_text
@@ -22,8 +22,9 @@ from .vendor_transmissions import read_coupled_joints, read_transmissions
 
 TOP_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "float_type", "class_prefix",
             "xacro_args", "package_paths", "imu", "parameters", "transport_options", "joint_map",
-            "unmapped_joints", "default_gains", "command_modes", "initial_positions", "armatures", "transmissions",
-            "coupled_joints", "urdf_transmissions", "authority", "hands")
+            "unmapped_joints", "default_gains", "command_modes", "initial_positions", "armatures", "joint_damping",
+            "joint_frictionloss", "contacts", "transmissions", "coupled_joints", "urdf_transmissions", "authority",
+            "hands")
 REQUIRED_KEYS = ("vendor", "robot", "urdf", "transport", "motor_count", "joint_map")
 PARAMETER_KEYS = ("network_interface", "enable_monitor", "command_writer_period_us", "command_writer_mode",
                   "state_decimation", "state_timeout_ms", "fault_timeout_ms", "first_state_timeout_ms",
@@ -197,6 +198,15 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
     command_modes = _command_modes(v, data.get("command_modes"), mapped) if "command_modes" in data else ()
     initial = _initial_positions(v, data.get("initial_positions"), mapped) if "initial_positions" in data else ()
     armatures = _armatures(v, data.get("armatures"), mapped) if "armatures" in data else ()
+    joint_damping = _joint_numbers(
+        v, data.get("joint_damping"), mapped, "joint_damping", "{knee_joint: 0.05}",
+        "write the joint's passive damping in N*m*s/rad (N*s/m for a prismatic joint), e.g. 0.05",
+        MAX_JOINT_FRICTION) if "joint_damping" in data else ()
+    joint_frictionloss = _joint_numbers(
+        v, data.get("joint_frictionloss"), mapped, "joint_frictionloss", "{knee_joint: 0.2}",
+        "write the joint's dry friction in N*m (N for a prismatic joint), e.g. 0.2",
+        MAX_JOINT_FRICTION) if "joint_frictionloss" in data else ()
+    contacts = _contacts(v, data["contacts"]) if "contacts" in data else ()
     coupled = read_coupled_joints(v, data["coupled_joints"], mapped) if "coupled_joints" in data else ()
     transmissions = read_transmissions(
         v, _joint_entries(v, data["transmissions"], "transmissions", mapped, "{knee_joint: {reduction: 50.0}}"),
@@ -212,6 +222,7 @@ def config_from_data(data: dict[str, Any], lines: dict[str, int], shown: str, ba
         unmapped_joints=unmapped, imu=imu, transport_options=options, parameters=params,
         xacro_args=xacro_args, package_paths=package_paths, class_prefix=class_prefix,
         default_gains=default_gains, command_modes=command_modes, initial_positions=initial, armatures=armatures,
+        joint_damping=joint_damping, joint_frictionloss=joint_frictionloss, contacts=contacts,
         transmissions=transmissions, coupled_joints=coupled, urdf_transmissions=urdf_transmissions,
         authority=authority, hands=hands,
         content_sha256=content_sha256(data), key_lines=dict(lines),
@@ -285,6 +296,59 @@ def _armatures(v: Validator, raw: Any, mapped: dict[str, int]) -> tuple[tuple[st
     return _joint_numbers(v, raw, mapped, "armatures", "{knee_joint: 0.02}",
                           "write the rotor inertia reflected to the joint in kg*m^2 (kg for a prismatic joint), "
                           "e.g. 0.01", MAX_ARMATURE)
+
+
+CONTACT_EXAMPLE = "{left_foot_link: [{box: [0.2, 0.1, 0.02], xyz: [0.03, 0.0, -0.04]}]}"
+CONTACT_SIZES = {"sphere": (1, "the radius [m]"), "box": (3, "[x, y, z] lengths [m]"),
+                 "cylinder": (2, "[radius, length] [m]")}
+
+
+def _contacts(v: Validator, raw: Any) -> tuple[ContactGeom, ...]:
+    """contacts: {link: [{<shape>: size, xyz: [..], rpy: [..]}]}; the links are checked against the URDF in
+    assemble."""
+    if isinstance(raw, Scalar) and raw.value is None:
+        return ()
+    if not isinstance(raw, dict):
+        raise v.error("contacts", "must be a mapping of URDF link name: list of shapes", fix=f"e.g. {CONTACT_EXAMPLE}")
+    out: list[ContactGeom] = []
+    for link, shapes in raw.items():
+        path = f"contacts.{link}"
+        if not isinstance(shapes, list) or not shapes:
+            raise v.error(path, "must be a non-empty list of shapes", fix=f"e.g. {CONTACT_EXAMPLE}")
+        for i, item in enumerate(shapes):
+            out.append(_contact(v, link, item, f"{path}[{i}]"))
+            if len(out) > MAX_CONTACTS:
+                raise v.error(path, f"more than {MAX_CONTACTS} contacts",
+                              fix="give each foot a few primitives (the vendor's MuJoCo model's)")
+    return tuple(out)
+
+
+def _contact(v: Validator, link: str, item: Any, path: str) -> ContactGeom:
+    m = v.mapping(item, path, (*CONTACT_SHAPES, "xyz", "rpy"))
+    shapes = [s for s in CONTACT_SHAPES if s in m]
+    if len(shapes) != 1:
+        raise v.error(path, "must name exactly one shape: " + ", ".join(CONTACT_SHAPES),
+                      fix="e.g. {sphere: 0.005, xyz: [0.1, 0.03, -0.03]}")
+    shape = shapes[0]
+    count, what = CONTACT_SIZES[shape]
+    fix = f"write {shape}: {what}, each more than 0"
+    sizes = _numbers(v, m[shape], f"{path}.{shape}", count, fix)
+    if not all(0.0 < x <= 100.0 for x in sizes):
+        raise v.error(f"{path}.{shape}", f"a {shape}'s sizes must be more than 0 m (and at most 100 m)", fix=fix)
+    xyz = _numbers(v, m["xyz"], f"{path}.xyz", 3, "write xyz: [x, y, z] in m") if "xyz" in m else (0.0,) * 3
+    rpy = _numbers(v, m["rpy"], f"{path}.rpy", 3, "write rpy: [roll, pitch, yaw] in rad") if "rpy" in m else (0.0,) * 3
+    padded = (*sizes, *(0.0,) * (3 - len(sizes)))
+    return ContactGeom(link, shape, (padded[0], padded[1], padded[2]), (xyz[0], xyz[1], xyz[2]),
+                       (rpy[0], rpy[1], rpy[2]))
+
+
+def _numbers(v: Validator, raw: Any, path: str, count: int, fix: str) -> tuple[float, ...]:
+    """``count`` finite numbers: a list of them, or one number alone when ``count`` is 1."""
+    items = raw if isinstance(raw, list) else [raw] if count == 1 else None
+    if items is None or len(items) != count:
+        raise v.error(path, f"must be {'a number' if count == 1 else f'a list of {count} numbers'}", fix=fix)
+    return tuple(v.finite_number(x, f"{path}[{i}]" if isinstance(raw, list) else path, fix)
+                 for i, x in enumerate(items))
 
 
 def _joint_map(v: Validator, raw: Any, motor_count: int) -> tuple[tuple[str, int], ...]:

@@ -19,7 +19,23 @@ HANDS = ("none", "dex3", "omnihand")
 # unitree_mujoco's robot models give their joints (armature 0.01), the order of a humanoid's geared motors.
 ARMATURE_DEFAULT = 0.01
 MAX_ARMATURE = 100.0  # far above any real rotor; a typo of a few zeros still fails
+MAX_JOINT_FRICTION = 1e4  # [N m or N s/m] joint_damping / joint_frictionloss: far above any real joint
+# The collision shapes vendor YAML `contacts` take, as URDF <geometry> names them.
+CONTACT_SHAPES = ("sphere", "box", "cylinder")
+MAX_CONTACTS = 256  # per robot: a foot is a few primitives; far more is a mistake
 MAX_MOTORS = 4096  # per robot: far above any real robot, low enough to keep the generated tables sane
+
+
+@dataclass(frozen=True)
+class ContactGeom:
+    """A collision primitive the vendor YAML `contacts` give a URDF link, in the URDF's terms. It stands in for
+    the link's mesh collisions when the meshes are not installed (the fake robot's physics), so that the
+    contacts that matter (feet) stay: the vendor's own MuJoCo model's primitives."""
+    link: str
+    shape: str                                 # CONTACT_SHAPES
+    size: tuple[float, float, float]           # sphere (radius, 0, 0); box (x, y, z); cylinder (radius, length, 0)
+    xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)   # [m] origin in the link's frame
+    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)   # [rad] URDF <origin rpy>
 
 
 @dataclass(frozen=True)
@@ -112,6 +128,12 @@ class VendorConfig:
     # joint -> kg m^2 (kg for a prismatic joint): the rotor inertia reflected to the joint, for the fake robot's
     # physics (YAML armatures; ARMATURE_DEFAULT for a joint not listed)
     armatures: tuple[tuple[str, float], ...] = ()
+    # joint -> N m s/rad (N s/m) and N m (N): the physics' passive damping and dry friction, in place of the
+    # URDF's <dynamics damping friction> (YAML joint_damping, joint_frictionloss: the vendor's MuJoCo model's)
+    joint_damping: tuple[tuple[str, float], ...] = ()
+    joint_frictionloss: tuple[tuple[str, float], ...] = ()
+    # collision primitives per link, for the physics when the URDF's meshes are missing (YAML contacts)
+    contacts: tuple[ContactGeom, ...] = ()
     # joint -> (direction, reduction, offset): joint = direction * motor / reduction + offset (YAML transmissions)
     transmissions: tuple[tuple[str, int, float, float], ...] = ()
     # (group, joints, matrix): joint = matrix @ motor + offset, motor k in the slot of joints[k] (YAML coupled_joints)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .config import ARMATURE_DEFAULT, ImuConfig, Parameters, TransportOptions
+from .config import ARMATURE_DEFAULT, ContactGeom, ImuConfig, Parameters, TransportOptions
 from .motor_groups import MotorGroup, motor_groups
 from .naming import PACKAGE_NAMESPACE
 from .urdf import JointLimits
@@ -67,6 +67,10 @@ class MotorJoint:
     # The rotor inertia reflected to the joint [kg m^2, or kg], the fake robot's physics adds it to the joint
     # (MuJoCo's armature): the YAML's armatures, or ARMATURE_DEFAULT.
     armature: float = ARMATURE_DEFAULT
+    # The physics' passive damping [N m s/rad, N s/m] and dry friction [N m, N] (MuJoCo's damping and
+    # frictionloss): the vendor YAML's joint_damping / joint_frictionloss, else the URDF's <dynamics>.
+    physics_damping: float = 0.0
+    frictionloss: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -112,6 +116,7 @@ class RobotModel:
     authority: str = "full"   # vendor YAML authority: full | upper_body (model/config.py AUTHORITIES)
     hands: str = "none"       # vendor YAML hands: none | dex3 (model/config.py HANDS)
     kdl_root: KdlRoot | None = None  # the installed URDF's massless root, where the URDF's root has an inertia
+    contacts: tuple[ContactGeom, ...] = ()  # the YAML's collision primitives, for the physics without meshes
 
     @property
     def cpp_namespace(self) -> str:

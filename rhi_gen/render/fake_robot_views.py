@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 
 from .. import transports
 from ..model import RobotModel
+from ..model.config import ContactGeom
 from ..model.robot import MotorJoint
 
 
@@ -33,6 +34,8 @@ class FakeJointLine:
     armature: float = 0.01  # [kg m^2 or kg] the rotor inertia reflected to the URDF joint, for the physics
     gain: float = 1.0     # its transmission, for the physics: motor = gain * (joint - offset)
     offset: float = 0.0
+    physics_damping: float = 0.0  # the physics' passive damping and dry friction of the URDF joint
+    frictionloss: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -42,6 +45,7 @@ class FakeRobotView:
     node_name: str        # also its executable's name
     urdf: str             # its URDF in the package's share folder, for --physics mujoco
     imu_link: str         # the URDF link of its IMU, "" without one (the physics then puts it at the root)
+    contacts: tuple[ContactGeom, ...] = ()  # the YAML's, for the physics when meshes are missing
 
     @property
     def has_transmissions(self) -> bool:
@@ -89,8 +93,8 @@ def fake_robot_view(robot: RobotModel) -> FakeRobotView:
     coupled = {name for group in robot.coupled_groups for name in group.joints}
     transport = transports.get(robot.transport)
     lines = (replace(_line(j, j.name in coupled), velocity_commanded=j.command_mode == "velocity",
-                     armature=j.armature)
+                     armature=j.armature, physics_damping=j.physics_damping, frictionloss=j.frictionloss)
              for j in robot.joints_by_index)
     return FakeRobotView(tuple(lines),
                          transport.fake_state_rate_hz, f"{robot.robot}_fake_robot", f"urdf/{robot.robot}.urdf",
-                         robot.imu.frame_id if robot.imu.enabled else "")
+                         robot.imu.frame_id if robot.imu.enabled else "", robot.contacts)

@@ -41,6 +41,7 @@ from pathlib import Path
 
 import pytest
 
+from rhi_gen.assemble.joint_inertia import joint_dynamics
 from rhi_gen.inputs.urdf_loader import load_urdf
 from rhi_gen.render.environment import SOURCE_ROOT
 from tests.support.ament_lint import run_cpplint, run_uncrustify
@@ -129,6 +130,7 @@ def joint_table(yaml_path: Path, urdf_path: Path, path: Path, *, held: tuple[str
     """The joints as rhi-gen reads them: slots and gains from the YAML, limits from the URDF. Each starts at
     zero clamped into its limits or, `inset`, 2 amplitudes + 0.1 rad inside them, so that gravity pulls on it."""
     joints = {j.name: j for j in load_urdf(urdf_path).joints}
+    dynamics = joint_dynamics(urdf_path.read_text(encoding="utf-8"))
     _, gains = yaml_modes_and_gains(yaml_path)
     lines = []
     for name, slot in yaml_joint_map(yaml_path).items():
@@ -143,7 +145,9 @@ def joint_table(yaml_path: Path, urdf_path: Path, path: Path, *, held: tuple[str
         effort = lim.effort if lim is not None and lim.effort else math.inf
         kp, kd = gains.get(name, (0.0, 0.0))
         amplitude = 0.0 if name in held else AMPLITUDE
-        lines.append(f"{name} {slot} {lo!r} {hi!r} {velocity!r} {effort!r} {start!r} {kp!r} {kd!r} {amplitude!r}")
+        d = dynamics[name]
+        lines.append(f"{name} {slot} {lo!r} {hi!r} {velocity!r} {effort!r} {start!r} {kp!r} {kd!r} {amplitude!r} "
+                     f"{d.urdf_damping!r} {d.urdf_friction!r}")
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return path
 
@@ -257,7 +261,7 @@ def test_motors_behind_transmissions_move_their_joints_as_the_urdf_joints_would(
     assert sum(1 for g, o in gains.values() if (g, o) != (1.0, 0.0)) == 3, gains
     motor_lines = []
     for line in talos_table.read_text(encoding="utf-8").splitlines():
-        name, slot, lo, hi, vel, eff, start, kp, kd, amplitude = line.split()
+        name, slot, lo, hi, vel, eff, start, kp, kd, amplitude, damping, friction = line.split()
         g, o = gains[name]
         lo_m, hi_m = sorted((g * (float(lo) - o), g * (float(hi) - o)))
         vel_m, eff_m = float(vel) * abs(g), float(eff) / abs(g)
@@ -266,7 +270,8 @@ def test_motors_behind_transmissions_move_their_joints_as_the_urdf_joints_would(
             assert (math.isclose(lo_m, v.position_min, abs_tol=1e-12) and math.isclose(hi_m, v.position_max)
                     and math.isclose(vel_m, v.velocity_max) and math.isclose(eff_m, v.effort_max)), (name, v)
         motor_lines.append(f"{name} {slot} {lo_m!r} {hi_m!r} {vel_m!r} {eff_m!r} {g * (float(start) - o)!r} "
-                           f"{float(kp) / g ** 2!r} {float(kd) / g ** 2!r} {amplitude} {g!r} {o!r}")
+                           f"{float(kp) / g ** 2!r} {float(kd) / g ** 2!r} {amplitude} {damping} {friction} {g!r} "
+                           f"{o!r}")
     motor_table = tmp_path / "talos_motors.tab"
     motor_table.write_text("\n".join(motor_lines) + "\n", encoding="utf-8")
     runs = [run_check(checker, "hold", table, TALOS_URDF, seconds=2.0) for table in (talos_table, motor_table)]

@@ -998,10 +998,10 @@ class PhysicsRobot:
 
 
 PHYSICS_ROBOTS = {
-    "unitree/g1": PhysicsRobot("band", ("band", "arm"), r"left_(shoulder|elbow|wrist)"),
-    "engineai/pm01": PhysicsRobot("band", ("band",)),
+    "unitree/g1": PhysicsRobot("band", ("band", "arm", "stand", "stand_stiff"), r"left_(shoulder|elbow|wrist)"),
+    "engineai/pm01": PhysicsRobot("band", ("band", "stand")),
     "engineai/pm01_native_sdk": PhysicsRobot("band"),
-    "agibot/x2": PhysicsRobot("band"),
+    "agibot/x2": PhysicsRobot("band", ("band", "stand", "stand_stiff")),
     "unitree/go2w": PhysicsRobot("band", ("roll",)),
 }
 

@@ -39,6 +39,11 @@ struct FakeJointSpec
   // [kg m^2] or [kg]: the rotor inertia reflected to the URDF joint (vendor YAML armatures, default
   // 0.01), which the physics adds to the joint (fake_physics_mujoco.hpp); the vacuum ignores it
   double armature;
+  // For the physics (the vacuum ignores them): MuJoCo's passive joint damping [N m s / rad] and
+  // dry friction [N m] (frictionloss), the vendor YAML's joint_damping / joint_frictionloss, else
+  // the URDF's <dynamics damping friction> (0 where it has none), as MuJoCo's URDF reader takes them
+  double physics_damping;
+  double frictionloss;
 };
 
 // What one motor was last told, in the vendor's terms.

@@ -36,6 +36,20 @@ struct FakeTransmission
   double offset{0.0};  // [rad or m] the joint's value at motor zero
 };
 
+// A collision shape the vendor YAML's `contacts` give a link, in the URDF's terms: where the
+// vendor's URDF collides with meshes (feet), the vendor's own MuJoCo model's primitives stand in
+// for them when the meshes are not installed (fake_physics_mujoco.hpp).
+enum class FakeContactShape { kSphere, kBox, kCylinder };
+
+struct FakeContactGeom
+{
+  const char * link;            // URDF link
+  FakeContactShape shape;
+  std::array<double, 3> size;   // sphere {radius}; box {x, y, z} (full lengths); cylinder {radius, length}
+  std::array<double, 3> xyz;    // [m] the shape's origin in the link's frame (URDF <origin xyz>)
+  std::array<double, 3> rpy;    // [rad] its orientation (URDF <origin rpy>: fixed-axis x, y, z)
+};
+
 struct FakePhysicsOptions
 {
   // "free" | "band" | "fixed" -> FakeBase; false for anything else. (Members, not free functions:
@@ -66,6 +80,9 @@ struct FakePhysicsOptions
   std::vector<double> armatures;
   // One per joint of the table (FakeJointSpec order), or none: every motor is its joint.
   std::vector<FakeTransmission> transmissions;
+  // Added to their links when a mesh is missing and the mesh geoms are left out (see
+  // FakeContactGeom); none: the robot's own (FakePhysicsSpec::contacts).
+  std::vector<FakeContactGeom> contacts;
   std::string imu_link;           // URDF link of the IMU; "" = the root link
   // ':'-separated prefixes to resolve package:// under: a ROS 2 executable passes
   // AMENT_PREFIX_PATH (<prefix>/share/<package>/ is where colcon installs a package's files).
@@ -132,6 +149,9 @@ struct FakePhysicsSpec
   const char * imu_link;  // the URDF link of its IMU ("": its root link)
   // One per joint of the table (FakeJointSpec order), or nullptr: every motor is its joint.
   const FakeTransmission * transmissions;
+  // The vendor YAML's contacts (FakeContactGeom), contact_count of them (nullptr: none).
+  const FakeContactGeom * contacts;
+  size_t contact_count;
 };
 
 }  // namespace robot_hardware_interface

@@ -18,11 +18,15 @@
 // - the robot from the URDF: MuJoCo's URDF defaults (visual elements discarded, static bodies
 //   fused, radians), the URDF's joint limits, <dynamics damping friction> and <inertial>s; each
 //   joint of the table gets an armature (rotor inertia: FakeJointSpec::armature, the vendor
-//   YAML's);
+//   YAML's), and the table's passive damping and dry friction (FakeJointSpec::physics_damping,
+//   frictionloss: the vendor YAML's joint_damping / joint_frictionloss, else the URDF's
+//   <dynamics>);
 // - meshes: `package://<pkg>/<path>` is looked up as <prefix>/share/<pkg>/<path> (and
 //   <prefix>/<pkg>/<path>) under each prefix of FakePhysicsOptions::package_path, `file://` and
 //   relative paths as MuJoCo does; when one cannot be found, every mesh geom is dropped and the
-//   model is inertial-only (its primitive geoms stay), with one warning;
+//   model is inertial-only (its primitive geoms stay), with one warning; the vendor YAML's
+//   contacts (FakePhysicsOptions::contacts: its MuJoCo model's primitives, e.g. the feet's) then
+//   stand in for the mesh collisions on their links, so that a free base still stands;
 // - gravity (0, 0, -9.81) and a floor plane at z = 0;
 // - the base (FakeBase): `free` (a free joint on the URDF's root link), `band` (free, held by an
 //   elastic band: a spring-damper pulling a point fixed to the root link, band_arm above the
@@ -173,6 +177,7 @@ public:
       apply_forces();
       mj_step(model_, data_);
       ++physics_steps_;
+      note_floor_touches();
     }
     read_state();
   }
@@ -241,7 +246,42 @@ public:
     }
     return p;
   }
+  // The root link's orientation in the world (w, x, y, z).
+  std::array<double, 4> base_orientation() const
+  {
+    std::array<double, 4> q{1.0, 0.0, 0.0, 0.0};
+    if (data_ != nullptr) {
+      const mjtNum * from = data_->xquat + 4 * root_body_;
+      for (int i = 0; i < 4; ++i) {
+        q[i] = from[i];
+      }
+    }
+    return q;
+  }
   double simulated_time() const {return data_ != nullptr ? data_->time : 0.0;}
+  // The robot's mass as MuJoCo compiled it [kg] (every body's but the world's).
+  double total_mass() const
+  {
+    double m = 0.0;
+    for (int b = 1; model_ != nullptr && b < model_->nbody; ++b) {
+      m += model_->body_mass[b];
+    }
+    return m;
+  }
+  // The links (compiled bodies: a link fixed to its parent is fused into it) that touched the floor
+  // in any physics step since the last call, by name, and forget them. Not real-time.
+  std::vector<std::string> floor_touches()
+  {
+    std::vector<std::string> names;
+    for (size_t b = 0; b < touched_.size(); ++b) {
+      if (touched_[b] != 0) {
+        const char * name = mj_id2name(model_, mjOBJ_BODY, static_cast<int>(b));
+        names.emplace_back(name != nullptr ? name : "body " + std::to_string(b));
+        touched_[b] = 0;
+      }
+    }
+    return names;
+  }
   uint64_t physics_steps() const {return physics_steps_;}
   double band_stiffness() const {return band_k_;}
   double band_damping() const {return band_d_;}
@@ -334,8 +374,10 @@ private:
           "moving joint of the URDF as MuJoCo reads it";
         return false;
       }
-      mjs_asJoint(e)->armature = options_.armatures.empty() ? joints_[k].armature :
-        options_.armatures[k];
+      mjsJoint * joint = mjs_asJoint(e);
+      joint->armature = options_.armatures.empty() ? joints_[k].armature : options_.armatures[k];
+      set_linear(joint->damping, joints_[k].physics_damping);
+      joint->frictionloss = joints_[k].frictionloss;
     }
     const std::string imu = options_.imu_link.empty() ? root_name_ : options_.imu_link;
     mjsBody * imu_body = mjs_findBody(spec, imu.c_str());
@@ -419,11 +461,74 @@ private:
     const std::string where = options_.package_path.empty() ?
       std::string("no package path given") :
       "package:// looked up under '" + options_.package_path + "'";
+    std::string stand_in;
+    if (!add_contacts(spec, &stand_in)) {
+      warnings->push_back(stand_in);
+      return false;
+    }
     warnings->push_back(
       std::to_string(total - found.size()) + " of " + std::to_string(total) +
       " meshes not found (first: " + first_missing + "; " + where +
-      "): inertial-only model, the mesh geoms left out");
+      "): the mesh geoms left out" + (stand_in.empty() ? std::string(", inertial-only model") :
+      "; the vendor YAML's contacts stand in for them: " + stand_in));
     return true;
+  }
+
+  // The options' contacts on their links (in place of the mesh collisions left out). *what: "2 boxes
+  // on LINK_ANKLE_ROLL_L, ..." ("" when there are none); false with the reason in *what when a
+  // contact names no link of the URDF.
+  bool add_contacts(mjSpec * spec, std::string * what)
+  {
+    std::vector<std::pair<std::string, size_t>> per_link;
+    for (const FakeContactGeom & c : options_.contacts) {
+      mjsBody * body = mjs_findBody(spec, c.link);
+      if (body == nullptr) {
+        *what = std::string("contacts: '") + c.link + "' is not a link of the URDF";
+        return false;
+      }
+      mjsGeom * geom = mjs_addGeom(body, nullptr);
+      geom->type = c.shape == FakeContactShape::kBox ? mjGEOM_BOX :
+        c.shape == FakeContactShape::kCylinder ? mjGEOM_CYLINDER : mjGEOM_SPHERE;
+      // MuJoCo's sizes are half lengths: a box's half extents, a cylinder's radius and half length.
+      geom->size[0] = c.shape == FakeContactShape::kBox ? 0.5 * c.size[0] : c.size[0];
+      geom->size[1] = c.shape == FakeContactShape::kBox ? 0.5 * c.size[1] :
+        c.shape == FakeContactShape::kCylinder ? 0.5 * c.size[1] : 0.0;
+      geom->size[2] = c.shape == FakeContactShape::kBox ? 0.5 * c.size[2] : 0.0;
+      for (int i = 0; i < 3; ++i) {
+        geom->pos[i] = c.xyz[i];
+      }
+      rpy_to_quat(c.rpy, geom->quat);
+      geom->mass = 0.0;  // a contact, not a body: the URDF's <inertial> stays the link's mass
+      geom->density = 0.0;
+      if (per_link.empty() || per_link.back().first != c.link) {
+        per_link.emplace_back(c.link, 0);
+      }
+      ++per_link.back().second;
+    }
+    for (const auto & link : per_link) {
+      *what += (what->empty() ? "" : ", ") + std::to_string(link.second) + " on " + link.first;
+    }
+    return true;
+  }
+
+  // URDF's rpy (rotations about the fixed x, y, z axes, in that order) as MuJoCo's w, x, y, z.
+  static void rpy_to_quat(const std::array<double, 3> & rpy, double quat[4])
+  {
+    const double cr = std::cos(0.5 * rpy[0]), sr = std::sin(0.5 * rpy[0]);
+    const double cp = std::cos(0.5 * rpy[1]), sp = std::sin(0.5 * rpy[1]);
+    const double cy = std::cos(0.5 * rpy[2]), sy = std::sin(0.5 * rpy[2]);
+    quat[0] = cr * cp * cy + sr * sp * sy;
+    quat[1] = sr * cp * cy - cr * sp * sy;
+    quat[2] = cr * sp * cy + sr * cp * sy;
+    quat[3] = cr * cp * sy - sr * sp * cy;
+  }
+
+  // MuJoCo 3 has one damping coefficient per joint, MuJoCo 4 a polynomial (its first the linear).
+  static void set_linear(double & field, double value) {field = value;}
+  template<size_t K>
+  static void set_linear(double (& field)[K], double value)
+  {
+    field[0] = value;
   }
 
   std::string resolve(const std::string & file, const std::filesystem::path & urdf_dir) const
@@ -489,6 +594,8 @@ private:
       return false;
     }
     free_joint_ = mj_name2id(model_, mjOBJ_JOINT, "rhi_floating_base");
+    floor_geom_ = mj_name2id(model_, mjOBJ_GEOM, "rhi_floor");
+    touched_.assign(static_cast<size_t>(model_->nbody), 0);
     if (model_->nsensor != 3 || (options_.base != FakeBase::kFixed && free_joint_ < 0)) {
       *error = "MuJoCo's model lacks the IMU sensors or the floating base it was given";
       return false;
@@ -514,7 +621,7 @@ private:
   // The robot at its start pose, its root link where the URDF puts it.
   struct Extent
   {
-    double lowest;     // [m] its lowest point: geoms' bounding spheres, else link origins
+    double lowest;     // [m] its lowest point: geoms' bounding boxes, else link origins
     double reach;      // [m] an upper bound of how far any point of it gets from its root link
     double root_z;     // [m] the root link's height
     int robot_geoms;   // geoms of the robot (not the world's)
@@ -544,7 +651,15 @@ private:
         continue;
       }
       ++e.robot_geoms;
-      e.lowest = std::min(e.lowest, data_->geom_xpos[3 * g + 2] - model_->geom_rbound[g]);
+      // The lowest corner of the geom's box in its own frame (geom_aabb: centre, half sizes), turned
+      // into the world: a foot's sole sits on the floor, not its bounding sphere.
+      const mjtNum * box = model_->geom_aabb + 6 * g;
+      const mjtNum * r = data_->geom_xmat + 9 * g;
+      double z = data_->geom_xpos[3 * g + 2];
+      for (int i = 0; i < 3; ++i) {
+        z += r[6 + i] * box[i] - std::fabs(r[6 + i]) * box[3 + i];
+      }
+      e.lowest = std::min(e.lowest, z);
       largest_geom = std::max(
         largest_geom, model_->geom_rbound[g] + norm3(model_->geom_pos + 3 * g));
     }
@@ -668,6 +783,19 @@ private:
     }
   }
 
+  // Which bodies the floor's contacts touch (allocation-free: touched_ is sized at load()).
+  void note_floor_touches()
+  {
+    for (int i = 0; i < data_->ncon; ++i) {
+      const mjContact & c = data_->contact[i];
+      const int other = c.geom[0] == floor_geom_ ? c.geom[1] :
+        c.geom[1] == floor_geom_ ? c.geom[0] : -1;
+      if (other >= 0) {
+        touched_[static_cast<size_t>(model_->geom_bodyid[other])] = 1;
+      }
+    }
+  }
+
   void read_state()
   {
     for (size_t k = 0; k < count_; ++k) {
@@ -716,6 +844,8 @@ private:
   std::string root_name_;
   int root_body_{-1};
   int free_joint_{-1};
+  int floor_geom_{-1};
+  std::vector<char> touched_;  // per body: touched the floor since floor_touches()
   double floor_z_{0.0};
   double band_k_{0.0};
   double band_d_{0.0};

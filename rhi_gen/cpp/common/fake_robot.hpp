@@ -274,6 +274,13 @@ public:
   // Where the robot's root link is in the world [m]: the simulation's, the origin in a vacuum
   // (where nothing carries the robot anywhere).
   virtual std::array<double, 3> base_position() const = 0;
+  // The robot's mass as the simulation has it [kg] (0 in a vacuum), and the links that touched the
+  // floor since the last call (none in a vacuum): what a test of a robot standing reads. Not
+  // real-time.
+  virtual double total_mass() const = 0;
+  // The root link's orientation in the world (w, x, y, z): level in a vacuum.
+  virtual std::array<double, 4> base_orientation() const = 0;
+  virtual std::vector<std::string> floor_touches() = 0;
 };
 
 // The robot-independent fake robot: its loop, its faults, its body; the transport speaks.
@@ -386,6 +393,9 @@ public:
       o.transmissions.assign(
         physics_spec_.transmissions, physics_spec_.transmissions + model_.dynamics.joint_count());
     }
+    if (o.contacts.empty() && physics_spec_.contacts != nullptr) {
+      o.contacts.assign(physics_spec_.contacts, physics_spec_.contacts + physics_spec_.contact_count);
+    }
     auto physics = std::make_unique<FakeMujocoPhysics<N>>(
       model_.dynamics.joints(), model_.dynamics.joint_count());
     if (!physics->load(o, error, warnings)) {
@@ -417,6 +427,36 @@ public:
     }
 #endif
     return {0.0, 0.0, 0.0};
+  }
+
+  std::array<double, 4> base_orientation() const override
+  {
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    if (physics_) {
+      return physics_->base_orientation();
+    }
+#endif
+    return {1.0, 0.0, 0.0, 0.0};
+  }
+
+  double total_mass() const override
+  {
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    if (physics_) {
+      return physics_->total_mass();
+    }
+#endif
+    return 0.0;
+  }
+
+  std::vector<std::string> floor_touches() override
+  {
+#if defined(RHI_FAKE_PHYSICS_MUJOCO)
+    if (physics_) {
+      return physics_->floor_touches();
+    }
+#endif
+    return {};
   }
 
 private:

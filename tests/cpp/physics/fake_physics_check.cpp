@@ -109,8 +109,10 @@ std::vector<Row> read_table(const char * path)
   while (std::getline(in, line)) {
     std::istringstream words(line);
     Row r;
-    std::string slot, lo, hi, vel, eff, init, kp, kd, amplitude;
-    if (!(words >> r.name >> slot >> lo >> hi >> vel >> eff >> init >> kp >> kd >> amplitude)) {
+    std::string slot, lo, hi, vel, eff, init, kp, kd, amplitude, damping, friction;
+    if (!(words >> r.name >> slot >> lo >> hi >> vel >> eff >> init >> kp >> kd >> amplitude >> damping >>
+      friction))
+    {
       continue;
     }
     r.spec.slot = static_cast<size_t>(std::strtoul(slot.c_str(), nullptr, 10));
@@ -121,6 +123,8 @@ std::vector<Row> read_table(const char * path)
     r.spec.inertia = 0.01;
     r.spec.damping = 0.0;
     r.spec.armature = 0.01;  // the vendor YAML default (rhi_gen/model/config.py ARMATURE_DEFAULT)
+    r.spec.physics_damping = number(damping);  // the URDF's <dynamics>, as rhi-gen reads it
+    r.spec.frictionloss = number(friction);
     r.spec.initial_position = number(init);
     r.kp = number(kp);
     r.kd = number(kd);

@@ -26,68 +26,130 @@ constexpr size_t kMotorCount = 31;
 // The driver's motors as the fake robot simulates them, by SDK slot (URDF limits and initial
 // position in motor units, inertia of the URDF subtree about the axis, URDF damping):
 // {name, slot, position min, max, |velocity| max, |effort| max, inertia, damping, initial position,
-// velocity-commanded, armature: the rotor inertia reflected to the URDF joint, for --physics
-// mujoco}
+// velocity-commanded, and for --physics mujoco: armature (the rotor inertia reflected to the URDF
+// joint), passive damping, dry friction (the vendor YAML's, else the URDF's <dynamics>)}
 constexpr std::array<FakeJointSpec, 31> kFakeJoints = {{
-  {"left_hip_pitch_joint", 0, -2.70526, 2.556907, 11.93808, 120.0, 0.906598, 0.1, 0.0, false, 0.01},
-  {"left_hip_roll_joint", 1, -0.235619, 2.905973, 11.93808, 120.0, 0.895784, 0.1, 0.0, false, 0.01},
+  {"left_hip_pitch_joint", 0, -2.70526, 2.556907, 11.93808, 120.0, 0.906598, 0.1, 0.0, false, 0.03,
+    0.0, 0.3},
+  {"left_hip_roll_joint", 1, -0.235619, 2.905973, 11.93808, 120.0, 0.895784, 0.1, 0.0, false, 0.03,
+    0.0, 0.3},
   {"left_hip_yaw_joint", 2, -1.858775925, 3.604104925, 11.93808, 120.0, 0.0408141, 0.1, 0.0, false,
-    0.01},
-  {"left_knee_joint", 3, 0.0, 2.408554, 11.93808, 120.0, 0.189328, 0.1, 0.0, false, 0.01},
+    0.03, 0.0, 0.3},
+  {"left_knee_joint", 3, 0.0, 2.408554, 11.93808, 120.0, 0.189328, 0.1, 0.0, false, 0.03, 0.0, 0.3},
   {"left_ankle_pitch_joint", 4, -0.802851, 0.453786, 13.6136, 60.0, 0.0200116, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"left_ankle_roll_joint", 5, -0.2967059728, 0.2967059728, 14.660799999999998, 36.0, 0.01, 0.1,
-    0.0, false, 0.01},
-  {"right_hip_pitch_joint", 6, -2.70526, 2.556907, 11.93808, 120.0, 0.906598, 0.1, 0.0, false,
-    0.01},
-  {"right_hip_roll_joint", 7, -2.905973, 0.235619, 11.93808, 120.0, 0.895784, 0.1, 0.0, false,
-    0.01},
+    0.0, false, 0.03, 0.0, 0.3},
+  {"right_hip_pitch_joint", 6, -2.70526, 2.556907, 11.93808, 120.0, 0.906598, 0.1, 0.0, false, 0.03,
+    0.0, 0.3},
+  {"right_hip_roll_joint", 7, -2.905973, 0.235619, 11.93808, 120.0, 0.895784, 0.1, 0.0, false, 0.03,
+    0.0, 0.3},
   {"right_hip_yaw_joint", 8, -3.604104925, 1.858775925, 11.93808, 120.0, 0.0408141, 0.1, 0.0, false,
-    0.01},
-  {"right_knee_joint", 9, 0.0, 2.408554, 11.93808, 120.0, 0.189327, 0.1, 0.0, false, 0.01},
+    0.03, 0.0, 0.3},
+  {"right_knee_joint", 9, 0.0, 2.408554, 11.93808, 120.0, 0.189327, 0.1, 0.0, false, 0.03, 0.0,
+    0.3},
   {"right_ankle_pitch_joint", 10, -0.802851, 0.453786, 13.6136, 60.0, 0.0200116, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"right_ankle_roll_joint", 11, -0.2967059728, 0.2967059728, 14.660799999999998, 36.0, 0.01, 0.1,
-    0.0, false, 0.01},
-  {"waist_yaw_joint", 12, -3.429572, 2.120575, 11.93808, 120.0, 0.945502, 0.1, 0.0, false, 0.01},
+    0.0, false, 0.03, 0.0, 0.3},
+  {"waist_yaw_joint", 12, -3.429572, 2.120575, 11.93808, 120.0, 0.945502, 0.1, 0.0, false, 0.03,
+    0.0, 0.3},
   {"waist_pitch_joint", 13, -0.314159, 0.314159, 14.660799999999998, 36.0, 0.815771, 0.1, 0.0,
-    false, 0.01},
-  {"waist_roll_joint", 14, -0.488692, 0.488692, 14.661, 36.0, 1.55958, 0.1, 0.0, false, 0.01},
+    false, 0.03, 0.0, 0.3},
+  {"waist_roll_joint", 14, -0.488692, 0.488692, 14.661, 36.0, 1.55958, 0.1, 0.0, false, 0.03, 0.0,
+    0.3},
   {"left_shoulder_pitch_joint", 15, -3.080506, 2.033309, 13.6136, 60.0, 0.562472, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"left_shoulder_roll_joint", 16, -0.061087, 3.0456, 13.6136, 60.0, 0.552383, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"left_shoulder_yaw_joint", 17, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.050196, 0.1, 0.0,
-    false, 0.01},
+    false, 0.03, 0.0, 0.3},
   {"left_elbow_joint", 18, -2.356194, 0.0, 14.660799999999998, 36.0, 0.137358, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"left_wrist_yaw_joint", 19, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.03, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"left_wrist_pitch_joint", 20, -0.523599, 0.523599, 15.707999999999998, 6.0, 0.02, 0.1, 0.0,
-    false, 0.01},
+    false, 0.03, 0.0, 0.3},
   {"left_wrist_roll_joint", 21, -1.50971, 0.724312, 15.707999999999998, 6.0, 0.01, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"right_shoulder_pitch_joint", 22, -3.080506, 2.033309, 13.6136, 60.0, 0.562579, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"right_shoulder_roll_joint", 23, -3.0456, 0.061087, 13.6136, 60.0, 0.552383, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"right_shoulder_yaw_joint", 24, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0501967, 0.1,
-    0.0, false, 0.01},
+    0.0, false, 0.03, 0.0, 0.3},
   {"right_elbow_joint", 25, -2.356194, 0.0, 14.660799999999998, 36.0, 0.137358, 0.1, 0.0, false,
-    0.01},
+    0.03, 0.0, 0.3},
   {"right_wrist_yaw_joint", 26, -2.556907, 2.556907, 14.660799999999998, 36.0, 0.0300005, 0.1, 0.0,
-    false, 0.01},
+    false, 0.03, 0.0, 0.3},
   {"right_wrist_pitch_joint", 27, -0.523599, 0.523599, 15.707999999999998, 6.0, 0.02, 0.1, 0.0,
-    false, 0.01},
+    false, 0.03, 0.0, 0.3},
   {"right_wrist_roll_joint", 28, -0.724312, 1.50971, 15.707999999999998, 6.0, 0.01, 0.1, 0.0, false,
-    0.01},
-  {"head_yaw_joint", 29, -0.488692, 0.488692, 3.3109, 3.13125, 0.0200076, 0.1, 0.0, false, 0.01},
-  {"head_pitch_joint", 30, -0.401425, 0.488692, 10.472, 2.0, 0.01, 0.1, 0.0, false, 0.01},
+    0.03, 0.0, 0.3},
+  {"head_yaw_joint", 29, -0.488692, 0.488692, 3.3109, 3.13125, 0.0200076, 0.1, 0.0, false, 0.03,
+    0.0, 0.3},
+  {"head_pitch_joint", 30, -0.401425, 0.488692, 10.472, 2.0, 0.01, 0.1, 0.0, false, 0.03, 0.0, 0.3},
 }};
 
-// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions.
+
+// For --physics mujoco without the URDF's meshes: the vendor YAML's contacts, in the URDF's terms
+// {link, shape, size (sphere: radius; box: x, y, z; cylinder: radius, length), xyz, rpy}.
+constexpr std::array<FakeContactGeom, 24> kFakeContacts = {{
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.05, 0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.065, 0.025, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.05, -0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.065, -0.025, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.11, 0.05, -0.068}, {0.0,
+    0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.11, -0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.02, -0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.02, 0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.07, -0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.07, 0.06, -0.068}, {0.0,
+    0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.139, 0.0, -0.066}, {0.0,
+    0.0, 0.0}},
+  {"left_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.128, 0.0, -0.02}, {0.0,
+    0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.05, 0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.065, 0.025, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.05, -0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.065, -0.025, -0.068},
+    {0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.11, 0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.11, -0.05, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.02, -0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {-0.02, 0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.07, -0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.07, 0.06, -0.068}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.139, 0.0, -0.066}, {
+    0.0, 0.0, 0.0}},
+  {"right_ankle_roll_link", FakeContactShape::kSphere, {0.005, 0.0, 0.0}, {0.128, 0.0, -0.02}, {0.0,
+    0.0, 0.0}},
+}};
+
+// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions,
+// the contacts.
 constexpr FakePhysicsSpec kFakePhysics{
-  "urdf/x2.urdf", "imu_in_torso_link", nullptr};
+  "urdf/x2.urdf", "imu_in_torso_link", nullptr,
+  kFakeContacts.data(), 24};
 
 // AimDK joint groups: {name, first motor slot, size, command topic, state topic}
 constexpr std::array<robot_hardware_interface::AimdkJointGroup, 4> kGroups = {{

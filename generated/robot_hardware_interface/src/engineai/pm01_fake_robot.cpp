@@ -26,38 +26,66 @@ constexpr size_t kMotorCount = 24;
 // The driver's motors as the fake robot simulates them, by SDK slot (URDF limits and initial
 // position in motor units, inertia of the URDF subtree about the axis, URDF damping):
 // {name, slot, position min, max, |velocity| max, |effort| max, inertia, damping, initial position,
-// velocity-commanded, armature: the rotor inertia reflected to the URDF joint, for --physics
-// mujoco}
+// velocity-commanded, and for --physics mujoco: armature (the rotor inertia reflected to the URDF
+// joint), passive damping, dry friction (the vendor YAML's, else the URDF's <dynamics>)}
 constexpr std::array<FakeJointSpec, 24> kFakeJoints = {{
-  {"J00_HIP_PITCH_L", 0, -3.141, 2.443, 26.3, 164.0, 1.06699, 0.1, 0.0, false, 0.01},
-  {"J01_HIP_ROLL_L", 1, -0.436, 2.094, 26.3, 164.0, 1.12239, 0.1, 0.0, false, 0.01},
-  {"J02_HIP_YAW_L", 2, -1.57, 4.014, 35.2, 61.0, 0.046248, 0.1, 0.0, false, 0.01},
-  {"J03_KNEE_PITCH_L", 3, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0, false, 0.01},
-  {"J04_ANKLE_PITCH_L", 4, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0, false, 0.01},
-  {"J05_ANKLE_ROLL_L", 5, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.01},
-  {"J06_HIP_PITCH_R", 6, -3.141, 2.443, 26.3, 164.0, 1.067, 0.1, 0.0, false, 0.01},
-  {"J07_HIP_ROLL_R", 7, -2.094, 0.436, 26.3, 164.0, 1.12239, 0.1, 0.0, false, 0.01},
-  {"J08_HIP_YAW_R", 8, -4.014, 1.57, 35.2, 61.0, 0.046248, 0.1, 0.0, false, 0.01},
-  {"J09_KNEE_PITCH_R", 9, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0, false, 0.01},
-  {"J10_ANKLE_PITCH_R", 10, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0, false, 0.01},
-  {"J11_ANKLE_ROLL_R", 11, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.01},
-  {"J12_WAIST_YAW", 12, -4.014, 1.57, 35.2, 61.0, 0.537976, 0.1, 0.0, false, 0.01},
-  {"J13_SHOULDER_PITCH_L", 13, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0, false, 0.01},
-  {"J14_SHOULDER_ROLL_L", 14, -0.6108, 2.3562, 35.2, 61.0, 0.186304, 0.1, 0.0, false, 0.01},
-  {"J15_SHOULDER_YAW_L", 15, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0, false, 0.01},
-  {"J16_ELBOW_PITCH_L", 16, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, 0.0, false, 0.01},
-  {"J17_ELBOW_YAW_L", 17, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.01},
-  {"J18_SHOULDER_PITCH_R", 18, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0, false, 0.01},
-  {"J19_SHOULDER_ROLL_R", 19, -2.3562, 0.6108, 35.2, 61.0, 0.186303, 0.1, 0.0, false, 0.01},
-  {"J20_SHOULDER_YAW_R", 20, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0, false, 0.01},
-  {"J21_ELBOW_PITCH_R", 21, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, 0.0, false, 0.01},
-  {"J22_ELBOW_YAW_R", 22, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.01},
-  {"J23_HEAD_YAW", 23, -0.6109, 0.6109, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.01},
+  {"J00_HIP_PITCH_L", 0, -3.141, 2.443, 26.3, 164.0, 1.06699, 0.1, 0.0, false, 0.045325, 0.6, 0.8},
+  {"J01_HIP_ROLL_L", 1, -0.436, 2.094, 26.3, 164.0, 1.12239, 0.1, 0.0, false, 0.045325, 0.6, 0.8},
+  {"J02_HIP_YAW_L", 2, -1.57, 4.014, 35.2, 61.0, 0.046248, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J03_KNEE_PITCH_L", 3, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0, false, 0.045325, 0.6,
+    0.8},
+  {"J04_ANKLE_PITCH_L", 4, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0, false, 0.039175, 0.6,
+    0.8},
+  {"J05_ANKLE_ROLL_L", 5, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J06_HIP_PITCH_R", 6, -3.141, 2.443, 26.3, 164.0, 1.067, 0.1, 0.0, false, 0.045325, 0.6, 0.8},
+  {"J07_HIP_ROLL_R", 7, -2.094, 0.436, 26.3, 164.0, 1.12239, 0.1, 0.0, false, 0.045325, 0.6, 0.8},
+  {"J08_HIP_YAW_R", 8, -4.014, 1.57, 35.2, 61.0, 0.046248, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J09_KNEE_PITCH_R", 9, -0.3491, 2.3911, 26.3, 164.0, 0.306159, 0.1, 0.0, false, 0.045325, 0.6,
+    0.8},
+  {"J10_ANKLE_PITCH_R", 10, -0.6807, 0.7243, 35.2, 61.0, 0.020225, 0.1, 0.0, false, 0.039175, 0.6,
+    0.8},
+  {"J11_ANKLE_ROLL_R", 11, -0.2618, 0.2618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J12_WAIST_YAW", 12, -4.014, 1.57, 35.2, 61.0, 0.537976, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J13_SHOULDER_PITCH_L", 13, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0, false, 0.039175, 0.6,
+    0.8},
+  {"J14_SHOULDER_ROLL_L", 14, -0.6108, 2.3562, 35.2, 61.0, 0.186304, 0.1, 0.08, false, 0.039175,
+    0.6, 0.8},
+  {"J15_SHOULDER_YAW_L", 15, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0, false, 0.039175, 0.6,
+    0.8},
+  {"J16_ELBOW_PITCH_L", 16, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, -0.128, false, 0.039175,
+    0.6, 0.8},
+  {"J17_ELBOW_YAW_L", 17, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J18_SHOULDER_PITCH_R", 18, -2.9671, 2.7925, 35.2, 61.0, 0.22877, 0.1, 0.0, false, 0.039175, 0.6,
+    0.8},
+  {"J19_SHOULDER_ROLL_R", 19, -2.3562, 0.6108, 35.2, 61.0, 0.186303, 0.1, -0.08, false, 0.039175,
+    0.6, 0.8},
+  {"J20_SHOULDER_YAW_R", 20, -2.618, 2.618, 35.2, 61.0, 0.0301909, 0.1, 0.0, false, 0.039175, 0.6,
+    0.8},
+  {"J21_ELBOW_PITCH_R", 21, -2.1948, 0.7374, 35.2, 61.0, 0.0442185, 0.1, -0.128, false, 0.039175,
+    0.6, 0.8},
+  {"J22_ELBOW_YAW_R", 22, -2.618, 2.618, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
+  {"J23_HEAD_YAW", 23, -0.6109, 0.6109, 35.2, 61.0, 0.01, 0.1, 0.0, false, 0.039175, 0.6, 0.8},
 }};
 
-// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions.
+
+// For --physics mujoco without the URDF's meshes: the vendor YAML's contacts, in the URDF's terms
+// {link, shape, size (sphere: radius; box: x, y, z; cylinder: radius, length), xyz, rpy}.
+constexpr std::array<FakeContactGeom, 4> kFakeContacts = {{
+  {"LINK_ANKLE_ROLL_L", FakeContactShape::kBox, {0.204584706, 0.10711, 0.02}, {0.017, 0.00166,
+    -0.03631}, {0.0, 0.0, 0.0}},
+  {"LINK_ANKLE_ROLL_L", FakeContactShape::kBox, {0.056, 0.09561, 0.02}, {0.139, 0.0, -0.0235}, {0.0,
+    -0.4557055, 0.0}},
+  {"LINK_ANKLE_ROLL_R", FakeContactShape::kBox, {0.204584706, 0.10711, 0.02}, {0.017, -0.00166,
+    -0.03631}, {0.0, 0.0, 0.0}},
+  {"LINK_ANKLE_ROLL_R", FakeContactShape::kBox, {0.056, 0.09561, 0.02}, {0.139, 0.0, -0.0235}, {0.0,
+    -0.4557055, 0.0}},
+}};
+
+// For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions,
+// the contacts.
 constexpr FakePhysicsSpec kFakePhysics{
-  "urdf/pm01.urdf", "LINK_BASE", nullptr};
+  "urdf/pm01.urdf", "LINK_BASE", nullptr,
+  kFakeContacts.data(), 4};
 
 // transport_options: command, state, IMU and motor debug topics, parallel_parser_type (0 CLASSIC, 1
 // RL), qos

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .body import BodySummary
 from .config import ARMATURE_DEFAULT, ImuConfig, Parameters, TransportOptions
 from .motor_groups import MotorGroup, motor_groups
 from .naming import PACKAGE_NAMESPACE
@@ -112,6 +113,7 @@ class RobotModel:
     authority: str = "full"   # vendor YAML authority: full | upper_body (model/config.py AUTHORITIES)
     hands: str = "none"       # vendor YAML hands: none | dex3 (model/config.py HANDS)
     kdl_root: KdlRoot | None = None  # the installed URDF's massless root, where the URDF's root has an inertia
+    body: BodySummary | None = None  # the URDF's inertials and geometry summed up (the manifest records it)
 
     @property
     def cpp_namespace(self) -> str:

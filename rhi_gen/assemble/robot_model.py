@@ -170,7 +170,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         imu=imu, parameters=config.parameters, transport_options=config.transport_options,
         provenance=provenance, coupled_groups=decided.groups, urdf_name=urdf.name,
         urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"), authority=config.authority,
-        hands=config.hands, kdl_root=kdl_root(urdf), contacts=_contacts(config, urdf, err),
+        hands=config.hands, kdl_root=kdl_root(urdf), contacts=_contacts(config, urdf, err), body=urdf.body,
     )
 
 

@@ -3,7 +3,7 @@
 Checks the root (a named <robot>, no xacro element left over), reads the links here and each
 joint with :mod:`.urdf_joints`, checks the mimics and the tree (:mod:`.urdf_tree`), reads the
 existing <ros2_control> blocks (:mod:`.urdf_ros2_control`) and the <transmission>s
-(:mod:`.urdf_transmissions`) and keeps the canonical bytes the
+(:mod:`.urdf_transmissions`), sums up the body (:mod:`.urdf_body`) and keeps the canonical bytes the
 manifest fingerprints (:mod:`.urdf_canonical`).
 """
 from __future__ import annotations
@@ -11,6 +11,7 @@ from __future__ import annotations
 from lxml import etree
 
 from ..model import UrdfJoint, UrdfRobot
+from .urdf_body import read_body
 from .urdf_canonical import canonical_urdf_bytes
 from .urdf_joints import JointRefs, check_mimic, read_joint
 from .urdf_parse import UrdfContext, first_xacro_element, quoted
@@ -89,4 +90,5 @@ def robot_from_root(root: etree._Element, data: bytes, ctx: UrdfContext, canonic
         canonical_xml=canonical_urdf_bytes(data) if canonical is None else canonical,
         root_link=root_link,
         root_has_inertia=link_el[root_link].find(q("inertial")) is not None,
+        body=read_body(root, q),
     )

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .body import BodySummary
 from .config import ARMATURE_DEFAULT, ContactGeom, ImuConfig, Parameters, TransportOptions
 from .motor_groups import MotorGroup, motor_groups
 from .naming import PACKAGE_NAMESPACE
@@ -117,6 +118,7 @@ class RobotModel:
     hands: str = "none"       # vendor YAML hands: none | dex3 (model/config.py HANDS)
     kdl_root: KdlRoot | None = None  # the installed URDF's massless root, where the URDF's root has an inertia
     contacts: tuple[ContactGeom, ...] = ()  # the YAML's collision primitives, for the physics without meshes
+    body: BodySummary | None = None  # the URDF's inertials and geometry summed up (the manifest records it)
 
     @property
     def cpp_namespace(self) -> str:

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .body import BodySummary
+
 ACTUATED_TYPES = ("revolute", "continuous", "prismatic")
 TRANSMISSION_KINDS = ("SimpleTransmission", "DifferentialTransmission")  # the <transmission>s rhi-gen applies
 
@@ -117,6 +119,7 @@ class UrdfRobot:
     canonical_xml: bytes = b""  # expanded XML without the volatile xacro header, for hashing
     root_link: str = ""         # the one link that is no joint's child
     root_has_inertia: bool = False  # the root link has an <inertial> (KDL refuses that root)
+    body: BodySummary | None = None  # inertials and geometry summed up (None: not read, as in hand-built tests)
 
     @property
     def actuated_joints(self) -> tuple[UrdfJoint, ...]:

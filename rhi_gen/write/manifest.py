@@ -12,7 +12,9 @@ The generated files name only their inputs; every hash and the generator version
   fingerprint differs. Then the robot as the model saw it (motor_count, float_type, one row per
   joint: index, name, type, limits; ``transmissions`` per joint that is not its motor and
   ``coupled_groups``, both only when there are any, so a manifest without them means identity) so
-  `rhi-gen diff` can explain the next regeneration in robot terms.
+  `rhi-gen diff` can explain the next regeneration in robot terms; and its ``body`` summed up (total
+  mass, one [mass, digest] per link with an inertial, collisions and visuals by geometry kind, mesh
+  references by pattern: write/manifest_body.py), absent in manifests written before it was recorded.
 - Per generated file: the sha256 of its text with every user-region body removed, so a hand edit
   *outside* the regions is detected and an edit inside one is not.
 
@@ -32,6 +34,8 @@ from typing import Any
 
 from ..errors import ManifestError
 from ..model import RobotModel
+from ..model.body import BodySummary
+from .manifest_body import body_from_data, body_to_data
 from .regions import strip_bodies
 
 MANIFEST_NAME = ".rhi-gen-manifest"
@@ -92,6 +96,8 @@ class RobotRecord:
     # (joint, mode) of every joint not position-commanded ("velocity", "state"), by joint name; None: a
     # manifest from before rhi-gen recorded them (their changes cannot be told)
     command_modes: tuple[tuple[str, str], ...] | None = ()
+    # the URDF's inertials and geometry summed up; None: a manifest from before rhi-gen recorded bodies
+    body: BodySummary | None = None
 
 
 @dataclass(frozen=True)
@@ -135,7 +141,7 @@ def robot_record(model: RobotModel) -> RobotRecord:
                           key=lambda g: g.name))
     modes = tuple(sorted((j.name, j.command_mode) for j in model.joints if j.command_mode != "position"))
     return RobotRecord(robot_key(model), p.yaml_path, p.yaml_sha256, p.urdf_path, p.urdf_sha256,
-                       model.motor_count, model.float_type, tuple(joints), transmissions, groups, modes)
+                       model.motor_count, model.float_type, tuple(joints), transmissions, groups, modes, model.body)
 
 
 # ---------------------------------------------------------------- text form
@@ -177,6 +183,8 @@ def _to_data(manifest: Manifest) -> dict[str, Any]:
             robots[key]["transmissions"] = {t.joint: [t.direction, _num(t.reduction), _num(t.offset)]
                                             for t in r.transmissions}
         robots[key]["command_modes"] = dict(r.command_modes or ())  # joints not position-commanded
+        if r.body is not None:
+            robots[key]["body"] = body_to_data(r.body)
         if r.coupled_groups:
             robots[key]["coupled_groups"] = {g.name: {"joints": list(g.joints),
                                                       "matrix": [[_num(x) for x in row] for row in g.matrix]}
@@ -266,7 +274,8 @@ def _from_data(data: Any) -> Manifest:
             _str(r["float_type"], "float_type"), tuple(sorted(joints, key=lambda j: j.index)),
             _transmissions(r.get("transmissions", {}), f"robots.{key}.transmissions"),
             _groups(r.get("coupled_groups", {}), f"robots.{key}.coupled_groups"),
-            _modes(r["command_modes"], f"robots.{key}.command_modes") if "command_modes" in r else None)
+            _modes(r["command_modes"], f"robots.{key}.command_modes") if "command_modes" in r else None,
+            body_from_data(r["body"], f"robots.{key}.body") if "body" in r else None)
     files = {_str(k, "files"): _str(v, f"files.{k}") for k, v in data["files"].items()}
     return Manifest(_str(data["generator_version"], "generator_version"), robots, files, fmt)
 

@@ -14,7 +14,10 @@ the last `generate` (manifest.RobotRecord). Definitions:
 - coupled group: added, removed (by name), or its joints or matrix changed;
 - mode: a joint present in both whose command mode differs (position, velocity, or state: a leg the
   robot's own controller keeps under authority upper_body); not told against a manifest that did not
-  record modes.
+  record modes;
+- body: the URDF's inertials, collisions, visuals and mesh references (write/body_diff.py). The driver's
+  tables do not depend on them, so a body change alone leaves ``robot_changed`` False; it is told on
+  ``body`` lines, and not against a manifest that did not record the body.
 """
 from __future__ import annotations
 
@@ -22,6 +25,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
+from .body_diff import body_changes
 from .manifest import GroupRecord, JointRecord, Manifest, RobotRecord, TransmissionRecord
 
 
@@ -41,6 +45,7 @@ class RobotDiff:
     transmissions: tuple[tuple[str, str], ...] = ()           # (joint, what changed, in words)
     coupled_groups: tuple[tuple[str, str], ...] = ()          # (group, what changed, in words)
     modes: tuple[tuple[str, int, str, str], ...] = ()         # (name, index, old mode, new mode)
+    body: tuple[str, ...] = ()                                # what changed in the body, one text per line
     new_record: RobotRecord | None = field(default=None, compare=False)
     old_record: RobotRecord | None = field(default=None, compare=False)
 
@@ -91,7 +96,12 @@ class RobotDiff:
             out.append(f"  {name}: transmission {what}")
         for name, what in self.coupled_groups:
             out.append(f"  coupled group {name}: {what}")
-        if not self.robot_changed:
+        for what in self.body:
+            out.append(f"  body        {what}")
+        if not self.robot_changed and self.body:
+            out.append("  no joint, limit, command mode, transmission, motor count or float type change: the "
+                       "driver's tables are the same, only the body changed")
+        elif not self.robot_changed:
             out.append("  no joint, limit, command mode, transmission, motor count or float type change (see the "
                        "file diff)")
         return out
@@ -231,7 +241,7 @@ def diff_robot(old: RobotRecord | None, new: RobotRecord | None, *, yaml_compara
         motor_count=(old.motor_count, new.motor_count) if old.motor_count != new.motor_count else None,
         float_type=(old.float_type, new.float_type) if old.float_type != new.float_type else None,
         transmissions=_transmission_changes(old, new), coupled_groups=_group_changes(old, new),
-        modes=tuple(modes), new_record=new, old_record=old)
+        modes=tuple(modes), body=body_changes(old.body, new.body), new_record=new, old_record=old)
     if diff.status == "unchanged" and diff.robot_changed:  # the same hashes cannot give a new table
         diff = replace(diff, status="changed", inputs=("manifest out of date",))
     return diff

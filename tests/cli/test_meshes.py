@@ -36,7 +36,7 @@ def g1_meshes_folder() -> Path:
 
 
 def references(urdf: Path) -> list[str]:
-    return sorted({m.get("filename") for m in etree.parse(str(urdf)).iter("mesh")})
+    return sorted({str(m.get("filename")) for m in etree.parse(str(urdf)).iter("mesh")})
 
 
 @pytest.fixture

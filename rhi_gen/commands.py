@@ -7,6 +7,7 @@ command, so `--help` and `--version` stay fast.
 from __future__ import annotations
 
 import os
+import re
 import sys
 import time
 from collections.abc import Sequence
@@ -16,7 +17,7 @@ from typing import TYPE_CHECKING
 from .errors import InputWarning, ProjectError, RhiGenError
 
 if TYPE_CHECKING:
-    from .model import UrdfRobot, VendorConfig
+    from .model import RobotModel, UrdfRobot, VendorConfig
     from .project import Project
     from .write.api_migration import ApiRename
     from .write.changes import FileChange
@@ -54,12 +55,24 @@ def _project(project: Path | None) -> Project:
     return find_project(project)
 
 
+_MESH_FOLDER = re.compile(r"^(.*robot_hardware_interface/meshes/[^/]+/)")
+
+
 def _print_changes(changes: Sequence[FileChange], *, verbose: bool) -> dict[str, int]:
+    """One line per file; a robot's copied meshes in one line per status unless verbose (a robot has dozens)."""
     counts = {"created": 0, "changed": 0, "unchanged": 0, "removed": 0}
+    meshes: dict[tuple[str, str], int] = {}
     for c in changes:
         counts[c.status] += 1
-        if c.status != "unchanged" or verbose:
+        folder = _MESH_FOLDER.match(c.path)
+        if folder is not None and not verbose:
+            if c.status != "unchanged":
+                key = (folder.group(1), c.status)
+                meshes[key] = meshes.get(key, 0) + 1
+        elif c.status != "unchanged" or verbose:
             _out(f"  {c.status:<9} {c.path}")
+    for (folder_path, status), n in sorted(meshes.items()):
+        _out(f"  {status:<9} {folder_path} ({n} mesh{'es' if n > 1 else ''})")
     return counts
 
 
@@ -94,12 +107,23 @@ def new(*, vendor: str, robot: str, urdf: Path, transport: str | None, xacro_arg
     _out(_summary(counts))
     if plan.robot.urdf.transmissions:
         _out(_transmissions_line(plan.robot.config, plan.robot.urdf, plan.yaml_relpath))
+    _print_missing_meshes([m])
     _out(f"next: review the joint_map in {plan.yaml_relpath}, then `rhi-gen generate`.")
     _out("then build the package in a ROS 2 workspace (docs/try-without-the-robot.md) and bring it up:")
     for label, command in bringup_commands(m.robot, fake_robot=has_fake_robot(m)):
         _out(f"  {label + ':':<19}{command}")
     _warn(plan.warnings)
     return 0
+
+
+def _print_missing_meshes(models: Sequence[RobotModel]) -> None:
+    """One line per robot whose URDF names meshes by a relative path that are not in the project."""
+    from .inputs.urdf_meshes import missing_line
+
+    for m in models:
+        line = missing_line(f"{m.vendor}/{m.robot}", m.provenance.urdf_path, m.missing_meshes)
+        if line is not None:
+            _out(line)
 
 
 def _transmissions_line(config: VendorConfig, urdf: UrdfRobot, yaml_relpath: str) -> str:
@@ -178,6 +202,7 @@ def generate(*, robots: Sequence[str] | None, dry_run: bool, verbose: bool, forc
     names = ", ".join(f"{r.model.vendor}/{r.model.robot} ({len(r.model.joints)} joints)" for r in loaded)
     _out(f"robots: {names}")
     _out(_summary(counts, dry_run=dry_run))
+    _print_missing_meshes([r.model for r in (loaded if only is None else only)])
     _warn(existing_tag_warnings(loaded if only is None else only))
     _warn([w for r in (loaded if only is None else only) for w in r.transmission_warnings])
     return 0

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from .. import transports
 from ..errors import ConfigError, UrdfError
+from ..inputs.urdf_meshes import find_meshes
 from ..model.config import ARMATURE_DEFAULT, ContactGeom, VendorConfig
 from ..model.motor_groups import is_leg
 from ..model.naming import joint_name_problem, pascal_case, plugin_name, suggest, upper_snake
@@ -159,6 +160,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         yaml_sha256=config.content_sha256,
         urdf_sha256=sha256_hex(urdf.canonical_xml),
     )
+    meshes, missing_meshes = find_meshes(urdf.canonical_xml, config.urdf, project_root, config.robot)
     return RobotModel(
         vendor=config.vendor, robot=config.robot, robot_pascal=pascal,
         robot_upper=upper_snake(config.robot) if not config.class_prefix else upper_snake(pascal),
@@ -171,6 +173,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
         provenance=provenance, coupled_groups=decided.groups, urdf_name=urdf.name,
         urdf_xml=urdf.canonical_xml.decode("utf-8", errors="replace"), authority=config.authority,
         hands=config.hands, kdl_root=kdl_root(urdf), contacts=_contacts(config, urdf, err), body=urdf.body,
+        meshes=meshes, missing_meshes=missing_meshes,
     )
 
 

@@ -17,7 +17,7 @@ from .config import (
     TransportOptions,
     VendorConfig,
 )
-from .robot import CoupledGroup, InputProvenance, JointTransmission, MotorJoint, RobotModel
+from .robot import CoupledGroup, InputProvenance, JointTransmission, MeshCopy, MissingMesh, MotorJoint, RobotModel
 from .urdf import (
     ACTUATED_TYPES,
     JointLimits,
@@ -40,7 +40,9 @@ __all__ = [
     "InputProvenance",
     "JointLimits",
     "JointTransmission",
+    "MeshCopy",
     "Mimic",
+    "MissingMesh",
     "MotorJoint",
     "PackageInfo",
     "Parameters",

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..project import PACKAGE_NAME
 from .body import BodySummary
 from .config import ARMATURE_DEFAULT, ContactGeom, ImuConfig, Parameters, TransportOptions
 from .motor_groups import MotorGroup, motor_groups
@@ -93,6 +94,26 @@ class KdlRoot:
 
 
 @dataclass(frozen=True)
+class MeshCopy:
+    """A mesh the URDF names by a relative (or file://) path, found inside the project: the package carries
+    a copy and its installed URDF names that (inputs/urdf_meshes.py)."""
+    reference: str   # the filename attribute as the vendor wrote it
+    source: str      # project-relative, POSIX: the file copied
+    path: str        # package-relative, POSIX: meshes/<robot>/<path beside the URDF>
+
+    @property
+    def uri(self) -> str:
+        return f"package://{PACKAGE_NAME}/{self.path}"
+
+
+@dataclass(frozen=True)
+class MissingMesh:
+    """A mesh the URDF names by a relative (or file://) path that is not in the project: left as written."""
+    reference: str   # the filename attribute as the vendor wrote it
+    looked: str      # where rhi-gen looked for it, project-relative POSIX (may climb out with ..)
+
+
+@dataclass(frozen=True)
 class RobotModel:
     vendor: str               # C++ namespace robot_hardware_interface::<vendor> and folder, e.g. "unitree"
     robot: str                # file stem, e.g. "g1"
@@ -119,6 +140,8 @@ class RobotModel:
     kdl_root: KdlRoot | None = None  # the installed URDF's massless root, where the URDF's root has an inertia
     contacts: tuple[ContactGeom, ...] = ()  # the YAML's collision primitives, for the physics without meshes
     body: BodySummary | None = None  # the URDF's inertials and geometry summed up (the manifest records it)
+    meshes: tuple[MeshCopy, ...] = ()             # copied into the package, by package path
+    missing_meshes: tuple[MissingMesh, ...] = ()  # named by a relative path, not found: URDF order
 
     @property
     def cpp_namespace(self) -> str:

@@ -21,7 +21,7 @@ from ..render.package import render_package, robot_paths
 from ..write.api_migration import ApiRename
 from ..write.backups import backup_changes
 from ..write.changes import CHANGED, CREATED, REMOVED, UNCHANGED, FileChange
-from ..write.manifest import MANIFEST_NAME, Manifest, RobotRecord, robot_key, robot_record
+from ..write.manifest import MANIFEST_NAME, Manifest, RobotRecord, robot_key, robot_record, sha256_hex
 from ..write.manifest import dumps as dump_manifest
 from ..write.manifest import parse as parse_manifest
 from ..write.manifest import read_bytes as read_manifest_bytes
@@ -32,15 +32,48 @@ from .load import LoadedRobot, load_package_info
 OWNED_MARK = GENERATOR_MARK.encode("utf-8")
 
 
+MESH_DIR = f"{PACKAGE_NAME}/meshes/"  # copies of the robots' meshes (inputs/urdf_meshes.py): bytes, no banner
+
+
 def render_plan(models: Sequence[RobotModel], package: PackageInfo) -> dict[str, bytes]:
     """Paths relative to generated/ -> bytes."""
     rendered = render_package(models, package=package)
     return {f"{PACKAGE_NAME}/{rel}": text.encode("utf-8") for rel, text in rendered.items()}
 
 
+def mesh_plan(project: Project, models: Sequence[RobotModel]) -> dict[str, bytes]:
+    """Paths relative to generated/ -> the bytes of each mesh copied into the package, byte for byte."""
+    plan: dict[str, bytes] = {}
+    for model in models:
+        for mesh in model.meshes:
+            rel = f"{PACKAGE_NAME}/{mesh.path}"
+            if rel in plan:
+                continue
+            try:
+                plan[rel] = (project.root / mesh.source).read_bytes()
+            except OSError as exc:
+                raise ProjectError(f"cannot read mesh: {exc.strerror}", file=mesh.source,
+                                   fix="fix its permissions, or remove it (meshes are optional)") from exc
+    return plan
+
+
+def is_mesh(rel: str) -> bool:
+    return rel.startswith(MESH_DIR)
+
+
+def meshes_on_disk(project: Project) -> list[str]:
+    """Every file in generated/robot_hardware_interface/meshes: rhi-gen owns that folder whole."""
+    folder = project.generated_dir / MESH_DIR
+    if not folder.is_dir():
+        return []
+    return sorted(p.relative_to(project.generated_dir).as_posix() for p in folder.rglob("*")
+                  if p.is_file() and not p.name.endswith((".rhi-tmp", ".rhi-bak")))
+
+
 def robot_files(plan: dict[str, bytes], model: RobotModel) -> set[str]:
     """The plan entries that belong to one robot (everything else is shared)."""
     own = {f"{PACKAGE_NAME}/{p}" for p in robot_paths(model.vendor, model.robot)}
+    own |= {f"{PACKAGE_NAME}/{m.path}" for m in model.meshes}
     return {p for p in plan if p in own}
 
 
@@ -122,6 +155,8 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
     version = rhi_gen.__version__  # read now, not at import: tests stand in for an upgrade
     gen = project.generated_dir
     rendered = render_plan([r.model for r in robots], load_package_info(project))
+    rendered.update(mesh_plan(project, [r.model for r in robots]))
+    rendered = dict(sorted(rendered.items()))
     scope = list(robots) if only is None else [r for r in robots if r in only]
     if only is not None:
         skip: set[str] = set()
@@ -146,6 +181,11 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
     renames: list[ApiRename] = []
     new_hashes: dict[str, str] = {}
     for rel, data in rendered.items():
+        if is_mesh(rel):  # a copy of an input: rewritten whenever it differs, never a hand edit to keep
+            new_hashes[rel] = sha256_hex(data)
+            old = _read(project, rel) if (gen / rel).is_file() else None
+            files.append(FileChange(rel, CREATED if old is None else UNCHANGED if old == data else CHANGED, old, data))
+            continue
         text = data.decode("utf-8")
         new_hashes[rel] = rendered_hash(rel, text)
         if not (gen / rel).is_file():
@@ -160,10 +200,14 @@ def plan_generation(project: Project, robots: Sequence[LoadedRobot], only: Seque
 
     if only is None:
         candidates = set(recorded) if have_manifest else set(owned_files_on_disk(project))
+        candidates |= set(meshes_on_disk(project))
         for rel in sorted(c for c in candidates - set(rendered) if _safe_rel(c)):
             if not (gen / rel).is_file():
                 continue
             old_bytes = _read(project, rel)
+            if is_mesh(rel):
+                files.append(FileChange(rel, REMOVED, old_bytes, None))
+                continue
             problem = removal_problem(rel, old_bytes, recorded, have_manifest)
             if problem:
                 blocked.append(problem)

@@ -43,7 +43,7 @@ from ..project import Project, robot_yamls
 if TYPE_CHECKING:
     from .load import LoadedRobot
 
-FORMAT = 1
+FORMAT = 2
 SETTLE_S = 2.0   # a file this recent when the check began may have changed while it was read
 KEEP = 64        # memos kept (one per project folder); the oldest go first
 LIBRARIES = ("jinja2", "markupsafe", "yaml", "lxml")  # what rendering runs besides rhi-gen and Python
@@ -82,6 +82,13 @@ def _sha256(path: Path) -> str | None:
         return None
 
 
+def _package_meshes(project: Project) -> list[str]:
+    """The files in the package's meshes/ (rhi-gen owns the folder: one added there makes the check fail)."""
+    folder = project.package_dir / "meshes"
+    return sorted(p.relative_to(folder).as_posix() for p in folder.rglob("*") if p.is_file()) \
+        if folder.is_dir() else []
+
+
 def still_verified(project: Project) -> int | None:
     """The number of robots when the last passing check read exactly these bytes with this rhi-gen; else None."""
     try:
@@ -91,6 +98,8 @@ def still_verified(project: Project) -> int | None:
         if memo["yamls"] != [str(p) for p in robot_yamls(project)]:
             return None
         if any(_sha256(Path(path)) != sha for path, sha in memo["files"].items()):
+            return None
+        if memo["meshes"] != _package_meshes(project):
             return None
         if memo["stamp"] != code_stamp():
             return None
@@ -111,8 +120,11 @@ def record(project: Project, loaded: Sequence[LoadedRobot], outputs: Iterable[st
     if any(is_xacro(urdf) for urdf in urdfs):
         return False
     yamls = [r.yaml_path for r in loaded]
+    # the meshes copied, and where the missing ones were looked for: one appearing there changes the verdict
+    meshes = [project.root / path for r in loaded for path in (*(m.source for m in r.model.meshes),
+                                                                *(m.looked for m in r.model.missing_meshes))]
     files = [*yamls, *urdfs, project.robots_dir / PACKAGE_YAML, manifest_path(project.generated_dir),
-             *(project.generated_dir / rel for rel in outputs)]
+             *(project.generated_dir / rel for rel in outputs), *meshes]
     hashes: dict[str, str | None] = {}
     for path in files:
         try:
@@ -128,7 +140,7 @@ def record(project: Project, loaded: Sequence[LoadedRobot], outputs: Iterable[st
     except OSError:  # a file of rhi-gen that cannot be read: no memo could ever match
         return False
     memo = {"format": FORMAT, "root": str(project.root), "robots": len(yamls), "stamp": stamp,
-            "yamls": [str(p) for p in yamls], "files": hashes}
+            "yamls": [str(p) for p in yamls], "files": hashes, "meshes": _package_meshes(project)}
     return _write(memo_path(project), json.dumps(memo, sort_keys=True))
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from html import escape
+from html import escape, unescape
 
 from ..model import RobotModel
 from ..model.robot import KdlRoot
@@ -87,6 +87,7 @@ class UrdfView:
 
 
 _XACRO_SUBSTITUTION = re.compile(r"\$+(?=[{(])")
+_MESH_FILENAME = re.compile(r"(<mesh\b[^>]*?\bfilename\s*=\s*)([\"'])(.*?)\2", re.S)
 
 
 def xacro_literal(text: str) -> str:
@@ -107,7 +108,23 @@ def urdf_view(robot: RobotModel) -> UrdfView:
     if robot.kdl_root is not None:
         close = text.rindex("</robot>")
         text = text[:close] + kdl_root_xml(robot.kdl_root) + text[close:]
-    return UrdfView(prolog=prolog, body=xacro_literal(text))
+    return UrdfView(prolog=prolog, body=xacro_literal(packaged_meshes(text, robot)))
+
+
+def packaged_meshes(text: str, robot: RobotModel) -> str:
+    """``text`` with each mesh the package carries (model MeshCopy) named by its package:// URI; every
+    other byte, and every other mesh reference, as it was."""
+    uris = {m.reference: m.uri for m in robot.meshes}
+    if not uris:
+        return text
+
+    def swap(match: re.Match[str]) -> str:
+        uri = uris.get(unescape(match.group(3)).strip())
+        if uri is None:
+            return match.group(0)
+        return f"{match.group(1)}{match.group(2)}{escape(uri, quote=True)}{match.group(2)}"
+
+    return _MESH_FILENAME.sub(swap, text)
 
 
 def kdl_root_xml(root: KdlRoot) -> str:

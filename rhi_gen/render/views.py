@@ -73,6 +73,7 @@ class PackageView:
     description: str                     # package.xml <description>: the plugins, or "no robots yet"
     imu: bool                            # some robot exports an IMU (imu_sensor_broadcaster)
     fake_robots: bool = False            # some robot has a fake robot (CMakeLists.txt looks for MuJoCo)
+    meshes: bool = False                 # some robot's meshes are copied into meshes/<robot>/ (installed)
     description_arguments: tuple[str, ...] = DESCRIPTION_ARGUMENTS  # launch/bringup.launch.py -> xacro
 
 
@@ -118,6 +119,7 @@ def package_view(robots: Sequence[RobotModel]) -> PackageView:
         description=", ".join(r.plugin_name for r in robots) or "no robots yet",
         imu=any(r.imu.enabled for r in robots),
         fake_robots=any(t.fake_robot for t in targets),
+        meshes=any(r.meshes for r in robots),
     )
 
 

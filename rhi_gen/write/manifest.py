@@ -16,7 +16,8 @@ The generated files name only their inputs; every hash and the generator version
   mass, one [mass, digest] per link with an inertial, collisions and visuals by geometry kind, mesh
   references by pattern: write/manifest_body.py), absent in manifests written before it was recorded.
 - Per generated file: the sha256 of its text with every user-region body removed, so a hand edit
-  *outside* the regions is detected and an edit inside one is not.
+  *outside* the regions is detected and an edit inside one is not; a mesh copied into meshes/<robot>/
+  (inputs/urdf_meshes.py): the sha256 of its bytes.
 
 The file is JSON with sorted keys, one joint or file per line, no timestamps and no absolute paths:
 the same inputs always give the same bytes, and a reviewer reads its diff like any other.
@@ -43,7 +44,7 @@ FORMAT = 2
 READABLE_FORMATS = (1, 2)
 NOTE = ("Written by `rhi-gen generate`; do not edit. Inputs and generated files of the last generation: "
         "yaml sha256 is of the parsed vendor YAML (comments and layout do not count), urdf sha256 of the "
-        "expanded URDF, file sha256 of the text with user-region bodies removed.")
+        "expanded URDF, file sha256 of the text with user-region bodies removed (a mesh: of its bytes).")
 JOINT_COLUMNS = ("index", "name", "type", "lower", "upper", "velocity", "effort")
 FIX_CORRUPT = ("restore it from version control, or rerun `rhi-gen generate --force` to rebuild it "
                "(files that would change are backed up)")

@@ -31,7 +31,6 @@ IMU frames, starting at their description's start pose (every joint at zero, cla
 """
 from __future__ import annotations
 
-import importlib.metadata
 import importlib.util
 import math
 import platform
@@ -52,6 +51,7 @@ from tests.support.cpp_build import (
     yaml_joint_map,
     yaml_modes_and_gains,
 )
+from tests.support.example_robot_data import example_robot_data_prefix
 from tests.support.repo import REPO
 
 HERE = Path(__file__).resolve().parent
@@ -85,21 +85,6 @@ def mujoco_dir() -> Path:
             pytest.skip("mujoco-core has wheels for Python 3.11 and newer only (pyproject.toml's test extra)")
         pytest.fail("MuJoCo is not installed: pip install -e '.[test]' installs mujoco-core (never skipped)")
     return Path(spec.origin).parent
-
-
-def example_robot_data_prefix() -> Path:
-    """The prefix under which example-robot-data (test extra) installs share/example-robot-data/: what
-    package:// is resolved under, as a ROS user's AMENT_PREFIX_PATH would be."""
-    try:
-        dist = importlib.metadata.distribution("example-robot-data")
-    except importlib.metadata.PackageNotFoundError:
-        pytest.fail("example-robot-data is not installed: pip install -e '.[test]' (it is a test dependency)")
-    for f in dist.files or []:
-        path = Path(str(dist.locate_file(f)))
-        for parent in path.parents:
-            if parent.name == "share" and (parent / "example-robot-data").is_dir():
-                return parent.parent
-    pytest.fail("example-robot-data installs no share/example-robot-data/ folder")
 
 
 @pytest.fixture(scope="module")

@@ -123,7 +123,7 @@ def test_missing_meshes_are_one_line_and_nothing_is_copied(g1_project, capsys):
     lines = [line for line in out.splitlines() if line.startswith("meshes:")]
     assert len(lines) == 1 and "looked for meshes/" in lines[0] and "beside g1.urdf" in lines[0]
     assert not (proj / "generated" / PACKAGE / "meshes").exists()
-    assert "meshes" not in (proj / "generated/.rhi-gen-manifest").read_text()
+    assert f"{PACKAGE}/meshes/" not in (proj / "generated/.rhi-gen-manifest").read_text()
     assert run(["check", "--project", str(proj)], capsys)[0] == 0
 
 

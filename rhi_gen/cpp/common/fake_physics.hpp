@@ -45,7 +45,8 @@ struct FakeContactGeom
 {
   const char * link;            // URDF link
   FakeContactShape shape;
-  std::array<double, 3> size;   // sphere {radius}; box {x, y, z} (full lengths); cylinder {radius, length}
+  // sphere {radius}; box {x, y, z} (full lengths); cylinder {radius, length} [m]
+  std::array<double, 3> size;
   std::array<double, 3> xyz;    // [m] the shape's origin in the link's frame (URDF <origin xyz>)
   std::array<double, 3> rpy;    // [rad] its orientation (URDF <origin rpy>: fixed-axis x, y, z)
 };

@@ -474,9 +474,9 @@ private:
     return true;
   }
 
-  // The options' contacts on their links (in place of the mesh collisions left out). *what: "2 boxes
-  // on LINK_ANKLE_ROLL_L, ..." ("" when there are none); false with the reason in *what when a
-  // contact names no link of the URDF.
+  // The options' contacts on their links (in place of the mesh collisions left out). *what:
+  // "2 on LINK_ANKLE_ROLL_L, ..." ("" when there are none); false with the reason in *what when
+  // a contact names no link of the URDF.
   bool add_contacts(mjSpec * spec, std::string * what)
   {
     std::vector<std::pair<std::string, size_t>> per_link;
@@ -651,8 +651,8 @@ private:
         continue;
       }
       ++e.robot_geoms;
-      // The lowest corner of the geom's box in its own frame (geom_aabb: centre, half sizes), turned
-      // into the world: a foot's sole sits on the floor, not its bounding sphere.
+      // The lowest corner of the geom's box in its own frame (geom_aabb: centre, half sizes),
+      // turned into the world: a foot's sole sits on the floor, not its bounding sphere.
       const mjtNum * box = model_->geom_aabb + 6 * g;
       const mjtNum * r = data_->geom_xmat + 9 * g;
       double z = data_->geom_xpos[3 * g + 2];

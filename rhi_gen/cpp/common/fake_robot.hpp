@@ -394,7 +394,8 @@ public:
         physics_spec_.transmissions, physics_spec_.transmissions + model_.dynamics.joint_count());
     }
     if (o.contacts.empty() && physics_spec_.contacts != nullptr) {
-      o.contacts.assign(physics_spec_.contacts, physics_spec_.contacts + physics_spec_.contact_count);
+      o.contacts.assign(
+        physics_spec_.contacts, physics_spec_.contacts + physics_spec_.contact_count);
     }
     auto physics = std::make_unique<FakeMujocoPhysics<N>>(
       model_.dynamics.joints(), model_.dynamics.joint_count());

@@ -4,7 +4,7 @@ from __future__ import annotations
 from rhi_gen.inputs.urdf_body import mesh_pattern
 from rhi_gen.inputs.urdf_loader import load_urdf, parse_urdf_bytes
 from tests.support import upstream_urdf
-from tests.support.repo import REPO
+from tests.support.skeleton import write_skeleton
 
 URDF = b"""<robot name="r">
   <link name="base">
@@ -59,9 +59,10 @@ def test_mesh_patterns():
     assert mesh_pattern(None) == "(no filename)"
 
 
-def test_reference_skeleton_and_real_g1():
-    skeleton = load_urdf(REPO / "robots" / "unitree" / "g1.urdf").body
-    real = load_urdf(upstream_urdf.require("unitree_g1.urdf")).body
+def test_reference_skeleton_and_real_g1(tmp_path):
+    real_path = upstream_urdf.require("unitree_g1.urdf")
+    skeleton = load_urdf(write_skeleton(real_path, tmp_path / "g1.urdf")).body
+    real = load_urdf(real_path).body
     assert skeleton is not None and real is not None
     assert skeleton.collisions == () and skeleton.visuals == ()
     assert {i.mass for i in skeleton.inertials} == {1.0}

@@ -12,7 +12,7 @@ from rhi_gen.model.body import BodySummary, LinkInertial
 from rhi_gen.write.manifest import JointRecord, Manifest, RobotRecord, dumps, loads
 from rhi_gen.write.semantic_diff import diff_manifest, diff_robot
 from tests.support import upstream_urdf
-from tests.support.repo import REPO
+from tests.support.skeleton import write_skeleton
 
 SAME_TABLES = ("  no joint, limit, command mode, transmission, motor count or float type change: the driver's "
                "tables are the same, only the body changed")
@@ -109,15 +109,16 @@ def test_a_corrupt_body_is_a_one_line_error(bad):
     assert "\n" not in str(e.value) and "body" in str(e.value)
 
 
-def test_the_reference_g1_skeleton_against_the_real_g1():
-    """The pair the reference robots are about to go through: robots/unitree/g1.urdf -> Unitree's own URDF."""
-    skeleton, real = load_urdf(REPO / "robots" / "unitree" / "g1.urdf").body, \
-        load_urdf(upstream_urdf.require("unitree_g1.urdf")).body
+def test_the_reference_g1_skeleton_against_the_real_g1(tmp_path):
+    """The pair the reference robots went through (issue 49): a skeleton of the G1 -> Unitree's own URDF."""
+    real_path = upstream_urdf.require("unitree_g1.urdf")
+    skeleton, real = load_urdf(write_skeleton(real_path, tmp_path / "g1.urdf")).body, load_urdf(real_path).body
     d = diff_robot(R(skeleton), R(real, urdf="v" * 64))
     lines = d.lines()
     assert lines[-1] == SAME_TABLES
     body = [line for line in lines if line.startswith("  body        ")]
-    assert body[0].startswith("  body        mass 30 kg -> 33.") and "links' inertials changed" in body[0]
+    assert body[0].startswith(f"  body        mass {skeleton.inertial_links} kg -> 33.") and \
+        "links' inertials changed" in body[0]
     assert body[1].startswith("  body        collisions: none -> ") and "meshes" in body[1] and "spheres" in body[1]
     assert body[2].startswith("  body        visuals: none -> 35 meshes; mesh files: none -> ")
     assert body[2].endswith("meshes/*.STL (relative paths)")

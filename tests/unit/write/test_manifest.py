@@ -98,8 +98,9 @@ def test_generated_manifest_is_deterministic_and_machine_independent(tmp_path, c
     assert (g1.yaml_path, g1.urdf_path, g1.motor_count, g1.float_type) == \
         ("robots/unitree/g1.yaml", "robots/unitree/g1.urdf", 29, "float")
     assert [j.index for j in g1.joints] == list(range(29)) and g1.joints[3].name == "left_knee_joint"
-    # and its body (the skeleton: 1 kg placeholder inertials, no geometry), deterministic with the rest
-    assert g1.body is not None and g1.body.collisions == () and {i.mass for i in g1.body.inertials} == {1.0}
+    # and its body (Unitree's: 33.341142 kg, spheres on the feet, meshes elsewhere), deterministic with the rest
+    assert g1.body is not None and round(g1.body.total_mass, 6) == 33.341142
+    assert dict(g1.body.collisions)["sphere"] == 8
     # every generated file is recorded, with the hash of its text without region bodies
     package = one / "generated" / "robot_hardware_interface"
     on_disk = sorted(p.relative_to(one / "generated").as_posix() for p in package.rglob("*") if p.is_file())

@@ -67,14 +67,18 @@ constexpr std::array<FakeJointSpec, 24> kFakeJoints = {{
 // For --physics mujoco without the URDF's meshes: the vendor YAML's contacts, in the URDF's terms
 // {link, shape, size (sphere: radius; box: x, y, z; cylinder: radius, length), xyz, rpy}.
 constexpr std::array<FakeContactGeom, 4> kFakeContacts = {{
-  {"LINK_ANKLE_ROLL_L", FakeContactShape::kBox, {0.204584706, 0.10711, 0.02}, {0.017, 0.00166,
-    -0.03631}, {0.0, 0.0, 0.0}},
-  {"LINK_ANKLE_ROLL_L", FakeContactShape::kBox, {0.056, 0.09561, 0.02}, {0.139, 0.0, -0.0235}, {0.0,
-    -0.4557055, 0.0}},
-  {"LINK_ANKLE_ROLL_R", FakeContactShape::kBox, {0.204584706, 0.10711, 0.02}, {0.017, -0.00166,
-    -0.03631}, {0.0, 0.0, 0.0}},
-  {"LINK_ANKLE_ROLL_R", FakeContactShape::kBox, {0.056, 0.09561, 0.02}, {0.139, 0.0, -0.0235}, {0.0,
-    -0.4557055, 0.0}},
+  {"LINK_ANKLE_ROLL_L", FakeContactShape::kBox,
+    {0.204584706, 0.10711, 0.02},
+    {0.017, 0.00166, -0.03631}, {0.0, 0.0, 0.0}},
+  {"LINK_ANKLE_ROLL_L", FakeContactShape::kBox,
+    {0.056, 0.09561, 0.02},
+    {0.139, 0.0, -0.0235}, {0.0, -0.4557055, 0.0}},
+  {"LINK_ANKLE_ROLL_R", FakeContactShape::kBox,
+    {0.204584706, 0.10711, 0.02},
+    {0.017, -0.00166, -0.03631}, {0.0, 0.0, 0.0}},
+  {"LINK_ANKLE_ROLL_R", FakeContactShape::kBox,
+    {0.056, 0.09561, 0.02},
+    {0.139, 0.0, -0.0235}, {0.0, -0.4557055, 0.0}},
 }};
 
 // For --physics mujoco: the URDF in the package's share folder, the IMU's link, the transmissions,

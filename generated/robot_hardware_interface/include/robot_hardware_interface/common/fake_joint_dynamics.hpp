@@ -41,8 +41,8 @@ struct FakeJointSpec
   // 0.01), which the physics adds to the joint (fake_physics_mujoco.hpp); the vacuum ignores it
   double armature;
   // For the physics (the vacuum ignores them): MuJoCo's passive joint damping [N m s / rad] and
-  // dry friction [N m] (frictionloss), the vendor YAML's joint_damping / joint_frictionloss, else
-  // the URDF's <dynamics damping friction> (0 where it has none), as MuJoCo's URDF reader takes them
+  // dry friction [N m] (frictionloss), the vendor YAML's joint_damping / joint_frictionloss,
+  // else the URDF's <dynamics damping friction> (0 where it has none), as MuJoCo reads a URDF
   double physics_damping;
   double frictionloss;
 };

@@ -3037,7 +3037,7 @@ int main(int argc, char** argv) {
   int threads_ms = 300;
   std::string only;
 #if defined(RHI_HARNESS_PHYSICS)
-  PhysicsSetup physics;  // the fake robot on MuJoCo: --physics-urdf, --physics-base, --physics, --physics-arm
+  PhysicsSetup physics;  // the fake robot on MuJoCo: --physics-urdf, -base, -package-path, --physics, --physics-arm
 #endif
   for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--threads-ms=", 13) == 0) {
@@ -3056,6 +3056,8 @@ int main(int argc, char** argv) {
       physics.scenarios = argv[i] + 10;
     } else if (std::strncmp(argv[i], "--physics-arm=", 14) == 0) {
       physics.arm = argv[i] + 14;
+    } else if (std::strncmp(argv[i], "--physics-package-path=", 23) == 0) {
+      physics.package_path = argv[i] + 23;
 #endif
     }
   }

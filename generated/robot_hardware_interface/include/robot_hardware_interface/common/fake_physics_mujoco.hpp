@@ -625,7 +625,7 @@ private:
     double lowest;     // [m] its lowest point: geoms' bounding boxes, else link origins
     double reach;      // [m] an upper bound of how far any point of it gets from its root link
     double root_z;     // [m] the root link's height
-    int robot_geoms;   // geoms of the robot (not the world's)
+    int robot_geoms;   // geoms of the robot that collide (not the world's, not visuals)
   };
 
   void initial_joints()
@@ -651,6 +651,11 @@ private:
       if (model_->geom_bodyid[g] == 0) {
         continue;
       }
+      largest_geom = std::max(
+        largest_geom, model_->geom_rbound[g] + norm3(model_->geom_pos + 3 * g));
+      if (model_->geom_contype[g] == 0 && model_->geom_conaffinity[g] == 0) {
+        continue;  // a visual: it never touches the floor
+      }
       ++e.robot_geoms;
       // The lowest corner of the geom's box in its own frame (geom_aabb: centre, half sizes),
       // turned into the world: a foot's sole sits on the floor, not its bounding sphere.
@@ -661,8 +666,6 @@ private:
         z += r[6 + i] * box[i] - std::fabs(r[6 + i]) * box[3 + i];
       }
       e.lowest = std::min(e.lowest, z);
-      largest_geom = std::max(
-        largest_geom, model_->geom_rbound[g] + norm3(model_->geom_pos + 3 * g));
     }
     e.reach += largest_geom;
     return e;

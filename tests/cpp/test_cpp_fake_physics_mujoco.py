@@ -301,8 +301,8 @@ def test_meshes_not_found_give_an_inertial_only_model_and_one_warning(checker, t
     warnings = [line for line in proc.stdout.splitlines() if line.startswith("warning=")]
     assert len(warnings) == 1, warnings
     assert re.fullmatch(r"warning=13 of 13 meshes not found \(first: package://example-robot-data/robots/talos_data/"
-                        r"meshes/arm/arm_1_collision\.STL; no package path given\): inertial-only model, "
-                        r"the mesh geoms left out",
+                        r"meshes/arm/arm_1_collision\.STL; no package path given\): the mesh geoms left out, "
+                        r"inertial-only model",
                         warnings[0]), warnings[0]
     v = values(proc.stdout)
     assert int(v["nmesh"]) == 0

@@ -334,6 +334,7 @@ public:
       std::chrono::nanoseconds(period_ns_), [this]() {
         step();
         watch_rate();
+        watch_base();
       });
   }
 
@@ -478,6 +479,29 @@ private:
     }
   }
 
+  // After each step of the wall timer's loop, on MuJoCo: one line when the robot's root link tips
+  // past kFallenTilt (it fell, or hangs tipped over in the band), one when it is upright again.
+  void watch_base()
+  {
+    if (!model_.dynamics.has_engine()) {
+      return;
+    }
+    const std::array<double, 4> q = base_orientation();
+    const double tilt = std::acos(std::clamp(1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]), -1.0, 1.0)) *
+      180.0 / 3.14159265358979323846;
+    if (!fallen_ && tilt > kFallenTilt) {
+      fallen_ = true;
+      RCLCPP_WARN(
+        node_->get_logger(), "the robot fell: its root link tilts %.0f degrees, at %.2f m above "
+        "the floor", tilt, base_position()[2]);
+    } else if (fallen_ && tilt < kUprightTilt) {
+      fallen_ = false;
+      RCLCPP_INFO(node_->get_logger(), "the robot is upright again (%.1f degrees)", tilt);
+    }
+  }
+
+  static constexpr double kFallenTilt = 45.0;   // [degrees]
+  static constexpr double kUprightTilt = 10.0;  // [degrees]
   static constexpr const char * kReleaseBandParameter = "release_band";
 
   // `ros2 param set <node> fault <request>`: carried out, or refused with the reason.
@@ -629,6 +653,7 @@ private:
   rclcpp::TimerBase::SharedPtr timer_;
   FakeLoopStats stats_;
   FakeRateWatch rate_watch_;
+  bool fallen_{false};  // watch_base()
   FakePhysicsSpec physics_spec_;
 #if defined(RHI_FAKE_PHYSICS_MUJOCO)
   std::unique_ptr<FakeMujocoPhysics<N>> physics_;

@@ -29,7 +29,10 @@
 //   contacts (FakePhysicsOptions::contacts: its MuJoCo model's primitives, e.g. the feet's) then
 //   stand in for the mesh collisions on their links, so that a free base still stands;
 // - gravity (0, 0, -9.81) and a floor plane at z = 0;
-// - the base (FakeBase): `free` (a free joint on the URDF's root link), `band` (free, held by an
+// - the base (FakeBase): `free` (a free joint on the URDF's root link, the robot on the floor in
+//   its start pose, held there as on its gantry until a motor is first commanded with a gain: a
+//   driver's safe start holds the robot limp for a moment, and a robot standing on its own feet
+//   would fold; the first gains let it go), `band` (free, held by an
 //   elastic band: a spring-damper pulling a point fixed to the root link, band_arm above the
 //   robot's centre of mass at its start pose, towards a point above where it started, applied
 //   through xfrc_applied; the robot hangs from it like a pendulum, upright; release_band() lets
@@ -173,6 +176,12 @@ public:
     }
     pending_ += dt;
     const double h = model_->opt.timestep;
+    if (held_ && !gains_commanded()) {
+      pending_ = 0.0;  // on its gantry: still, in its start pose
+      read_state();
+      return;
+    }
+    held_ = false;
     while (pending_ >= h * (1.0 - 1e-9)) {
       pending_ -= h;
       apply_forces();
@@ -696,6 +705,7 @@ private:
   bool start_pose(const Extent & extent, std::vector<std::string> * warnings)
   {
     initial_joints();
+    held_ = options_.base == FakeBase::kFree;
     if (options_.base != FakeBase::kFixed) {
       if (free_joint_ < 0) {
         return false;
@@ -787,6 +797,18 @@ private:
     }
   }
 
+  // Whether any motor has been told a gain (stiffness or damping).
+  bool gains_commanded() const
+  {
+    for (size_t k = 0; k < count_; ++k) {
+      const size_t s = joints_[k].slot;
+      if (s < N && (command_[s].kp > 0.0 || command_[s].kd > 0.0)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   // Which bodies the floor's contacts touch (allocation-free: touched_ is sized at load()).
   void note_floor_touches()
   {
@@ -849,6 +871,7 @@ private:
   int root_body_{-1};
   int free_joint_{-1};
   int floor_geom_{-1};
+  bool held_{false};  // a free base in its start pose until the first gains (the header comment)
   std::vector<char> touched_;  // per body: touched the floor since floor_touches()
   double floor_z_{0.0};
   double band_k_{0.0};

@@ -178,6 +178,7 @@ public:
     if (held_ && !gains_commanded()) {
       pending_ = 0.0;  // on its gantry: still, in its start pose
       read_state();
+      at_rest_imu();
       return;
     }
     held_ = false;
@@ -744,6 +745,9 @@ private:
     band_anchor_[2] += band_k_ > 0.0 ? mass * g / band_k_ : 0.0;
     band_on_ = options_.base == FakeBase::kBand;
     read_state();
+    if (held_) {
+      at_rest_imu();
+    }
     return true;
   }
 
@@ -793,6 +797,20 @@ private:
         wrench[i] = spring[i] - band_d_ * (vel[i] + com_velocity[i]);
         wrench[3 + i] -= band_turn_d_ * omega[i];
       }
+    }
+  }
+
+  // The IMU of a robot held still: no rotation, gravity's reaction (up) in the IMU link's frame.
+  void at_rest_imu()
+  {
+    const mjtNum up[3] = {0.0, 0.0, norm3(model_->opt.gravity)};
+    mjtNum inverse[4];
+    mju_negQuat(inverse, imu_.orientation.data());
+    mjtNum in_link[3];
+    mju_rotVecQuat(in_link, up, inverse);
+    for (int i = 0; i < 3; ++i) {
+      imu_.angular_velocity[i] = 0.0;
+      imu_.linear_acceleration[i] = in_link[i];
     }
   }
 

@@ -14,7 +14,9 @@ def write_skeleton(real: Path, to: Path) -> Path:
     root = etree.parse(str(real), etree.XMLParser(remove_comments=True)).getroot()
     for tag in STRIPPED:
         for el in list(root.iter(tag)):
-            el.getparent().remove(el)
+            parent = el.getparent()
+            if parent is not None:
+                parent.remove(el)
     for inertial in root.iter("inertial"):
         for child in list(inertial):
             inertial.remove(child)

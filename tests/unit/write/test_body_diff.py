@@ -113,6 +113,7 @@ def test_the_reference_g1_skeleton_against_the_real_g1(tmp_path):
     """The pair the reference robots went through (issue 49): a skeleton of the G1 -> Unitree's own URDF."""
     real_path = upstream_urdf.require("unitree_g1.urdf")
     skeleton, real = load_urdf(write_skeleton(real_path, tmp_path / "g1.urdf")).body, load_urdf(real_path).body
+    assert skeleton is not None and real is not None
     d = diff_robot(R(skeleton), R(real, urdf="v" * 64))
     lines = d.lines()
     assert lines[-1] == SAME_TABLES

@@ -106,6 +106,7 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                       f"remove {key}.{name}")
     initial = dict(config.initial_positions)
     armatures = dict(config.armatures)
+    joint_damping, joint_frictionloss = dict(config.joint_damping), dict(config.joint_frictionloss)
     for name, value in config.initial_positions:
         joint = by_name[name]
         if (problem := limits_problem(joint.type, joint.limits, value)):
@@ -135,8 +136,8 @@ def build_model(config: VendorConfig, urdf: UrdfRobot, *, yaml_path: Path, proje
                                  initial_position=initial.get(joint.name, safe_position(joint.type, joint.limits)),
                                  transmission=decided.joints.get(joint.name, JointTransmission()),
                                  armature=armatures.get(joint.name, ARMATURE_DEFAULT),
-                                 **_simulated(dynamics.get(joint.name), dict(config.joint_damping).get(joint.name),
-                                              dict(config.joint_frictionloss).get(joint.name))))
+                                 **_simulated(dynamics.get(joint.name), joint_damping.get(joint.name),
+                                              joint_frictionloss.get(joint.name))))
 
     if config.authority == "upper_body" and all(j.command_mode == "state" for j in joints):
         raise err("authority", "upper_body leaves the legs (hip, knee, ankle joints) to the robot's own controller, "
